@@ -1,0 +1,160 @@
+/*
+ * halfslip: half-plane partial-slip contact under constant normal load,
+ * shear force Q and differential bulk tension sigma.
+ *
+ * Public C ABI (C99). Every function returns an int status: HS_OK (0) or an
+ * HS_ERR_* code; hs_strerror() gives the message. On error, outputs are left
+ * untouched. No function aborts, prints, or lets a C++ exception escape.
+ *
+ * Sign conventions (signs of Q and sigma, which edge is b1, slip direction)
+ * are defined once in docs/conventions.md. In short: the contact is |x| < a,
+ * the stick zone is (-b2, b1), slip zone 1 is (b1, a), slip zone 2 is
+ * (-a, -b2); the fully stuck traction is q_st(x) = (Q/pi - sigma x/4)/sqrt(a^2-x^2),
+ * so that sigma > 0 moves the stick zone towards x = +a.
+ *
+ * Thread safety: no global mutable state. Distinct handles may be used from
+ * any threads; a solution handle is immutable after hs_solve and may be read
+ * (evaluated) from several threads at once.
+ */
+#ifndef HALFSLIP_H
+#define HALFSLIP_H
+
+#include <stddef.h>
+
+#if defined(HS_STATIC)
+#  define HS_EXPORT
+#elif defined(_WIN32)
+#  if defined(HS_BUILDING_DLL)
+#    define HS_EXPORT __declspec(dllexport)
+#  else
+#    define HS_EXPORT __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__)
+#  define HS_EXPORT __attribute__((visibility("default")))
+#else
+#  define HS_EXPORT
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- version ------------------------------------------------------------ */
+#define HS_VERSION_MAJOR 0
+#define HS_VERSION_MINOR 1
+#define HS_VERSION_PATCH 0
+
+/* Version of the library actually loaded (may differ from the header's). */
+HS_EXPORT int hs_version(int *major, int *minor, int *patch);
+HS_EXPORT const char *hs_version_string(void);
+
+/* ---- status codes (values are part of the ABI; never renumbered) -------- */
+#define HS_OK                     0
+#define HS_ERR_NULL_POINTER       1  /* a required pointer argument is NULL */
+#define HS_ERR_STRUCT_SIZE        2  /* struct_size field not set or unknown */
+#define HS_ERR_NOT_FINITE         3  /* an input is NaN or infinite */
+#define HS_ERR_BAD_SIZE           4  /* a, p0, E*, P or R not > 0 */
+#define HS_ERR_BAD_FRICTION       5  /* friction coefficient f not > 0 */
+#define HS_ERR_GROSS_SLIDING      6  /* |Q| >= fP: no stick zone, the contact slides */
+#define HS_ERR_BAD_GEOMETRY       7  /* unknown geometry or invalid geometry parameter */
+#define HS_ERR_POINT_OUTSIDE      8  /* an evaluation point lies outside |x| <= a */
+#define HS_ERR_BUFFER_TOO_SMALL   9  /* an output buffer is too short */
+#define HS_ERR_NO_CONVERGENCE    10  /* an iteration failed to converge */
+#define HS_ERR_BAD_OPTION        11  /* an option value is out of range */
+#define HS_ERR_OUT_OF_MEMORY     12  /* allocation failed */
+#define HS_ERR_INTERNAL          13  /* unexpected internal error (please report) */
+#define HS_ERR_OVERFLOW          14  /* a result is not representable (overflow) */
+
+/* Message for a status code; never NULL. Unknown codes give a generic text. */
+HS_EXPORT const char *hs_strerror(int status);
+
+/* ---- geometry ----------------------------------------------------------- */
+#define HS_GEOMETRY_HERTZ 1  /* cylinder on flat: p(x) = p0 sqrt(1 - x^2/a^2) */
+
+/* ---- regimes -------------------------------------------------------------- */
+#define HS_REGIME_STUCK         0  /* Q = sigma = 0: no slip */
+#define HS_REGIME_SAME_SIGN     1  /* slip zones slip in the same direction */
+#define HS_REGIME_OPPOSITE_SIGN 2  /* slip zones slip in opposite directions */
+
+/* ---- scene -----------------------------------------------------------------
+ * Dimensionless load ratios are the primary inputs, so that ratios close to
+ * the limits (1 - Q/fP down to 1e-15) are not spoiled by rounding.
+ * Units are any consistent set (forces per unit length in plane strain).
+ * Fill with hs_scene_default() and then set fields, or use
+ * hs_scene_from_hertz_loads(). */
+typedef struct hs_scene {
+  size_t struct_size;     /* = sizeof(hs_scene), set by hs_scene_default */
+  int geometry;           /* HS_GEOMETRY_HERTZ */
+  double a;               /* contact half-width, > 0 */
+  double p0;              /* reference pressure 2P/(pi a) (Hertz peak pressure), > 0 */
+  double f;               /* coefficient of friction, > 0 */
+  double E_star;          /* composite plane-strain modulus: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2 */
+  double Q_over_fP;       /* shear force ratio Q/(fP), |.| < 1, P = pi a p0 / 2 */
+  double sigma_over_fp0;  /* differential bulk tension ratio sigma/(f p0), any real */
+} hs_scene;
+
+/* Defaults: Hertz, a = 1, p0 = 1, f = 1, E* = 1, Q/fP = 0.5, sigma/fp0 = 0.5. */
+HS_EXPORT int hs_scene_default(hs_scene *scene);
+
+/* Dimensional Hertz input: normal load P (per unit length), radius of relative
+ * curvature R, composite modulus E*, friction f, shear force Q, bulk tension
+ * sigma. Computes a = sqrt(4PR/(pi E*)), p0 = 2P/(pi a) and the ratios. */
+HS_EXPORT int hs_scene_from_hertz_loads(double P, double R, double E_star, double f,
+                                        double Q, double sigma, hs_scene *scene);
+
+/* ---- options ---------------------------------------------------------------- */
+typedef struct hs_options {
+  size_t struct_size;   /* = sizeof(hs_options), set by hs_options_default */
+  int max_iterations;   /* Newton iteration cap, >= 1 (default 100) */
+  double rtol;          /* relative tolerance asked of quadrature-based outputs
+                           (slip and energy in the opposite-sign regime, energies):
+                           0 (default) = full double precision; else in [1e-15, 1e-2] */
+} hs_options;
+
+HS_EXPORT int hs_options_default(hs_options *opts);
+
+/* ---- solving ------------------------------------------------------------------ */
+typedef struct hs_solution hs_solution;  /* opaque, immutable once made */
+
+/* Solve a scene. opts may be NULL (defaults). On success *out is a new handle
+ * to release with hs_solution_free. |Q|/fP >= 1 gives HS_ERR_GROSS_SLIDING. */
+HS_EXPORT int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out);
+HS_EXPORT void hs_solution_free(hs_solution *sol);  /* NULL is a no-op */
+
+/* Summary of a solution (all lengths dimensional, in the units of a). */
+typedef struct hs_summary {
+  size_t struct_size;   /* caller sets = sizeof(hs_summary) */
+  int regime;           /* HS_REGIME_* */
+  int slip_dir1;        /* slip direction in zone 1 (b1, a): +1, -1, or 0 if empty */
+  int slip_dir2;        /* slip direction in zone 2 (-a, -b2) */
+  int iterations;       /* Newton iterations used (0 for closed forms) */
+  double a;
+  double b1;            /* stick zone is (-b2, b1) */
+  double b2;
+  double d1;            /* a - b1, to full relative accuracy */
+  double d2;            /* a - b2 */
+} hs_summary;
+
+HS_EXPORT int hs_solution_summary(const hs_solution *sol, hs_summary *out);
+
+/* Energy dissipated against friction in each slip zone for monotonic loading
+ * (per unit length out of plane): E_i = integral over zone i of f p |h| dx.
+ * energy[0] is zone 1, energy[1] zone 2. */
+HS_EXPORT int hs_solution_energy(const hs_solution *sol, double energy[2]);
+
+/* Point evaluations at n points x[0..n-1] (|x| <= a), written to out[0..n-1].
+ * Points in the stick zone give 0.
+ *   Bx: dislocation density (slip-displacement gradient) B_x = dh/dx
+ *   slip: relative slip h(x), zero at the stick boundaries
+ *   work: friction work density W(x) = f p(x) |h(x)| for monotonic loading */
+HS_EXPORT int hs_eval_Bx(const hs_solution *sol, size_t n, const double *x, double *out);
+HS_EXPORT int hs_eval_slip(const hs_solution *sol, size_t n, const double *x, double *out);
+HS_EXPORT int hs_eval_work(const hs_solution *sol, size_t n, const double *x, double *out);
+
+/* Contact pressure p(x) of the scene's geometry at n points. */
+HS_EXPORT int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* HALFSLIP_H */

@@ -1,0 +1,249 @@
+// halfslip C ABI: extern "C" shims over the templated core, instantiated on
+// double. Every entry point runs inside guard(): no C++ exception crosses the
+// ABI, every failure becomes an HS_ERR_* status, outputs are untouched on error.
+#include "halfslip/halfslip.h"
+
+#include <cmath>
+#include <cstring>
+#include <new>
+#include <vector>
+
+#include "halfslip/core/hertz.hpp"
+
+namespace core = hs::core;
+
+static_assert(HS_OK == int(core::status::ok), "status table");
+static_assert(HS_ERR_NULL_POINTER == int(core::status::null_pointer), "status table");
+static_assert(HS_ERR_STRUCT_SIZE == int(core::status::struct_size), "status table");
+static_assert(HS_ERR_NOT_FINITE == int(core::status::not_finite), "status table");
+static_assert(HS_ERR_BAD_SIZE == int(core::status::bad_size), "status table");
+static_assert(HS_ERR_BAD_FRICTION == int(core::status::bad_friction), "status table");
+static_assert(HS_ERR_GROSS_SLIDING == int(core::status::gross_sliding), "status table");
+static_assert(HS_ERR_BAD_GEOMETRY == int(core::status::bad_geometry), "status table");
+static_assert(HS_ERR_POINT_OUTSIDE == int(core::status::point_outside), "status table");
+static_assert(HS_ERR_BUFFER_TOO_SMALL == int(core::status::buffer_too_small), "status table");
+static_assert(HS_ERR_NO_CONVERGENCE == int(core::status::no_convergence), "status table");
+static_assert(HS_ERR_BAD_OPTION == int(core::status::bad_option), "status table");
+static_assert(HS_ERR_OUT_OF_MEMORY == int(core::status::out_of_memory), "status table");
+static_assert(HS_ERR_INTERNAL == int(core::status::internal), "status table");
+static_assert(HS_ERR_OVERFLOW == int(core::status::overflow), "status table");
+
+struct hs_solution {
+  core::hertz_solution<double> sol;
+};
+
+namespace {
+
+// The exception firewall: every extern "C" body goes through here.
+template <class F> int guard(F &&body) noexcept {
+  try {
+    body();
+    return HS_OK;
+  } catch (const core::error &e) {
+    return int(e.code());
+  } catch (const std::bad_alloc &) {
+    return HS_ERR_OUT_OF_MEMORY;
+  } catch (...) {
+    return HS_ERR_INTERNAL;
+  }
+}
+
+void require(bool ok, core::status s, const char *msg) {
+  if (!ok) throw core::error(s, msg);
+}
+
+core::hertz_scene<double> to_core(const hs_scene *sc) {
+  require(sc != nullptr, core::status::null_pointer, "scene is NULL");
+  require(sc->struct_size == sizeof(hs_scene), core::status::struct_size, "scene struct_size");
+  require(sc->geometry == HS_GEOMETRY_HERTZ, core::status::bad_geometry, "unknown geometry");
+  core::hertz_scene<double> c;
+  c.a = sc->a;
+  c.p0 = sc->p0;
+  c.f = sc->f;
+  c.Estar = sc->E_star;
+  c.q = sc->Q_over_fP;
+  c.s = sc->sigma_over_fp0;
+  core::validate(c);
+  return c;
+}
+
+// Evaluate fn at every point into a scratch vector first, so that out is
+// untouched unless every point succeeds.
+template <class Fn>
+int eval_points(const hs_solution *sol, size_t n, const double *x, double *out, Fn fn) {
+  return guard([&] {
+    require(sol != nullptr, core::status::null_pointer, "solution is NULL");
+    if (n == 0) return;
+    require(x != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+    const double a = sol->sol.scene.a;
+    for (size_t i = 0; i < n; ++i) {
+      require(std::isfinite(x[i]), core::status::not_finite, "evaluation point is NaN or infinite");
+      require(std::fabs(x[i]) <= a, core::status::point_outside, "evaluation point outside |x| <= a");
+    }
+    std::vector<double> tmp(n);
+    for (size_t i = 0; i < n; ++i) {
+      tmp[i] = fn(sol->sol, x[i]);
+      require(std::isfinite(tmp[i]), core::status::overflow, "result not representable");
+    }
+    std::memcpy(out, tmp.data(), n * sizeof(double));
+  });
+}
+
+}  // namespace
+
+extern "C" {
+
+int hs_version(int *major, int *minor, int *patch) {
+  if (!major || !minor || !patch) return HS_ERR_NULL_POINTER;
+  *major = HS_VERSION_MAJOR;
+  *minor = HS_VERSION_MINOR;
+  *patch = HS_VERSION_PATCH;
+  return HS_OK;
+}
+
+const char *hs_version_string(void) { return "0.1.0"; }
+
+const char *hs_strerror(int status) {
+  switch (status) {
+    case HS_OK: return "success";
+    case HS_ERR_NULL_POINTER: return "a required pointer argument is NULL";
+    case HS_ERR_STRUCT_SIZE: return "struct_size field is not sizeof the struct (initialise it with its hs_*_default function)";
+    case HS_ERR_NOT_FINITE: return "an input value is NaN or infinite";
+    case HS_ERR_BAD_SIZE: return "a size or modulus (a, p0, E*, P, R) is not strictly positive";
+    case HS_ERR_BAD_FRICTION: return "the friction coefficient f is not strictly positive";
+    case HS_ERR_GROSS_SLIDING: return "|Q| >= fP: the contact slides as a whole (no stick zone)";
+    case HS_ERR_BAD_GEOMETRY: return "unknown geometry or invalid geometry parameter";
+    case HS_ERR_POINT_OUTSIDE: return "an evaluation point lies outside the contact |x| <= a";
+    case HS_ERR_BUFFER_TOO_SMALL: return "an output buffer is too small";
+    case HS_ERR_NO_CONVERGENCE: return "the iteration for the stick-zone boundaries did not converge";
+    case HS_ERR_BAD_OPTION: return "an option value is out of range";
+    case HS_ERR_OUT_OF_MEMORY: return "out of memory";
+    case HS_ERR_INTERNAL: return "internal error in halfslip (please report)";
+    case HS_ERR_OVERFLOW: return "a result is not representable in double precision (overflow)";
+    default: return "unknown halfslip status code";
+  }
+}
+
+int hs_scene_default(hs_scene *scene) {
+  if (!scene) return HS_ERR_NULL_POINTER;
+  hs_scene s;
+  std::memset(&s, 0, sizeof s);
+  s.struct_size = sizeof(hs_scene);
+  s.geometry = HS_GEOMETRY_HERTZ;
+  s.a = 1.0;
+  s.p0 = 1.0;
+  s.f = 1.0;
+  s.E_star = 1.0;
+  s.Q_over_fP = 0.5;
+  s.sigma_over_fp0 = 0.5;
+  *scene = s;
+  return HS_OK;
+}
+
+int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, double Q, double sigma,
+                              hs_scene *scene) {
+  return guard([&] {
+    require(scene != nullptr, core::status::null_pointer, "scene is NULL");
+    for (double v : {P, R, E_star, f, Q, sigma})
+      require(std::isfinite(v), core::status::not_finite, "load value is NaN or infinite");
+    require(P > 0 && R > 0 && E_star > 0, core::status::bad_size, "P, R, E* must be > 0");
+    require(f > 0, core::status::bad_friction, "f must be > 0");
+    const double pi = core::pi<double>();
+    const double a = std::sqrt(4 * P * R / (pi * E_star));
+    const double p0 = 2 * P / (pi * a);
+    require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
+            "contact size not representable");
+    const double q = Q / (f * P);
+    const double s = sigma / (f * p0);
+    require(std::isfinite(q) && std::isfinite(s), core::status::overflow, "load ratio not representable");
+    require(std::fabs(q) < 1, core::status::gross_sliding, "|Q| >= fP");
+    hs_scene out;
+    hs_scene_default(&out);
+    out.a = a;
+    out.p0 = p0;
+    out.f = f;
+    out.E_star = E_star;
+    out.Q_over_fP = q;
+    out.sigma_over_fp0 = s;
+    *scene = out;
+  });
+}
+
+int hs_options_default(hs_options *opts) {
+  if (!opts) return HS_ERR_NULL_POINTER;
+  hs_options o;
+  std::memset(&o, 0, sizeof o);
+  o.struct_size = sizeof(hs_options);
+  o.max_iterations = 100;
+  o.rtol = 0.0;
+  *opts = o;
+  return HS_OK;
+}
+
+int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
+  return guard([&] {
+    require(out != nullptr, core::status::null_pointer, "output handle pointer is NULL");
+    const auto sc = to_core(scene);
+    core::solve_options<double> o;
+    if (opts) {
+      require(opts->struct_size == sizeof(hs_options), core::status::struct_size, "options struct_size");
+      require(opts->max_iterations >= 1 && opts->max_iterations <= 100000, core::status::bad_option,
+              "max_iterations out of range");
+      require(std::isfinite(opts->rtol) && (opts->rtol == 0 || (opts->rtol >= 1e-15 && opts->rtol <= 1e-2)),
+              core::status::bad_option, "rtol out of range");
+      o.max_iterations = opts->max_iterations;
+      o.rtol = opts->rtol;
+    }
+    auto *h = new hs_solution{core::solve_hertz<double>(sc, o)};
+    *out = h;
+  });
+}
+
+void hs_solution_free(hs_solution *sol) { delete sol; }
+
+int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
+  return guard([&] {
+    require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
+    require(out->struct_size == sizeof(hs_summary), core::status::struct_size, "summary struct_size");
+    const auto &s = sol->sol;
+    hs_summary r;
+    std::memset(&r, 0, sizeof r);
+    r.struct_size = sizeof(hs_summary);
+    r.regime = int(s.reg);
+    r.slip_dir1 = s.dir1();
+    r.slip_dir2 = s.dir2();
+    r.iterations = s.iterations;
+    r.a = s.scene.a;
+    r.b1 = s.b1();
+    r.b2 = s.b2();
+    r.d1 = s.d1();
+    r.d2 = s.d2();
+    *out = r;
+  });
+}
+
+int hs_solution_energy(const hs_solution *sol, double energy[2]) {
+  return guard([&] {
+    require(sol != nullptr && energy != nullptr, core::status::null_pointer, "NULL argument");
+    const double e1 = sol->sol.energy(1), e2 = sol->sol.energy(2);
+    require(std::isfinite(e1) && std::isfinite(e2), core::status::overflow, "energy not representable");
+    energy[0] = e1;
+    energy[1] = e2;
+  });
+}
+
+int hs_eval_Bx(const hs_solution *sol, size_t n, const double *x, double *out) {
+  return eval_points(sol, n, x, out, [](const core::hertz_solution<double> &s, double v) { return s.Bx(v); });
+}
+int hs_eval_slip(const hs_solution *sol, size_t n, const double *x, double *out) {
+  return eval_points(sol, n, x, out, [](const core::hertz_solution<double> &s, double v) { return s.slip(v); });
+}
+int hs_eval_work(const hs_solution *sol, size_t n, const double *x, double *out) {
+  return eval_points(sol, n, x, out, [](const core::hertz_solution<double> &s, double v) { return s.work(v); });
+}
+int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out) {
+  return eval_points(sol, n, x, out,
+                     [](const core::hertz_solution<double> &s, double v) { return s.pressure(v); });
+}
+
+}  // extern "C"

@@ -1,0 +1,51 @@
+// halfslip core: complete elliptic integrals for the Hertz side conditions.
+//
+// Bulirsch's general complete elliptic integral (R. Bulirsch, Numer. Math. 13
+// (1969) 305-315):
+//   cel(kc, p, a, b) = int_0^{pi/2} (a cos^2 t + b sin^2 t)
+//                      / ((cos^2 t + p sin^2 t) sqrt(cos^2 t + kc^2 sin^2 t)) dt
+// for kc > 0, p > 0. One AGM-like loop, quadratically convergent, generic in
+// T; it gives the *differences* (E - k'^2 K)/k^2 = cel(kc,1,1,0) and
+// (Pi(n) - K)/n = cel(kc,1-n,0,1) directly, with no cancellation as k -> 0 or
+// n -> 0, and is an order of magnitude faster in double than R_J from the
+// duplication theorem (bench/bench_hertz.cpp measures both).
+// The Carlson forms the side conditions use follow from (Q > 0, kc^2 = P/Q):
+//   R_F(0,P,Q)   = cel(kc,1,1,1) / sqrt(Q)
+//   R_D(0,Q,P)   = 3 cel(kc,1,1,0) / (P sqrt(Q))
+//   R_J(0,P,Q,r) = 3 cel(kc, r/Q, 0, 1) / (Q sqrt(Q))
+// (checked against Boost.Math's ellint_rf/rd/rj in tests/test_elliptic.cpp).
+#pragma once
+#include <cmath>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/precision.hpp>
+
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+template <class T> T cel(T kc, T p, T a, T b) {
+  using std::abs; using std::sqrt;
+  if (!(kc > 0) || !(p > 0)) throw error(status::internal, "cel: needs kc > 0 and p > 0");
+  // The loop stops once kc and g agree to sqrt(eps): the last step is quadratic.
+  const T ca = sqrt(boost::math::tools::epsilon<T>());
+  T e = kc, em = T(1);
+  p = sqrt(p);
+  b /= p;
+  for (int i = 0; i < 200; ++i) {
+    const T f = a;
+    a += b / p;
+    T g = e / p;
+    b += f * g;
+    b += b;
+    p += g;
+    g = em;
+    em += kc;
+    if (abs(g - kc) <= g * ca) break;
+    kc = sqrt(e);
+    kc += kc;
+    e = kc * em;
+  }
+  return boost::math::constants::half_pi<T>() * (b + a * em) / (em * (em + p));
+}
+
+}}  // namespace hs::core

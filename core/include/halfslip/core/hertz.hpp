@@ -1,0 +1,222 @@
+// halfslip core: Hertz (cylinder) contact under constant normal load, shear
+// force Q and differential bulk tension sigma, in every load regime.
+//
+// Generic in the real type T (double is the fast path; the reference backend
+// instantiates the same code on MPFR). Conventions: docs/conventions.md.
+//
+// Internally every scene is mapped to a canonical one with q = Q/fP >= 0 and
+// s = sigma/(f p0) >= 0 (negation Q,sigma -> -Q,-sigma flips every slip;
+// the mirror x -> -x flips sigma and swaps the edges). All lengths are in
+// units of a inside the canonical solution (beta = b/a, delta = 1 - beta).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "hertz_opposite.hpp"
+#include "numerics.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+enum class regime : int { stuck = 0, same_sign = 1, opposite_sign = 2 };
+
+template <class T> struct hertz_scene {
+  T a{1}, p0{1}, f{1}, Estar{1};
+  T q{0};  // Q / (f P), P = pi a p0 / 2
+  T s{0};  // sigma / (f p0)
+};
+
+template <class T> struct solve_options {
+  int max_iterations = 100;
+  T rtol = T(0);  // 0: full precision of T
+};
+
+template <class T> void validate(const hertz_scene<T> &sc) {
+  using std::isfinite;
+  using boost::math::isfinite;
+  if (!isfinite(sc.a) || !isfinite(sc.p0) || !isfinite(sc.f) || !isfinite(sc.Estar) ||
+      !isfinite(sc.q) || !isfinite(sc.s))
+    throw error(status::not_finite, "scene has a NaN or infinite value");
+  if (!(sc.a > 0)) throw error(status::bad_size, "contact half-width a must be > 0");
+  if (!(sc.p0 > 0)) throw error(status::bad_size, "reference pressure p0 must be > 0");
+  if (!(sc.Estar > 0)) throw error(status::bad_size, "modulus E* must be > 0");
+  if (!(sc.f > 0)) throw error(status::bad_friction, "friction coefficient f must be > 0");
+  if (!(abs(sc.q) < 1)) throw error(status::gross_sliding, "|Q| >= fP: gross sliding, no stick zone");
+}
+
+template <class T> struct hertz_solution {
+  hertz_scene<T> scene;
+  regime reg = regime::stuck;
+  bool negate = false;  // canonical q,s = -Q/fP, -sigma/fp0
+  bool mirror = false;  // canonical x = -x (edges swapped)
+  // canonical, dimensionless: right zone (beta1, 1), left zone (-1, -beta2)
+  T beta1{1}, beta2{1}, delta1{0}, delta2{0};
+  int dirR = 0, dirL = 0;  // canonical slip directions
+  int iterations = 0;
+  T rtol{0};
+
+  // ---- user frame (see docs/conventions.md) ----
+  int sign() const { return negate ? -1 : 1; }
+  T b1() const { return scene.a * (mirror ? beta2 : beta1); }
+  T b2() const { return scene.a * (mirror ? beta1 : beta2); }
+  T d1() const { return scene.a * (mirror ? delta2 : delta1); }
+  T d2() const { return scene.a * (mirror ? delta1 : delta2); }
+  int dir1() const { return sign() * (mirror ? dirL : dirR); }
+  int dir2() const { return sign() * (mirror ? dirR : dirL); }
+  T half_width() const { return (beta1 + beta2) / 2; }  // stick half-width / a
+
+  // Quadrature tolerance for the numerically integrated outputs.
+  T quad_tol() const {
+    using std::sqrt;
+    return rtol > 0 ? sqrt(rtol) : boost::math::tools::root_epsilon<T>();
+  }
+
+  // --- canonical dimensionless dislocation density at distance dl >= 0 from
+  // the stick boundary, in the right (zone = +1) or left (zone = -1) zone.
+  // B_x = (f p0 / E*) * bhat.
+  T bhat(int zone, const T &dl) const {
+    using std::sqrt;
+    const T w = half_width();
+    const T Rh = sqrt(dl * (2 * w + dl));  // sqrt((xi - beta1)(xi + beta2))
+    if (reg != regime::opposite_sign) return zone > 0 ? 2 * Rh : -2 * Rh;
+    if (zone > 0) {
+      // Right zone slips against the left one: b = -2 R (1 + 2/pi H),
+      // H(x) = int_left sqrt(1-t^2)/(R(t)(x - t)) dt = G(-x; beta2, beta1).
+      const T g = opposite_G<T>(beta2, beta1, delta2, delta1, dl);
+      return -2 * Rh * (1 + 2 * g / pi<T>());
+    }
+    const T g = opposite_G<T>(beta1, beta2, delta1, delta2, dl);
+    return -2 * Rh * (1 + 2 * g / pi<T>());
+  }
+
+  // canonical dimensionless slip h = (f p0 a / E*) * hhat, zero at the stick boundary.
+  T hhat(int zone, const T &dl) const {
+    if (!(dl > 0)) return T(0);
+    if (reg != regime::opposite_sign) return 2 * sqrt_quadratic_integral(dl, half_width());
+    // int_0^dl bhat(u) du; bhat ~ sqrt(u) at u = 0: tanh-sinh handles it.
+    const T I = integrate_ts<T>(
+        [&](const T &u, const T &uc) { return bhat(zone, uc < 0 ? -uc : u); }, T(0), dl,
+        quad_tol());
+    return zone > 0 ? I : -I;
+  }
+
+  // Zone length (canonical) in units of a.
+  T zone_length(int zone) const { return zone > 0 ? delta1 : delta2; }
+
+  // Dimensionless energy of a canonical zone: int p_hat |h_hat| dxi, by parts
+  // int Pi(xi) b(xi) dxi with Pi the pressure tail beyond xi (Pi = 0 at the
+  // contact edge, h = 0 at the stick edge).
+  T energy_hat(int zone) const {
+    using std::abs;
+    const T L = zone_length(zone);
+    if (!(L > 0)) return T(0);
+    const T I = integrate_ts<T>(
+        [&](const T &u, const T &uc) {
+          // u: distance from stick edge; distance from contact edge = L - u
+          const T dl = uc < 0 ? -uc : u;
+          const T ce = uc > 0 ? uc : L - u;
+          return pressure_tail(ce) * bhat(zone, dl);
+        },
+        T(0), L, quad_tol());
+    return abs(I);
+  }
+
+  // ---- dimensional point evaluations in the user frame ----
+  // Locate x: returns zone (+1 right, -1 left, 0 stick) in canonical frame
+  // and the distance dl from the stick boundary (units of a).
+  int locate(const T &x, T &dl) const {
+    const T xi = (mirror ? -x : x) / scene.a;
+    if (delta1 > 0 && xi >= beta1) {
+      dl = xi - beta1;
+      return +1;
+    }
+    if (delta2 > 0 && xi <= -beta2) {
+      dl = -beta2 - xi;
+      return -1;
+    }
+    dl = T(0);
+    return 0;
+  }
+  T Bx(const T &x) const {
+    T dl;
+    const int z = locate(x, dl);
+    if (z == 0) return T(0);
+    const T v = scene.f * scene.p0 / scene.Estar * bhat(z, dl);
+    return (mirror ? -sign() : sign()) * v;
+  }
+  T slip(const T &x) const {
+    T dl;
+    const int z = locate(x, dl);
+    if (z == 0) return T(0);
+    return sign() * scene.f * scene.p0 * scene.a / scene.Estar * hhat(z, dl);
+  }
+  T pressure(const T &x) const {
+    using std::sqrt;
+    const T xi = x / scene.a;
+    const T r = (1 - xi) * (1 + xi);
+    return r > 0 ? scene.p0 * sqrt(r) : T(0);
+  }
+  T work(const T &x) const {
+    using std::abs;
+    return scene.f * pressure(x) * abs(slip(x));
+  }
+  // Energy dissipated in user zone i (1: (b1, a), 2: (-a, -b2)).
+  T energy(int i) const {
+    const int z = ((i == 1) != mirror) ? +1 : -1;
+    const T scale = scene.f * scene.f * scene.p0 * scene.p0 * scene.a * scene.a / scene.Estar;
+    return scale * energy_hat(z);
+  }
+};
+
+// Solve a Hertz scene. Throws hs::core::error on bad input or failure.
+template <class T>
+hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &opt = {}) {
+  using std::sqrt;
+  validate(sc);
+  if (opt.max_iterations < 1) throw error(status::bad_option, "max_iterations must be >= 1");
+  hertz_solution<T> sol;
+  sol.scene = sc;
+  sol.rtol = opt.rtol;
+  T q = sc.q, s = sc.s;
+  if (q < 0) {
+    sol.negate = true;
+    q = -q;
+    s = -s;
+  }
+  if (s < 0) {
+    sol.mirror = true;
+    s = -s;
+  }
+  if (q == 0 && s == 0) {
+    sol.reg = regime::stuck;
+    return sol;  // beta = 1, delta = 0
+  }
+  // Same-sign closed form (paper eq 20, verified in tests/test_hertz.cpp):
+  // beta = sqrt(1-q) +- s/4, with 1 - sqrt(1-q) = q/(1+sqrt(1-q)) (no cancellation).
+  const T root = sqrt(1 - q);
+  const T m = q / (1 + root);
+  const T e = s / 4;
+  if (e <= m) {
+    sol.reg = regime::same_sign;
+    sol.beta1 = root + e;
+    sol.beta2 = root - e;
+    sol.delta1 = m - e;
+    sol.delta2 = m + e;
+    sol.dirR = sol.delta1 > 0 ? 1 : 0;
+    sol.dirL = 1;
+    return sol;
+  }
+  sol.reg = regime::opposite_sign;
+  const auto r = solve_opposite<T>(q, s, opt.max_iterations);
+  sol.beta1 = r.beta1;
+  sol.beta2 = r.beta2;
+  sol.delta1 = r.delta1;
+  sol.delta2 = r.delta2;
+  sol.iterations = r.iterations;
+  sol.dirR = -1;
+  sol.dirL = 1;
+  return sol;
+}
+
+}}  // namespace hs::core

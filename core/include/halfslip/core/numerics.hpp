@@ -1,0 +1,83 @@
+// halfslip core: small numerical building blocks, generic in the real type T.
+// Every truncation rule derives from std::numeric_limits<T>::epsilon() (or the
+// run-time precision of a multiprecision T), never from a double constant.
+#pragma once
+#include <cmath>
+#include <limits>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/precision.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+
+namespace hs { namespace core {
+
+template <class T> inline T pi() { return boost::math::constants::pi<T>(); }
+template <class T> inline T eps() { return boost::math::tools::epsilon<T>(); }
+
+// y - sin(y) for y >= 0, without cancellation for small y.
+template <class T> T y_minus_sin(const T &y) {
+  using std::sin;
+  if (y > T(1)) return y - sin(y);
+  // y^3/3! - y^5/5! + ...
+  const T y2 = y * y;
+  T term = y * y2 / 6, sum = term;
+  for (int k = 2; k < 200; ++k) {
+    term *= -y2 / T((2 * k) * (2 * k + 1));
+    sum += term;
+    if (abs(term) <= eps<T>() * abs(sum)) break;
+  }
+  return sum;
+}
+
+// sinh(y) - y for y >= 0, without cancellation for small y.
+template <class T> T sinh_minus_y(const T &y) {
+  using std::sinh;
+  if (y > T(1)) return sinh(y) - y;
+  const T y2 = y * y;
+  T term = y * y2 / 6, sum = term;
+  for (int k = 2; k < 200; ++k) {
+    term *= y2 / T((2 * k) * (2 * k + 1));
+    sum += term;
+    if (term <= eps<T>() * sum) break;
+  }
+  return sum;
+}
+
+// Integral of sqrt(u^2 - w^2) du from u = w to u = w + delta (w > 0, delta >= 0),
+// accurate to a few ulps for all delta/w (no 1 - cosh cancellation).
+template <class T> T sqrt_quadratic_integral(const T &delta, const T &w) {
+  using std::asinh; using std::sqrt; using std::log;
+  if (!(delta > 0)) return T(0);
+  const T S = sqrt(delta * (2 * w + delta));  // sqrt(U^2 - w^2), U = w + delta
+  if (!(w > 0)) return (w + delta) * S / 2;  // w = 0: integral of u du
+  if (S <= w) {
+    // u = w cosh(t): w^2/4 (sinh 2Theta - 2Theta), Theta = asinh(S/w) <= asinh(1)
+    const T theta = asinh(S / w);
+    return w * w / 4 * sinh_minus_y(2 * theta);
+  }
+  const T U = w + delta;
+  // Theta = acosh(U/w) = log((U + S)/w); no cancellation here as w^2 Theta < U S / 1.6
+  return (U * S - w * w * log((U + S) / w)) / 2;
+}
+
+// Pi_hat(1 - xi) = integral_xi^1 sqrt(1 - t^2) dt as a function of the distance
+// c = 1 - xi in [0, 2]; accurate for small c.
+template <class T> T pressure_tail(const T &c) {
+  using std::asin; using std::sqrt;
+  if (!(c > 0)) return T(0);
+  const T theta = 2 * asin(sqrt(c / 2));  // acos(1 - c)
+  return y_minus_sin(2 * theta) / 4;
+}
+
+// Tanh-sinh quadrature on [lo, hi] of f(x, xc) where xc is the signed distance
+// to the nearest end (xc < 0: x = lo - xc; xc > 0: x = hi - xc), as in Boost.Math.
+// rtol is the termination tolerance; the convergence is quadratic so the
+// error is typically far below it.
+template <class T, class F>
+T integrate_ts(const F &f, const T &lo, const T &hi, const T &rtol, T *err = nullptr,
+               T *L1 = nullptr) {
+  if (!(hi > lo)) return T(0);
+  boost::math::quadrature::tanh_sinh<T> ts(15);
+  return ts.integrate(f, lo, hi, rtol, err, L1);
+}
+
+}}  // namespace hs::core

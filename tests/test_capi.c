@@ -1,0 +1,172 @@
+/* C-only test of the public ABI: compiled as C99 -pedantic -Werror.
+ * Exercises every entry point, the status codes for bad input, and checks
+ * that outputs are untouched on error. Prints "N passed, M failed". */
+#include <halfslip/halfslip.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static const double kPi = 3.14159265358979323846;
+
+static int passed = 0, failed = 0;
+#define CHECK(cond)                                                     \
+  do {                                                                  \
+    if (cond) {                                                         \
+      ++passed;                                                         \
+    } else {                                                            \
+      ++failed;                                                         \
+      fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
+    }                                                                   \
+  } while (0)
+
+static hs_scene scene_qs(double q, double s) {
+  hs_scene sc;
+  hs_scene_default(&sc);
+  sc.Q_over_fP = q;
+  sc.sigma_over_fp0 = s;
+  return sc;
+}
+
+static int solve_status(hs_scene sc) {
+  hs_solution *sol = NULL;
+  int st = hs_solve(&sc, NULL, &sol);
+  hs_solution_free(sol);
+  return st;
+}
+
+int main(void) {
+  int maj = -1, min = -1, pat = -1;
+  CHECK(hs_version(&maj, &min, &pat) == HS_OK);
+  CHECK(maj == HS_VERSION_MAJOR && min == HS_VERSION_MINOR && pat == HS_VERSION_PATCH);
+  CHECK(hs_version(NULL, &min, &pat) == HS_ERR_NULL_POINTER);
+  CHECK(strlen(hs_version_string()) > 0);
+
+  /* every code has its own message; unknown codes still give text */
+  {
+    int c;
+    for (c = 0; c <= HS_ERR_OVERFLOW; ++c) CHECK(hs_strerror(c) != NULL && strlen(hs_strerror(c)) > 0);
+    CHECK(strcmp(hs_strerror(HS_ERR_GROSS_SLIDING), hs_strerror(HS_ERR_BAD_FRICTION)) != 0);
+    CHECK(strstr(hs_strerror(12345), "unknown") != NULL);
+    CHECK(strstr(hs_strerror(-1), "unknown") != NULL);
+  }
+
+  /* a same-sign solve */
+  {
+    hs_scene sc = scene_qs(0.5, 0.2);
+    hs_solution *sol = NULL;
+    hs_summary sm;
+    double x[3], B[3], h[3], W[3], E[2];
+    CHECK(hs_solve(&sc, NULL, &sol) == HS_OK);
+    CHECK(sol != NULL);
+    sm.struct_size = sizeof sm;
+    CHECK(hs_solution_summary(sol, &sm) == HS_OK);
+    CHECK(sm.regime == HS_REGIME_SAME_SIGN);
+    CHECK(fabs(sm.b1 - (sqrt(0.5) + 0.05)) < 1e-15);
+    CHECK(fabs(sm.b2 - (sqrt(0.5) - 0.05)) < 1e-15);
+    CHECK(sm.slip_dir1 == 1 && sm.slip_dir2 == 1);
+    x[0] = 0.0;       /* stick zone */
+    x[1] = 0.99;      /* slip zone 1 */
+    x[2] = -0.99;     /* slip zone 2 */
+    CHECK(hs_eval_Bx(sol, 3, x, B) == HS_OK);
+    CHECK(hs_eval_slip(sol, 3, x, h) == HS_OK);
+    CHECK(hs_eval_work(sol, 3, x, W) == HS_OK);
+    CHECK(B[0] == 0 && h[0] == 0 && W[0] == 0);
+    /* eq (21): B = 2 f p0/(a E*) sqrt((x-b1)(x+b2)) in zone 1 */
+    CHECK(fabs(B[1] - 2 * sqrt((0.99 - sm.b1) * (0.99 + sm.b2))) < 1e-14);
+    CHECK(B[2] < 0 && h[1] > 0 && h[2] > 0 && W[1] > 0);
+    CHECK(hs_solution_energy(sol, E) == HS_OK);
+    CHECK(E[0] > 0 && E[1] > E[0]);
+
+    /* bad evaluation inputs: specific code, output untouched */
+    {
+      double xo[2], out[2];
+      xo[0] = 0.5;
+      xo[1] = 1.5;
+      out[0] = out[1] = 42.0;
+      CHECK(hs_eval_Bx(sol, 2, xo, out) == HS_ERR_POINT_OUTSIDE);
+      CHECK(out[0] == 42.0 && out[1] == 42.0);
+      xo[1] = NAN;
+      CHECK(hs_eval_slip(sol, 2, xo, out) == HS_ERR_NOT_FINITE);
+      CHECK(out[0] == 42.0);
+      CHECK(hs_eval_work(sol, 2, NULL, out) == HS_ERR_NULL_POINTER);
+      CHECK(hs_eval_work(sol, 2, xo, NULL) == HS_ERR_NULL_POINTER);
+      CHECK(hs_eval_work(NULL, 2, xo, out) == HS_ERR_NULL_POINTER);
+      CHECK(hs_eval_Bx(sol, 0, NULL, NULL) == HS_OK); /* zero points: no-op */
+    }
+    sm.struct_size = 3;
+    CHECK(hs_solution_summary(sol, &sm) == HS_ERR_STRUCT_SIZE);
+    CHECK(hs_solution_summary(NULL, &sm) == HS_ERR_NULL_POINTER);
+    CHECK(hs_solution_energy(sol, NULL) == HS_ERR_NULL_POINTER);
+    hs_solution_free(sol);
+  }
+
+  /* an opposite-sign solve */
+  {
+    hs_scene sc = scene_qs(0.3, 2.0);
+    hs_solution *sol = NULL;
+    hs_summary sm;
+    CHECK(hs_solve(&sc, NULL, &sol) == HS_OK);
+    sm.struct_size = sizeof sm;
+    CHECK(hs_solution_summary(sol, &sm) == HS_OK);
+    CHECK(sm.regime == HS_REGIME_OPPOSITE_SIGN);
+    CHECK(sm.slip_dir1 == -1 && sm.slip_dir2 == 1);
+    CHECK(sm.b1 > sm.b2);
+    CHECK(sm.iterations >= 1);
+    hs_solution_free(sol);
+  }
+
+  /* bad scenes */
+  {
+    hs_scene sc = scene_qs(0.5, 0.2);
+    hs_solution *sol = (hs_solution *)0;
+    CHECK(hs_solve(NULL, NULL, &sol) == HS_ERR_NULL_POINTER);
+    CHECK(hs_solve(&sc, NULL, NULL) == HS_ERR_NULL_POINTER);
+    CHECK(solve_status(scene_qs(1.0, 0.0)) == HS_ERR_GROSS_SLIDING);
+    CHECK(solve_status(scene_qs(-1.0, 0.0)) == HS_ERR_GROSS_SLIDING);
+    CHECK(solve_status(scene_qs(NAN, 0.0)) == HS_ERR_NOT_FINITE);
+    CHECK(solve_status(scene_qs(0.1, INFINITY)) == HS_ERR_NOT_FINITE);
+    sc = scene_qs(0.5, 0.2); sc.f = 0;       CHECK(solve_status(sc) == HS_ERR_BAD_FRICTION);
+    sc = scene_qs(0.5, 0.2); sc.f = -1;      CHECK(solve_status(sc) == HS_ERR_BAD_FRICTION);
+    sc = scene_qs(0.5, 0.2); sc.a = -1;      CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
+    sc = scene_qs(0.5, 0.2); sc.p0 = 0;      CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
+    sc = scene_qs(0.5, 0.2); sc.E_star = 0;  CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
+    sc = scene_qs(0.5, 0.2); sc.geometry = 99; CHECK(solve_status(sc) == HS_ERR_BAD_GEOMETRY);
+    sc = scene_qs(0.5, 0.2); sc.struct_size = 1; CHECK(solve_status(sc) == HS_ERR_STRUCT_SIZE);
+    {
+      hs_options o;
+      hs_options_default(&o);
+      o.max_iterations = 0;
+      sc = scene_qs(0.5, 0.2);
+      sol = NULL;
+      CHECK(hs_solve(&sc, &o, &sol) == HS_ERR_BAD_OPTION);
+      CHECK(sol == NULL);
+      hs_options_default(&o);
+      o.rtol = -1;
+      CHECK(hs_solve(&sc, &o, &sol) == HS_ERR_BAD_OPTION);
+      o.struct_size = 0;
+      CHECK(hs_solve(&sc, &o, &sol) == HS_ERR_STRUCT_SIZE);
+    }
+    CHECK(hs_scene_default(NULL) == HS_ERR_NULL_POINTER);
+    CHECK(hs_options_default(NULL) == HS_ERR_NULL_POINTER);
+    hs_solution_free(NULL);
+  }
+
+  /* dimensional input: a = sqrt(4PR/(pi E*)), p0 = 2P/(pi a) */
+  {
+    hs_scene sc;
+    const double P = 1000, R = 0.05, E = 1.15e11, f = 0.6;
+    CHECK(hs_scene_from_hertz_loads(P, R, E, f, 300, 2e6, &sc) == HS_OK);
+    CHECK(fabs(sc.a - sqrt(4 * P * R / (kPi * E))) < 1e-15 * sc.a);
+    CHECK(fabs(sc.p0 - 2 * P / (kPi * sc.a)) < 1e-15 * sc.p0);
+    CHECK(fabs(sc.Q_over_fP - 300 / (f * P)) < 1e-16);
+    CHECK(hs_scene_from_hertz_loads(P, R, E, f, 700, 0, &sc) == HS_ERR_GROSS_SLIDING);
+    CHECK(hs_scene_from_hertz_loads(-P, R, E, f, 0, 0, &sc) == HS_ERR_BAD_SIZE);
+    CHECK(hs_scene_from_hertz_loads(P, R, E, 0, 0, 0, &sc) == HS_ERR_BAD_FRICTION);
+    CHECK(hs_scene_from_hertz_loads(P, NAN, E, f, 0, 0, &sc) == HS_ERR_NOT_FINITE);
+    CHECK(hs_scene_from_hertz_loads(P, R, E, f, 0, 0, NULL) == HS_ERR_NULL_POINTER);
+  }
+
+  printf("capi: %d passed, %d failed\n", passed, failed);
+  return failed == 0 ? 0 : 1;
+}

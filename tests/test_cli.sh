@@ -1,0 +1,32 @@
+#!/bin/sh
+# The halfslip command: default scene, JSON keys, bad input -> non-zero exit and one line.
+set -u
+cli="$1"
+pass=0; fail=0
+ok() { pass=$((pass+1)); }
+ko() { fail=$((fail+1)); echo "FAILED: $1"; }
+
+out=$("$cli" solve) && echo "$out" | grep -q "regime: same-sign" && ok || ko "default solve"
+echo "$out" | grep -q "b1/a" && ok || ko "report has b1/a"
+
+js=$("$cli" solve --Q-over-fP 0.3 --sigma-over-fp0 2 --json) && ok || ko "json solve"
+for k in regime b1 b2 d1 d2 a; do
+  echo "$js" | grep -q "\"$k\": " && ok || ko "json key $k"
+done
+echo "$js" | grep -q '"regime": "opposite-sign"' && ok || ko "json regime"
+# 17 significant digits
+echo "$js" | grep -Eq '"b1": -?[0-9]\.[0-9]{16}' && ok || ko "17 digits"
+if command -v python3 >/dev/null 2>&1; then
+  echo "$js" | python3 -c 'import json,sys; json.load(sys.stdin)' && ok || ko "valid JSON"
+fi
+
+"$cli" solve --P 1000 --R 0.05 --E-star 1.15e11 --f 0.6 --Q 300 --sigma 2e6 --json >/dev/null && ok || ko "dimensional"
+
+for bad in "--Q-over-fP 1.0" "--Q-over-fP nan" "--f -1" "--Q-over-fP abc" "--geometry cube" "--bogus 1" "--a 0"; do
+  err=$("$cli" solve $bad 2>&1 >/dev/null); rc=$?
+  if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ]; then ok; else ko "bad input '$bad' (rc=$rc): $err"; fi
+done
+err=$("$cli" solve --Q-over-fP 1.5 2>&1 >/dev/null); echo "$err" | grep -q "Q-over-fP" && ok || ko "message names the bad value"
+
+echo "cli: $pass passed, $fail failed"
+[ $fail -eq 0 ]
