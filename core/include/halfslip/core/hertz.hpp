@@ -52,6 +52,7 @@ template <class T> struct hertz_solution {
   bool mirror = false;  // canonical x = -x (edges swapped)
   // canonical, dimensionless: right zone (beta1, 1), left zone (-1, -beta2)
   T beta1{1}, beta2{1}, delta1{0}, delta2{0};
+  T width{2};  // beta1 + beta2 (stick-zone length / a), accurate when tiny
   int dirR = 0, dirL = 0;  // canonical slip directions
   int iterations = 0;
   T rtol{0};
@@ -64,7 +65,7 @@ template <class T> struct hertz_solution {
   T d2() const { return scene.a * (mirror ? delta1 : delta2); }
   int dir1() const { return sign() * (mirror ? dirL : dirR); }
   int dir2() const { return sign() * (mirror ? dirR : dirL); }
-  T half_width() const { return (beta1 + beta2) / 2; }  // stick half-width / a
+  T half_width() const { return width / 2; }  // stick half-width / a
 
   // Quadrature tolerance for the numerically integrated outputs.
   T quad_tol() const {
@@ -83,10 +84,10 @@ template <class T> struct hertz_solution {
     if (zone > 0) {
       // Right zone slips against the left one: b = -2 R (1 + 2/pi H),
       // H(x) = int_left sqrt(1-t^2)/(R(t)(x - t)) dt = G(-x; beta2, beta1).
-      const T g = opposite_G<T>(beta2, beta1, delta2, delta1, dl);
+      const T g = opposite_G_state<T>({delta2, delta1, width}, dl);
       return -2 * Rh * (1 + 2 * g / pi<T>());
     }
-    const T g = opposite_G<T>(beta1, beta2, delta1, delta2, dl);
+    const T g = opposite_G_state<T>({delta1, delta2, width}, dl);
     return -2 * Rh * (1 + 2 * g / pi<T>());
   }
 
@@ -203,6 +204,7 @@ hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &
     sol.beta2 = root - e;
     sol.delta1 = m - e;
     sol.delta2 = m + e;
+    sol.width = 2 * root;
     sol.dirR = sol.delta1 > 0 ? 1 : 0;
     sol.dirL = 1;
     return sol;
@@ -213,6 +215,7 @@ hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &
   sol.beta2 = r.beta2;
   sol.delta1 = r.delta1;
   sol.delta2 = r.delta2;
+  sol.width = r.width;
   sol.iterations = r.iterations;
   sol.dirR = -1;
   sol.dirL = 1;

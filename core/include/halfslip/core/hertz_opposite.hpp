@@ -50,31 +50,33 @@ template <class T> struct opposite_basis {
   }
 };
 
+// Residuals and their derivatives in the coordinates c = (beta1 - beta2)/2
+// (centre of the stick zone) and ln e (e = beta1 + beta2). Written so that
+// every entry stays finite as e -> 0: R_D(0,Q,P) ~ 1/sqrt(e) enters only as
+// e*R_D, and the derivative in e only as e*dF/de (= dF/d ln e).
 template <class T> struct opposite_eval {
-  T F1, F2, J00, J01, J10, J11;  // residuals and d(F)/d(beta1, beta2)
+  T F1, F2;
+  T F1c, F2c;  // dF/dc at fixed e
+  T F1l, F2l;  // dF/d(ln e) at fixed c
 };
 
 template <class T> opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<T> &st) {
   const T pi_ = pi<T>();
-  const T d1 = st.d1, d2 = st.d2;
-  const T b1 = 1 - d1, b2 = 1 - d2, bdiff = d2 - d1;  // beta1 - beta2
+  const T d1 = st.d1, d2 = st.d2, e = st.e;
+  const T b1 = 1 - d1, bdiff = d2 - d1;  // beta1 - beta2
   const opposite_basis<T> B(st);
   const T A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
   const T poly = -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;  // 3b1^2-2b1b2+3b2^2-4
   const T A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * poly * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
-  const T a01 = -2 * B.RF + 2 * d1 * (B.op2 * B.RJc - d2 * B.RDb) / 3;
-  const T a02 = -2 * d1 * (B.op2 * B.RJc + d2 * B.RDb) / 3;
-  const T a11 = (1 - 3 * b1) * B.RF + d1 * ((3 * b1 - b2) * B.op2 * B.RJc - (3 * b1 + b2) * d2 * B.RDb) / 3;
-  const T a12 = -d1 * B.RF + d1 * (-(b1 - 3 * b2) * B.op2 * B.RJc + (b1 + 3 * b2) * d2 * B.RDb) / 3;
   opposite_eval<T> r;
   r.F1 = pi_ * bdiff / 2 + 2 * A0 - pi_ * s / 4;
   // D1 = pi(3(b1^2+b2^2)/8 - b1 b2/4 - 1/2) written in d's (no cancellation)
   const T D1 = pi_ * (-(d1 + d2) / 2 + 3 * (d1 * d1 + d2 * d2) / 8 - d1 * d2 / 4);
   r.F2 = D1 + 2 * A1 + pi_ * q / 2 - pi_ * s * bdiff / 8;
-  r.J00 = pi_ / 2 + 2 * a01;
-  r.J01 = -pi_ / 2 + 2 * a02;
-  r.J10 = pi_ * (3 * b1 - b2) / 4 + 2 * a11 - pi_ * s / 8;
-  r.J11 = pi_ * (3 * b2 - b1) / 4 + 2 * a12 + pi_ * s / 8;
+  r.F1c = pi_ - 4 * B.RF + 8 * d1 * B.op2 * B.RJc / 3;
+  r.F2c = pi_ * bdiff - pi_ * s / 4 + 2 * (2 - 4 * b1) * B.RF + 8 * d1 / 3 * (bdiff * B.op2 * B.RJc - d2 * B.eRDb);
+  r.F1l = -2 * e * B.RF - 4 * d1 * d2 * B.eRDb / 3;
+  r.F2l = pi_ * e * e / 4 + 2 * e * (-b1 * B.RF + d1 * e * B.op2 * B.RJc / 3) - 2 * d1 * bdiff * d2 * B.eRDb / 3;
   return r;
 }
 
@@ -99,11 +101,7 @@ template <class T> T opposite_G_state(const opposite_state<T> &st, const T &dl) 
   return 4 * st.d1 * B.op2 / 3 * (B.RJc + opx / omx * RJq);
 }
 
-// Convenience used by hertz_solution::bhat: configuration given by beta's and d's.
-template <class T> T opposite_G(const T &b1, const T &b2, const T &d1, const T &d2, const T &dl) {
-  opposite_state<T> st{d1, d2, b1 + b2};
-  return opposite_G_state(st, dl);
-}
+
 
 // Stick point c of full sliding with opposite-sign zones: the limit of the
 // stick zone as s -> infinity, (2/pi)(c sqrt(1-c^2) + asin c) = q.
@@ -125,6 +123,7 @@ template <class T> T sliding_stick_point(const T &q) {
 
 template <class T> struct opposite_result {
   T beta1, beta2, delta1, delta2;
+  T width;  // beta1 + beta2, kept separately: full relative accuracy when tiny
   int iterations;
 };
 
@@ -133,85 +132,167 @@ template <class T> T residual_norm(const opposite_eval<T> &r) {
   return abs(r.F1) + abs(r.F2);
 }
 
-// Solve the opposite-sign side conditions for canonical q >= 0, s > 4(1 - sqrt(1-q)).
-template <class T> opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
-  using std::abs; using std::exp; using std::max; using std::min; using std::sqrt;
+// Newton's method from a start; true on convergence (out, iterations set).
+//
+// Newton's method with a line search, in log coordinates for the lengths
+// that may be tiny: (c, ln e) while the right slip zone is longer than the
+// stick zone, (ln d1, ln e) once d1 < e (near the regime boundary), so that
+// every iterate keeps d1, e > 0 and the Jacobian stays well conditioned as
+// d1 -> 0 or e -> 0.
+template <class T>
+bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int max_iterations,
+                     opposite_state<T> &out, int &iterations) {
+  using std::abs; using std::max; using std::expm1;
+  using boost::math::expm1;
   const T pi_ = pi<T>();
-  const T m = q / (1 + sqrt(1 - q));  // same-sign d1 + s/4
-  // Start 1: continue the same-sign lengths across the boundary.
-  opposite_state<T> best{};
-  T best_norm = -1;
-  opposite_eval<T> best_eval{};
-  auto consider = [&](opposite_state<T> st) {
-    if (!(st.d1 > 0 && st.d2 > 0 && st.e > 0)) return;
-    const auto r = opposite_residual(q, s, st);
-    const T n = residual_norm(r);
-    if (best_norm < 0 || n < best_norm) {
-      best = st;
-      best_norm = n;
-      best_eval = r;
-    }
-  };
-  {
-    T d1 = max(s / 4 - m, s * eps<T>());
-    T d2 = m + s / 4;
-    const T sum = d1 + d2;
-    if (sum < T(1.9)) consider({d1, d2, 2 - sum});
-  }
-  // Start 2: large-s asymptote, stick zone of width e ~ exp(-(pi s/8 - pi c/2)/w) around c.
-  {
-    const T c = sliding_stick_point(q);
-    const T w = sqrt((1 - c) * (1 + c));
-    T e = 4 * w * exp(-(pi_ * s / 8 - pi_ * c / 2) / w);
-    e = min(e, T(1.8) * (1 - c));
-    if (e > 0) consider({1 - c - e / 2, 1 + c - e / 2, e});
-  }
-  if (best_norm < 0) throw error(status::no_convergence, "opposite-sign regime: no valid starting point");
-
-  opposite_state<T> st = best;
-  opposite_eval<T> r = best_eval;
-  T norm = best_norm;
+  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
+  opposite_state<T> st = start;
+  opposite_eval<T> r = opposite_residual(q, s, st);
+  T norm = residual_norm(r);
   const T tol = 4 * eps<T>();
-  const T noise = sqrt(eps<T>());
+  // Residuals are sums of terms of size <= pi (1 + s): rounding leaves them
+  // at a few eps times that; a result is accepted only at that level.
+  const T noise_floor = 64 * eps<T>() * pi_ * (1 + s);
   T prev_step = -1;
   for (int it = 1; it <= max_iterations; ++it) {
-    const T det = r.J00 * r.J11 - r.J01 * r.J10;
-    if (!(det != 0)) throw error(status::no_convergence, "opposite-sign regime: singular Jacobian");
-    const T db1 = (r.F1 * r.J11 - r.F2 * r.J01) / det;  // beta1 decreases by db1
-    const T db2 = (r.J00 * r.F2 - r.J10 * r.F1) / det;
-    const T dd1 = db1, dd2 = db2, de = -(db1 + db2);
-    // Fraction to the boundary: no length may shrink below a quarter of itself.
+    // Columns of the Jacobian in the chosen coordinates (x, y = ln e).
+    const bool near_boundary = st.d1 < st.e;
+    // x = c: columns (Fc, Fl). x = ln d1 at fixed e: dc = -d1 dx, and at fixed
+    // d1 a change of ln e moves c by -e/2 d(ln e).
+    T a11, a12, a21, a22;
+    if (!near_boundary) {
+      a11 = r.F1c; a12 = r.F1l; a21 = r.F2c; a22 = r.F2l;
+    } else {
+      a11 = -st.d1 * r.F1c; a21 = -st.d1 * r.F2c;
+      a12 = r.F1l - st.e / 2 * r.F1c; a22 = r.F2l - st.e / 2 * r.F2c;
+    }
+    const T det = a11 * a22 - a12 * a21;
+    if (!(det != 0) || !(abs(det) < boost::math::tools::max_value<T>()))
+      return false;
+    T dx = -(r.F1 * a22 - r.F2 * a12) / det;
+    T dy = -(a11 * r.F2 - a21 * r.F1) / det;
+    // Affine-invariant monitor (Deuflhard's natural level function): the size
+    // of the Newton correction J^-1 F with this iteration's Jacobian. Near
+    // Q -> fP the two side conditions are nearly parallel, and |F| alone would
+    // accept steps that ruin the weakly determined direction.
+    auto level = [&](const opposite_eval<T> &f) {
+      return abs((f.F1 * a22 - f.F2 * a12) / det) + abs((a11 * f.F2 - a21 * f.F1) / det);
+    };
+    const T level0 = abs(dx) + abs(dy);
+    // trust region in the log coordinates
+    const T cap = 4;
+    if (abs(dy) > cap) { dx *= cap / abs(dy); dy = dy > 0 ? cap : -cap; }
+    if (near_boundary && abs(dx) > cap) { dy *= cap / abs(dx); dx = dx > 0 ? cap : -cap; }
     T lam = 1;
-    if (dd1 < 0) lam = min(lam, T(0.75) * st.d1 / -dd1);
-    if (dd2 < 0) lam = min(lam, T(0.75) * st.d2 / -dd2);
-    if (de < 0) lam = min(lam, T(0.75) * st.e / -de);
     opposite_state<T> nst;
     opposite_eval<T> nr;
-    T nnorm;
-    for (int k = 0;; ++k) {
-      nst = {st.d1 + lam * dd1, st.d2 + lam * dd2, st.e + lam * de};
+    T nnorm = 0, dd1 = 0, dd2 = 0, de = 0;
+    bool decreased = false;
+    for (int k = 0; k < 40; ++k, lam /= 2) {
+      de = st.e * expm1(lam * dy);
+      if (!near_boundary) {
+        const T dc = lam * dx;
+        dd1 = -dc - de / 2;
+        dd2 = dc - de / 2;
+      } else {
+        dd1 = st.d1 * expm1(lam * dx);
+        dd2 = -dd1 - de;
+      }
+      // fraction to the boundary for the linearly updated lengths
+      if (st.d1 + dd1 <= st.d1 / 4 || st.d2 + dd2 <= st.d2 / 4) continue;
+      nst = {st.d1 + dd1, st.d2 + dd2, st.e + de};
       // keep d1 + d2 + e = 2 exactly in the largest of the three
       if (nst.d1 >= nst.d2 && nst.d1 >= nst.e) nst.d1 = 2 - nst.d2 - nst.e;
       else if (nst.d2 >= nst.e) nst.d2 = 2 - nst.d1 - nst.e;
       else nst.e = 2 - nst.d1 - nst.d2;
+      if (!(nst.e > tiny)) continue;
       nr = opposite_residual(q, s, nst);
       nnorm = residual_norm(nr);
-      if (nnorm <= norm || k >= 6 || lam * max(abs(dd1), abs(dd2)) < noise) break;
-      lam /= 2;
+      if (level(nr) <= (1 - lam / 4) * level0 || (nnorm <= noise_floor && nnorm <= norm)) {
+        decreased = true;
+        break;
+      }
     }
-    // Step size, relative to each length (all three must settle).
-    const T step = max(max(abs(lam * dd1) / st.d1, abs(lam * dd2) / st.d2), abs(lam * de) / st.e);
-    const T abs_step = lam * max(abs(dd1), abs(dd2));
+    if (!decreased) {
+      // No step reduces the residual: we are at the rounding floor, or stuck.
+      if (norm <= noise_floor) { out = st; iterations = it; return true; }
+      return false;
+    }
+    // Relative change of each length; all three must settle.
+    const T step = max(max(abs(dd1) / st.d1, abs(dd2) / st.d2), abs(de) / st.e);
+    const T abs_step = max(abs(dd1), abs(dd2));
     st = nst;
     r = nr;
     norm = nnorm;
-    if (step <= tol || abs_step <= tol * eps<T>()) return {1 - st.d1, 1 - st.d2, st.d1, st.d2, it};
-    // Rounding-noise regime: the step stopped shrinking quadratically.
-    if (abs_step < noise && prev_step >= 0 && abs_step >= prev_step / 2 && lam == 1)
-      return {1 - st.d1, 1 - st.d2, st.d1, st.d2, it};
+    if (step <= tol && norm <= noise_floor) { out = st; iterations = it; return true; }
+    // Rounding-noise regime: the residual is at its rounding floor and the step
+    // stopped shrinking quadratically (a length far below 1, or one that the
+    // side conditions determine only weakly, e.g. as Q -> fP near the regime
+    // boundary, is then known to the accuracy the residual allows).
+    if (norm <= noise_floor && prev_step >= 0 && abs_step >= prev_step / 4)
+      { out = st; iterations = it; return true; }
     prev_step = abs_step;
   }
-  throw error(status::no_convergence, "opposite-sign regime: Newton iteration did not converge");
+  return false;
+}
+
+// Solve the opposite-sign side conditions for canonical q >= 0, s > 4(1 - sqrt(1-q)).
+// Newton from the better of two starts: the same-sign lengths continued
+// across the boundary, and the large-sigma asymptote (stick zone of width
+// e ~ 4w exp(-(pi s/8 - pi c/2)/w) about the sliding stick point c). Should
+// both fail (seen only for Q/fP > 1 - 1e-5 just past the regime boundary),
+// continuation in sigma from the boundary, where the solution is known.
+template <class T> opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
+  using std::exp; using std::max; using std::min; using std::sqrt;
+  const T pi_ = pi<T>();
+  const T m = q / (1 + sqrt(1 - q));  // same-sign d1 + s/4
+  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
+  opposite_state<T> best{};
+  T best_norm = -1;
+  auto consider = [&](opposite_state<T> st) {
+    if (!(st.d1 > 0 && st.d2 > 0 && st.e > tiny)) return;
+    const T n = residual_norm(opposite_residual(q, s, st));
+    if (best_norm < 0 || n < best_norm) {
+      best = st;
+      best_norm = n;
+    }
+  };
+  const T d1_lin = max(s / 4 - m, s * eps<T>());
+  consider({d1_lin, m + s / 4, 2 - d1_lin - (m + s / 4)});  // rejected unless e > 0
+  {
+    const T c_inf = sliding_stick_point(q);
+    const T w = sqrt((1 - c_inf) * (1 + c_inf));
+    T e = 4 * w * exp(-(pi_ * s / 8 - pi_ * c_inf / 2) / w);
+    e = min(e, T(1.8) * (1 - c_inf));
+    consider({1 - c_inf - e / 2, 1 + c_inf - e / 2, e});
+  }
+  if (best_norm < 0)
+    throw error(status::overflow, "opposite-sign regime: stick zone narrower than the smallest representable number");
+  opposite_state<T> st;
+  int its = 0;
+  if (opposite_newton(q, s, best, max_iterations, st, its)) return {1 - st.d1, 1 - st.d2, st.d1, st.d2, st.e, its};
+  // Continuation: s_k = s_b + (s - s_b) 2^(k-K); d1 grows linearly from 0.
+  const T sb = 4 * m, span = s - sb;
+  const int K = 40;
+  opposite_state<T> cur{span * std::ldexp(T(1), -K) / 4, 2 * m, 0};
+  cur.e = 2 - cur.d1 - cur.d2;
+  int total = its;
+  for (int k = K; k >= 0; --k) {
+    const T sk = k == 0 ? s : sb + span * std::ldexp(T(1), -k);
+    opposite_state<T> next;
+    int n = 0;
+    if (!opposite_newton(q, sk, cur, max_iterations, next, n))
+      throw error(status::no_convergence, "opposite-sign regime: Newton iteration did not converge");
+    total += n;
+    cur = next;
+    if (k > 0) {  // predictor: d1 ~ linear in s - s_b near the boundary
+      const T grow = cur.d1;
+      cur.d1 += grow;
+      if (cur.e > 2 * grow) cur.e -= grow;
+      else cur.d2 -= grow;
+    }
+  }
+  return {1 - cur.d1, 1 - cur.d2, cur.d1, cur.d2, cur.e, total};
 }
 
 }}  // namespace hs::core

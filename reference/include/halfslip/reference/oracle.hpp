@@ -27,10 +27,14 @@ template <class T> T tol_for() {
 // to both ends (tanh-sinh, complement-aware).
 template <class T, class G> T integrate_ends(const G &g, const T &lo, const T &hi) {
   boost::math::quadrature::tanh_sinh<T> ts(20);
+  const T L = hi - lo;
+  // xc is the exact distance to the nearer end; the distance to the far end
+  // is taken from the interval length, not from the rounded abscissa, so that
+  // both stay accurate on intervals much shorter than |lo|.
   return ts.integrate(
       [&](const T &x, const T &xc) {
-        const T dlo = xc < 0 ? -xc : x - lo;
-        const T dhi = xc > 0 ? xc : hi - x;
+        const T dlo = xc < 0 ? -xc : L - xc;
+        const T dhi = xc > 0 ? xc : L + xc;
         return g(x, dlo, dhi);
       },
       lo, hi, tol_for<T>());
