@@ -60,11 +60,14 @@ template <class T> struct opposite_eval {
   T F1l, F2l;  // dF/d(ln e) at fixed c
 };
 
-template <class T> opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<T> &st) {
+// Basis is the provider of the Carlson quantities (default: cel-based
+// opposite_basis; bench/ swaps in Boost's and GSL's R_F/R_D/R_J).
+template <class T, class Basis = opposite_basis<T>>
+opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<T> &st) {
   const T pi_ = pi<T>();
   const T d1 = st.d1, d2 = st.d2, e = st.e;
   const T b1 = 1 - d1, bdiff = d2 - d1;  // beta1 - beta2
-  const opposite_basis<T> B(st);
+  const Basis B(st);
   const T A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
   const T poly = -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;  // 3b1^2-2b1b2+3b2^2-4
   const T A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * poly * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
@@ -103,22 +106,24 @@ template <class T> T opposite_G_state(const opposite_state<T> &st, const T &dl) 
 
 
 
-// Stick point c of full sliding with opposite-sign zones: the limit of the
-// stick zone as s -> infinity, (2/pi)(c sqrt(1-c^2) + asin c) = q.
-template <class T> T sliding_stick_point(const T &q) {
-  using std::abs; using std::asin; using std::sqrt;
-  T lo = -1, hi = 1, c = q * pi<T>() / 4;
-  for (int i = 0; i < 200; ++i) {
-    const T w = sqrt((1 - c) * (1 + c));
-    const T g = 2 / pi<T>() * (c * w + asin(c)) - q;
-    if (g > 0) hi = c; else lo = c;
-    const T dg = 4 / pi<T>() * w;
-    T cn = c - g / dg;
-    if (!(cn > lo && cn < hi)) cn = (lo + hi) / 2;
-    if (abs(cn - c) <= 4 * eps<T>()) { c = cn; break; }
-    c = cn;
+// Stick point of full sliding with opposite-sign zones, the limit of the
+// stick zone as s -> infinity: (2/pi)(c sqrt(1-c^2) + asin c) = q. With
+// c = cos(psi/2) this is psi - sin(psi) = pi (1 - q), psi in (0, pi], solved by
+// Newton (convex, from the cubic small-psi start); returns c and
+// w = sqrt(1 - c^2) = sin(psi/2), both without cancellation as q -> 1.
+template <class T> void sliding_stick_point(const T &q, T &c, T &w) {
+  using std::abs; using std::cbrt; using std::cos; using std::min; using std::sin;
+  const T target = pi<T>() * (1 - q);
+  T psi = min(cbrt(6 * target), pi<T>());
+  for (int i = 0; i < 100; ++i) {
+    const T h = y_minus_sin(psi) - target;
+    const T sh = sin(psi / 2);
+    const T dpsi = h / (2 * sh * sh);
+    psi = min(psi - dpsi, pi<T>());
+    if (abs(dpsi) <= 2 * eps<T>() * psi) break;
   }
-  return c;
+  c = cos(psi / 2);
+  w = sin(psi / 2);
 }
 
 template <class T> struct opposite_result {
@@ -139,7 +144,7 @@ template <class T> T residual_norm(const opposite_eval<T> &r) {
 // stick zone, (ln d1, ln e) once d1 < e (near the regime boundary), so that
 // every iterate keeps d1, e > 0 and the Jacobian stays well conditioned as
 // d1 -> 0 or e -> 0.
-template <class T>
+template <class T, class Basis = opposite_basis<T>>
 bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int max_iterations,
                      opposite_state<T> &out, int &iterations) {
   using std::abs; using std::max; using std::expm1;
@@ -147,7 +152,7 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
   const T pi_ = pi<T>();
   const T tiny = boost::math::tools::min_value<T>() / eps<T>();
   opposite_state<T> st = start;
-  opposite_eval<T> r = opposite_residual(q, s, st);
+  opposite_eval<T> r = opposite_residual<T, Basis>(q, s, st);
   T norm = residual_norm(r);
   const T tol = 4 * eps<T>();
   // Residuals are sums of terms of size <= pi (1 + s): rounding leaves them
@@ -206,7 +211,7 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
       else if (nst.d2 >= nst.e) nst.d2 = 2 - nst.d1 - nst.e;
       else nst.e = 2 - nst.d1 - nst.d2;
       if (!(nst.e > tiny)) continue;
-      nr = opposite_residual(q, s, nst);
+      nr = opposite_residual<T, Basis>(q, s, nst);
       nnorm = residual_norm(nr);
       if (level(nr) <= (1 - lam / 4) * level0 || (nnorm <= noise_floor && nnorm <= norm)) {
         decreased = true;
@@ -242,7 +247,8 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
 // e ~ 4w exp(-(pi s/8 - pi c/2)/w) about the sliding stick point c). Should
 // both fail (seen only for Q/fP > 1 - 1e-5 just past the regime boundary),
 // continuation in sigma from the boundary, where the solution is known.
-template <class T> opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
+template <class T, class Basis = opposite_basis<T>>
+opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
   using std::exp; using std::max; using std::min; using std::sqrt;
   const T pi_ = pi<T>();
   const T m = q / (1 + sqrt(1 - q));  // same-sign d1 + s/4
@@ -251,7 +257,7 @@ template <class T> opposite_result<T> solve_opposite(const T &q, const T &s, int
   T best_norm = -1;
   auto consider = [&](opposite_state<T> st) {
     if (!(st.d1 > 0 && st.d2 > 0 && st.e > tiny)) return;
-    const T n = residual_norm(opposite_residual(q, s, st));
+    const T n = residual_norm(opposite_residual<T, Basis>(q, s, st));
     if (best_norm < 0 || n < best_norm) {
       best = st;
       best_norm = n;
@@ -259,9 +265,11 @@ template <class T> opposite_result<T> solve_opposite(const T &q, const T &s, int
   };
   const T d1_lin = max(s / 4 - m, s * eps<T>());
   consider({d1_lin, m + s / 4, 2 - d1_lin - (m + s / 4)});  // rejected unless e > 0
-  {
-    const T c_inf = sliding_stick_point(q);
-    const T w = sqrt((1 - c_inf) * (1 + c_inf));
+  // The asymptote is needed when the first start is invalid or its stick
+  // zone is already narrow.
+  if (best_norm < 0 || best.e < T(0.5)) {
+    T c_inf, w;
+    sliding_stick_point(q, c_inf, w);
     T e = 4 * w * exp(-(pi_ * s / 8 - pi_ * c_inf / 2) / w);
     e = min(e, T(1.8) * (1 - c_inf));
     consider({1 - c_inf - e / 2, 1 + c_inf - e / 2, e});
@@ -270,7 +278,7 @@ template <class T> opposite_result<T> solve_opposite(const T &q, const T &s, int
     throw error(status::overflow, "opposite-sign regime: stick zone narrower than the smallest representable number");
   opposite_state<T> st;
   int its = 0;
-  if (opposite_newton(q, s, best, max_iterations, st, its)) return {1 - st.d1, 1 - st.d2, st.d1, st.d2, st.e, its};
+  if (opposite_newton<T, Basis>(q, s, best, max_iterations, st, its)) return {1 - st.d1, 1 - st.d2, st.d1, st.d2, st.e, its};
   // Continuation: s_k = s_b + (s - s_b) 2^(k-K); d1 grows linearly from 0.
   const T sb = 4 * m, span = s - sb;
   const int K = 40;
@@ -281,7 +289,7 @@ template <class T> opposite_result<T> solve_opposite(const T &q, const T &s, int
     const T sk = k == 0 ? s : sb + span * std::ldexp(T(1), -k);
     opposite_state<T> next;
     int n = 0;
-    if (!opposite_newton(q, sk, cur, max_iterations, next, n))
+    if (!opposite_newton<T, Basis>(q, sk, cur, max_iterations, next, n))
       throw error(status::no_convergence, "opposite-sign regime: Newton iteration did not converge");
     total += n;
     cur = next;

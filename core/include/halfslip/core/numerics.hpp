@@ -15,7 +15,7 @@ template <class T> inline T eps() { return boost::math::tools::epsilon<T>(); }
 
 // y - sin(y) for y >= 0, without cancellation for small y.
 template <class T> T y_minus_sin(const T &y) {
-  using std::sin;
+  using std::abs; using std::sin;
   if (y > T(1)) return y - sin(y);
   // y^3/3! - y^5/5! + ...
   const T y2 = y * y;
