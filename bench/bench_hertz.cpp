@@ -154,6 +154,7 @@ result solve_naive(naive_quadrature &Qd, double q, double s) {
 }
 
 template <class F> double median_ns(F &&f, int reps, int inner) {
+  for (int i = 0; i < inner; ++i) f(i);  // warm-up: caches, branch predictors, clock ramp-up
   std::vector<double> t;
   for (int r = 0; r < reps; ++r) {
     const auto t0 = std::chrono::steady_clock::now();

@@ -10,6 +10,10 @@
 
 #include <vector>
 
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_2.hpp>
+#include <boost/math/special_functions/ellint_3.hpp>
+
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/reference/oracle.hpp"
 #include "testing.hpp"
@@ -339,6 +343,9 @@ TEST_CASE("opposite-sign solver converges across the regime: boundary, sliding, 
       CHECK(std::isfinite(sol.b1()));
       CHECK(std::isfinite(sol.b2()));
       CHECK(sol.width > 0);
+      // canonical frame: the stick zone sits right of centre (b1 >= b2),
+      // the branch in which the closed forms are well conditioned
+      CHECK(sol.beta1 >= sol.beta2 - 1e-15);
       CHECK(sol.d1() > 0);
       CHECK(sol.d2() > 0);
       // slip zones grow with sigma, up to rounding once they saturate at the
@@ -367,4 +374,56 @@ TEST_CASE("opposite-sign solver converges across the regime: boundary, sliding, 
   }
   MESSAGE("solved " << solved << ", stick zone below double range " << too_narrow);
   CHECK(too_narrow < solved / 10);
+}
+
+// ---------------------------------------------------------------------------
+// Errata E5, E6: the printed opposite-sign conditions (23), (24) against the
+// side-condition integrals (11), (12) by quadrature (a = 1, f p0 = 1).
+namespace {
+struct legendre_terms {
+  LD K, E, P1, P2, Q;
+};
+legendre_terms legendre(LD b1, LD b2) {
+  legendre_terms t;
+  t.Q = (1 + b1) * (1 + b2);
+  const LD k = std::sqrt((1 - b1) * (1 - b2) / t.Q);
+  t.K = boost::math::ellint_1(k);
+  t.E = boost::math::ellint_2(k);
+  t.P1 = boost::math::ellint_3(k, (b2 - 1) / (b2 + 1));  // Pi(n, k) = int dt/((1 - n sin^2)sqrt(1 - k^2 sin^2))
+  t.P2 = boost::math::ellint_3(k, (1 - b1) / (1 + b2));
+  return t;
+}
+// LHS of (23) as printed, and with the three sign corrections of E5
+LD eq23(LD b1, LD b2, bool corrected) {
+  const auto t = legendre(b1, b2);
+  const LD sg = corrected ? -1 : 1;
+  return -2 / std::sqrt(t.Q) *
+         (t.Q * t.E + sg * (1 + b2) * ((b1 - b2) / 2 + 2) * t.K + sg * (b1 - b2) * t.P1 -
+          sg * (b1 * b1 - b2 * b2) / 2 * t.P2);
+}
+// LHS of (24) as printed (a = 1), and corrected (E6: overall sign of the
+// bracket and the missing Pi((b2-1)/(b2+1), k) term)
+LD eq24(LD b1, LD b2, bool corrected) {
+  const auto t = legendre(b1, b2);
+  const LD br = -(1 + b2) * (1 + b1) * (b1 - b2) * t.E -
+                (1 + b2) * ((b1 / 3 + 2) * b2 - b2 * b2 / 2 - b1 * b1 / 2 - 2 * b1 / 3 - LD(2) / 3) * t.K -
+                (b1 + b2) / 2 * (b1 * b1 - 2 * b1 * b2 / 3 + b2 * b2 - LD(4) / 3) * t.P2;
+  if (!corrected) return -3 / (2 * std::sqrt(t.Q)) * br;
+  const LD missing = -(LD(4) / 3 - b1 * b1 + 2 * b1 * b2 / 3 - b2 * b2) * t.P1;
+  return 3 / (2 * std::sqrt(t.Q)) * (br + missing);
+}
+}  // namespace
+
+TEST_CASE("printed eqs (23)/(24) against quadrature of (11)/(12); corrected forms (errata E5, E6)") {
+  const LD pi = boost::math::constants::pi<LD>();
+  for (auto bb : std::vector<std::pair<LD, LD>>{{0.7L, 0.5L}, {0.9L, -0.3L}, {0.4L, 0.35L}, {0.95L, 0.9L}}) {
+    const LD b1 = bb.first, b2 = bb.second, d1 = 1 - b1, e = b1 + b2;
+    // sum forms of (11), (12) over both zones: difference identity (B.6) + 2 x right zone
+    const LD lhs11 = pi * (b1 - b2) / 2 + 2 * ref::A_moment<LD>(0, d1, e);
+    const LD lhs12 = pi * (LD(3) / 8 * (b1 * b1 + b2 * b2) - b1 * b2 / 4 - LD(0.5)) + 2 * ref::A_moment<LD>(1, d1, e);
+    CHECK(std::abs(eq23(b1, b2, true) - lhs11) < 1e-15L);
+    CHECK(std::abs(eq24(b1, b2, true) - lhs12) < 1e-15L);
+    CHECK(std::abs(eq23(b1, b2, false) - lhs11) > 0.1L);
+    CHECK(std::abs(eq24(b1, b2, false) - lhs12) > 1e-3L);
+  }
 }

@@ -101,7 +101,11 @@ int hs_version(int *major, int *minor, int *patch) {
   return HS_OK;
 }
 
-const char *hs_version_string(void) { return "0.1.0"; }
+#define HS_STR_(x) #x
+#define HS_STR(x) HS_STR_(x)
+const char *hs_version_string(void) {
+  return HS_STR(HS_VERSION_MAJOR) "." HS_STR(HS_VERSION_MINOR) "." HS_STR(HS_VERSION_PATCH);
+}
 
 const char *hs_strerror(int status) {
   switch (status) {
