@@ -33,8 +33,8 @@ template <class T> struct solve_options {
 };
 
 template <class T> void validate(const hertz_scene<T> &sc) {
-  using std::isfinite;
   using boost::math::isfinite;
+  using std::abs;
   if (!isfinite(sc.a) || !isfinite(sc.p0) || !isfinite(sc.f) || !isfinite(sc.Estar) ||
       !isfinite(sc.q) || !isfinite(sc.s))
     throw error(status::not_finite, "scene has a NaN or infinite value");

@@ -249,7 +249,7 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
 // continuation in sigma from the boundary, where the solution is known.
 template <class T, class Basis = opposite_basis<T>>
 opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
-  using std::exp; using std::max; using std::min; using std::sqrt;
+  using std::exp; using std::ldexp; using std::max; using std::min; using std::sqrt;
   const T pi_ = pi<T>();
   const T m = q / (1 + sqrt(1 - q));  // same-sign d1 + s/4
   const T tiny = boost::math::tools::min_value<T>() / eps<T>();
@@ -282,11 +282,11 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
   // Continuation: s_k = s_b + (s - s_b) 2^(k-K); d1 grows linearly from 0.
   const T sb = 4 * m, span = s - sb;
   const int K = 40;
-  opposite_state<T> cur{span * std::ldexp(T(1), -K) / 4, 2 * m, 0};
+  opposite_state<T> cur{span * ldexp(T(1), -K) / 4, 2 * m, 0};
   cur.e = 2 - cur.d1 - cur.d2;
   int total = its;
   for (int k = K; k >= 0; --k) {
-    const T sk = k == 0 ? s : sb + span * std::ldexp(T(1), -k);
+    const T sk = k == 0 ? s : sb + span * ldexp(T(1), -k);
     opposite_state<T> next;
     int n = 0;
     if (!opposite_newton<T, Basis>(q, sk, cur, max_iterations, next, n))
