@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "halfslip/core/hertz.hpp"
+#include "halfslip/reference/backend.hpp"
 
 namespace core = hs::core;
 
@@ -27,9 +28,14 @@ static_assert(HS_ERR_BAD_OPTION == int(core::status::bad_option), "status table"
 static_assert(HS_ERR_OUT_OF_MEMORY == int(core::status::out_of_memory), "status table");
 static_assert(HS_ERR_INTERNAL == int(core::status::internal), "status table");
 static_assert(HS_ERR_OVERFLOW == int(core::status::overflow), "status table");
+static_assert(HS_ERR_BAD_NUMBER == int(core::status::bad_number), "status table");
 
 struct hs_solution {
   core::hertz_solution<double> sol;
+};
+
+struct hs_ref_solution {
+  hs::reference::solution sol;
 };
 
 namespace {
@@ -124,6 +130,7 @@ const char *hs_strerror(int status) {
     case HS_ERR_OUT_OF_MEMORY: return "out of memory";
     case HS_ERR_INTERNAL: return "internal error in halfslip (please report)";
     case HS_ERR_OVERFLOW: return "a result is not representable in double precision (overflow)";
+    case HS_ERR_BAD_NUMBER: return "a decimal number string could not be parsed";
     default: return "unknown halfslip status code";
   }
 }
@@ -248,6 +255,93 @@ int hs_eval_work(const hs_solution *sol, size_t n, const double *x, double *out)
 int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out) {
   return eval_points(sol, n, x, out,
                      [](const core::hertz_solution<double> &s, double v) { return s.pressure(v); });
+}
+
+int hs_ref_scene_default(hs_ref_scene *scene) {
+  if (!scene) return HS_ERR_NULL_POINTER;
+  hs_ref_scene s;
+  std::memset(&s, 0, sizeof s);
+  s.struct_size = sizeof(hs_ref_scene);
+  s.geometry = HS_GEOMETRY_HERTZ;
+  *scene = s;  // NULL strings mean the defaults of hs::reference::text_scene
+  return HS_OK;
+}
+
+int hs_ref_max_digits(void) { return hs::reference::max_digits(); }
+
+int hs_ref_solve(const hs_ref_scene *scene, int digits, hs_ref_solution **out) {
+  return guard([&] {
+    require(scene != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
+    require(scene->struct_size == sizeof(hs_ref_scene), core::status::struct_size, "scene struct_size");
+    require(scene->geometry == HS_GEOMETRY_HERTZ, core::status::bad_geometry, "unknown geometry");
+    hs::reference::text_scene t;
+    auto take = [](std::string &dst, const char *src) {
+      if (src) dst = src;
+    };
+    take(t.a, scene->a);
+    take(t.p0, scene->p0);
+    take(t.f, scene->f);
+    take(t.Estar, scene->E_star);
+    take(t.q, scene->Q_over_fP);
+    take(t.s, scene->sigma_over_fp0);
+    if (scene->P) {
+      require(scene->R && scene->Q && scene->sigma, core::status::null_pointer,
+              "dimensional input needs P, R, Q and sigma");
+      t.P = scene->P;
+      t.R = scene->R;
+      t.Q = scene->Q;
+      t.sigma = scene->sigma;
+    }
+    *out = new hs_ref_solution{hs::reference::solution(t, digits)};
+  });
+}
+
+void hs_ref_solution_free(hs_ref_solution *sol) { delete sol; }
+
+int hs_ref_solution_summary(const hs_ref_solution *sol, hs_ref_summary *out) {
+  return guard([&] {
+    require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
+    require(out->struct_size == sizeof(hs_ref_summary), core::status::struct_size, "summary struct_size");
+    hs_ref_summary r;
+    std::memset(&r, 0, sizeof r);
+    r.struct_size = sizeof r;
+    r.regime = sol->sol.regime();
+    r.slip_dir1 = sol->sol.dir1();
+    r.slip_dir2 = sol->sol.dir2();
+    r.iterations = sol->sol.iterations();
+    r.digits = sol->sol.digits();
+    r.working_digits = int(sol->sol.working_digits());
+    r.check_digits = int(sol->sol.check_digits());
+    *out = r;
+  });
+}
+
+namespace {
+void put_text(const hs::reference::certified &c, char *buf, size_t size, size_t *needed, int *certified) {
+  const size_t n = c.text.size() + 1;
+  if (needed) *needed = n;
+  require(buf != nullptr || size == 0, core::status::null_pointer, "buffer is NULL");
+  require(size >= n, core::status::buffer_too_small, "buffer too small");
+  std::memcpy(buf, c.text.c_str(), n);
+  if (certified) *certified = c.digits;
+}
+}  // namespace
+
+int hs_ref_value(const hs_ref_solution *sol, int quantity, char *buf, size_t size, size_t *needed, int *certified) {
+  return guard([&] {
+    require(sol != nullptr, core::status::null_pointer, "solution is NULL");
+    require(quantity >= HS_REF_B1 && quantity <= HS_REF_P0, core::status::bad_option, "unknown quantity");
+    put_text(sol->sol.value(hs::reference::quantity(quantity)), buf, size, needed, certified);
+  });
+}
+
+int hs_ref_eval(const hs_ref_solution *sol, int what, const char *x, char *buf, size_t size, size_t *needed,
+                int *certified) {
+  return guard([&] {
+    require(sol != nullptr && x != nullptr, core::status::null_pointer, "NULL argument");
+    require(what >= HS_REF_EVAL_BX && what <= HS_REF_EVAL_PRESSURE, core::status::bad_option, "unknown evaluation");
+    put_text(sol->sol.eval(hs::reference::point_eval(what), x), buf, size, needed, certified);
+  });
 }
 
 }  // extern "C"

@@ -64,6 +64,7 @@ HS_EXPORT const char *hs_version_string(void);
 #define HS_ERR_OUT_OF_MEMORY     12  /* allocation failed */
 #define HS_ERR_INTERNAL          13  /* unexpected internal error (please report) */
 #define HS_ERR_OVERFLOW          14  /* a result is not representable (overflow) */
+#define HS_ERR_BAD_NUMBER        15  /* a decimal string could not be parsed */
 
 /* Message for a status code; never NULL. Unknown codes give a generic text. */
 HS_EXPORT const char *hs_strerror(int status);
@@ -153,6 +154,68 @@ HS_EXPORT int hs_eval_work(const hs_solution *sol, size_t n, const double *x, do
 
 /* Contact pressure p(x) of the scene's geometry at n points. */
 HS_EXPORT int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out);
+
+/* ---- arbitrary-precision reference backend ---------------------------------
+ * The same algorithms on MPFR, for benchmark tables to 30-390 digits. Inputs
+ * are decimal strings (exact decimals stay exact); outputs are decimal
+ * strings in scientific notation with the requested number of significant
+ * digits, each with the number of leading digits that are certified: the
+ * solve is repeated at a wider precision and a digit is certified only if the
+ * printed value is the wider result correctly rounded to that many digits.
+ * Each call chooses its own precision; no global MPFR state is touched. */
+typedef struct hs_ref_scene {
+  size_t struct_size;      /* = sizeof(hs_ref_scene), set by hs_ref_scene_default */
+  int geometry;            /* HS_GEOMETRY_HERTZ */
+  /* dimensionless input (defaults "1", "1", "1", "1", "0.5", "0.5") */
+  const char *a, *p0, *f, *E_star, *Q_over_fP, *sigma_over_fp0;
+  /* dimensional Hertz input, used instead of a, p0 and the ratios when P is
+   * not NULL: then R, Q and sigma are required too (and E_star, f are used) */
+  const char *P, *R, *Q, *sigma;
+} hs_ref_scene;
+
+HS_EXPORT int hs_ref_scene_default(hs_ref_scene *scene);
+/* Largest number of digits hs_ref_solve accepts. */
+HS_EXPORT int hs_ref_max_digits(void);
+
+typedef struct hs_ref_solution hs_ref_solution;  /* opaque, immutable once made */
+
+/* Solve to `digits` significant digits (1 .. hs_ref_max_digits()). */
+HS_EXPORT int hs_ref_solve(const hs_ref_scene *scene, int digits, hs_ref_solution **out);
+HS_EXPORT void hs_ref_solution_free(hs_ref_solution *sol);
+
+typedef struct hs_ref_summary {
+  size_t struct_size;   /* caller sets = sizeof(hs_ref_summary) */
+  int regime, slip_dir1, slip_dir2, iterations;
+  int digits;           /* requested significant digits */
+  int working_digits;   /* decimal digits of the working precision */
+  int check_digits;     /* decimal digits of the certifying run */
+} hs_ref_summary;
+HS_EXPORT int hs_ref_solution_summary(const hs_ref_solution *sol, hs_ref_summary *out);
+
+#define HS_REF_B1      1
+#define HS_REF_B2      2
+#define HS_REF_D1      3
+#define HS_REF_D2      4
+#define HS_REF_ENERGY1 5
+#define HS_REF_ENERGY2 6
+#define HS_REF_A       7
+#define HS_REF_P0      8
+
+/* Write a quantity as a NUL-terminated decimal string into buf[size].
+ * *needed (if not NULL) receives the size required, NUL included; if size is
+ * too small, HS_ERR_BUFFER_TOO_SMALL and buf is untouched. digits + 16 bytes
+ * always suffice. *certified (if not NULL) receives the certified digits. */
+HS_EXPORT int hs_ref_value(const hs_ref_solution *sol, int quantity, char *buf, size_t size, size_t *needed,
+                           int *certified);
+
+#define HS_REF_EVAL_BX       1
+#define HS_REF_EVAL_SLIP     2
+#define HS_REF_EVAL_WORK     3
+#define HS_REF_EVAL_PRESSURE 4
+
+/* Point evaluation at the decimal point x (|x| <= a), as hs_ref_value. */
+HS_EXPORT int hs_ref_eval(const hs_ref_solution *sol, int what, const char *x, char *buf, size_t size,
+                          size_t *needed, int *certified);
 
 #ifdef __cplusplus
 }

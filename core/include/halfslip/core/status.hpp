@@ -20,7 +20,8 @@ enum class status : int {
   bad_option = 11,
   out_of_memory = 12,
   internal = 13,
-  overflow = 14
+  overflow = 14,
+  bad_number = 15
 };
 
 // Thrown by the core on invalid input or failure; carries a status and a

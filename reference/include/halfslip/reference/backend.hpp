@@ -1,0 +1,84 @@
+// halfslip reference backend: the core templates instantiated on MPFR at a
+// precision chosen per call, with digit certification.
+//
+// Precision tiers. Boost 1.74's variable-precision mpfr_float keeps its
+// default precision in one process-wide variable, so two threads working
+// at different precisions would interfere. The reference therefore uses
+// fixed-precision MPFR types, number<mpfr_float_backend<D>, et_off>, for a
+// ladder of D (decimal digits). Each tier is explicitly instantiated in its
+// own translation unit (reference/src/tier_D.cpp). A request for N digits
+// runs at the smallest tier with D >= N + guard, and again at the next tier;
+// the agreement of the two runs certifies the digits. The precision is in
+// the type, so it is per call by construction and there is no global state.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hs { namespace reference {
+
+// Decimal inputs, parsed at the working precision (exact decimals stay
+// exact up to the last bit of the tier).
+struct text_scene {
+  std::string a = "1", p0 = "1", f = "1", Estar = "1", q = "0.5", s = "0.5";
+  // Dimensional Hertz input instead of a, p0, q, s when P is not empty.
+  std::string P, R, Q, sigma;
+};
+
+enum class quantity : int { b1 = 1, b2 = 2, d1 = 3, d2 = 4, energy1 = 5, energy2 = 6, a = 7, p0 = 8 };
+enum class point_eval : int { Bx = 1, slip = 2, work = 3, pressure = 4 };
+
+// One solve at one fixed precision tier (type-erased).
+class tier_solution {
+ public:
+  virtual ~tier_solution() = default;
+  virtual unsigned digits10() const = 0;
+  virtual int regime() const = 0;
+  virtual int dir1() const = 0;
+  virtual int dir2() const = 0;
+  virtual int iterations() const = 0;
+  // Value printed in scientific notation with `sig` significant digits.
+  virtual std::string value(quantity q, int sig) const = 0;
+  virtual std::string eval(point_eval what, const std::string &x, int sig) const = 0;
+};
+
+// Precision ladder (decimal digits) and the largest certifiable request.
+const std::vector<unsigned> &tiers();
+int max_digits();
+constexpr int guard_digits = 10;
+
+// Solve at tier D (must be one of tiers()). Throws hs::core::error.
+std::unique_ptr<tier_solution> solve_at(unsigned D, const text_scene &sc, int max_iterations);
+
+// A certified value: the working-precision result rounded to the requested
+// digits, and how many of its leading significant digits are certified.
+struct certified {
+  std::string text;
+  int digits;
+};
+
+// Certified solution: work tier plus check tier.
+class solution {
+ public:
+  solution(const text_scene &sc, int digits, int max_iterations = 1000);
+  int digits() const { return digits_; }
+  unsigned working_digits() const { return work_->digits10(); }
+  unsigned check_digits() const { return check_->digits10(); }
+  int regime() const { return work_->regime(); }
+  int dir1() const { return work_->dir1(); }
+  int dir2() const { return work_->dir2(); }
+  int iterations() const { return work_->iterations(); }
+  certified value(quantity q) const;
+  certified eval(point_eval what, const std::string &x) const;
+
+ private:
+  certified certify(const std::string &work, const std::string &check) const;
+  int digits_;
+  std::unique_ptr<tier_solution> work_, check_;
+};
+
+// Number of leading significant decimal digits in which a agrees with b
+// (both decimal strings), capped at cap; cap when both are exactly zero.
+int agreeing_digits(const std::string &a, const std::string &b, int cap);
+
+}}  // namespace hs::reference

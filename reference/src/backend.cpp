@@ -1,0 +1,85 @@
+// Reference backend: tier dispatch and digit certification.
+#include "halfslip/reference/backend.hpp"
+
+#include <boost/multiprecision/mpfr.hpp>
+#include <cmath>
+
+#include "halfslip/core/status.hpp"
+
+namespace hs { namespace reference {
+
+// one factory per tier, each defined in its own translation unit
+#define HS_TIER(D) std::unique_ptr<tier_solution> make_tier_##D(const text_scene &, int);
+HS_TIER(50)
+HS_TIER(80)
+HS_TIER(120)
+HS_TIER(180)
+HS_TIER(270)
+HS_TIER(400)
+HS_TIER(600)
+#undef HS_TIER
+
+const std::vector<unsigned> &tiers() {
+  static const std::vector<unsigned> t = {50, 80, 120, 180, 270, 400, 600};
+  return t;
+}
+
+int max_digits() {
+  const auto &t = tiers();
+  return int(t[t.size() - 2]) - guard_digits;  // the top tier only checks
+}
+
+std::unique_ptr<tier_solution> solve_at(unsigned D, const text_scene &sc, int max_iterations) {
+  switch (D) {
+    case 50: return make_tier_50(sc, max_iterations);
+    case 80: return make_tier_80(sc, max_iterations);
+    case 120: return make_tier_120(sc, max_iterations);
+    case 180: return make_tier_180(sc, max_iterations);
+    case 270: return make_tier_270(sc, max_iterations);
+    case 400: return make_tier_400(sc, max_iterations);
+    case 600: return make_tier_600(sc, max_iterations);
+    default: throw core::error(core::status::bad_option, "no such precision tier");
+  }
+}
+
+solution::solution(const text_scene &sc, int digits, int max_iterations) : digits_(digits) {
+  if (digits < 1 || digits > max_digits())
+    throw core::error(core::status::bad_option, "digits out of range (1 .. hs_ref_max_digits())");
+  const auto &t = tiers();
+  size_t i = 0;
+  while (int(t[i]) < digits + guard_digits) ++i;
+  work_ = solve_at(t[i], sc, max_iterations);
+  check_ = solve_at(t[i + 1], sc, max_iterations);
+}
+
+namespace {
+using big = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<620>,
+                                          boost::multiprecision::et_off>;
+}
+
+int agreeing_digits(const std::string &a, const std::string &b, int cap) {
+  // Largest k <= cap with |a - b| <= 0.5 ulp of b at k significant digits,
+  // i.e. a is b correctly rounded to k digits (up to a tie).
+  const big x(a), y(b);
+  if (x == y) return cap;
+  if (y == 0) return 0;
+  const big err = abs(x - y);
+  const big e = floor(log10(abs(y)));                  // exponent of b
+  const big k = floor(e + 1 - log10(2 * err));
+  if (k < 0) return 0;
+  return k > cap ? cap : int(k.convert_to<long>());
+}
+
+certified solution::certify(const std::string &work, const std::string &check) const {
+  return {work, agreeing_digits(work, check, digits_)};
+}
+
+certified solution::value(quantity q) const {
+  return certify(work_->value(q, digits_), check_->value(q, int(check_->digits10())));
+}
+
+certified solution::eval(point_eval what, const std::string &x) const {
+  return certify(work_->eval(what, x, digits_), check_->eval(what, x, int(check_->digits10())));
+}
+
+}}  // namespace hs::reference

@@ -1,0 +1,113 @@
+// Implementation of one precision tier: the core templates on a fixed
+// precision MPFR type. Included by the tier_D.cpp translation units only.
+#pragma once
+#include <boost/multiprecision/mpfr.hpp>
+#include <cctype>
+#include <iomanip>
+#include <sstream>
+
+#include "halfslip/core/hertz.hpp"
+#include "halfslip/reference/backend.hpp"
+
+namespace hs { namespace reference {
+
+template <unsigned D>
+using mp_real = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D>,
+                                              boost::multiprecision::et_off>;
+
+template <class T> T parse_decimal(const std::string &s, const char *what) {
+  // strict: optional sign, digits, optional fraction, optional exponent
+  size_t i = 0, n = s.size();
+  bool digits = false;
+  if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+  while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { ++i; digits = true; }
+  if (i < n && s[i] == '.') {
+    ++i;
+    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { ++i; digits = true; }
+  }
+  if (digits && i < n && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
+    bool ed = false;
+    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { ++i; ed = true; }
+    if (!ed) digits = false;
+  }
+  if (!digits || i != n || n > 4096) throw core::error(core::status::bad_number, what);
+  return T(s);
+}
+
+template <class T> std::string to_text(const T &v, int sig) {
+  std::ostringstream os;
+  os << std::scientific << std::setprecision(sig > 1 ? sig - 1 : 0) << v;
+  return os.str();
+}
+
+template <unsigned D> class tier_solution_impl final : public tier_solution {
+  using T = mp_real<D>;
+
+ public:
+  tier_solution_impl(const text_scene &in, int max_iterations) {
+    core::hertz_scene<T> sc;
+    sc.f = parse_decimal<T>(in.f, "friction coefficient f is not a decimal number");
+    sc.Estar = parse_decimal<T>(in.Estar, "E* is not a decimal number");
+    if (!in.P.empty()) {
+      const T P = parse_decimal<T>(in.P, "P is not a decimal number");
+      const T R = parse_decimal<T>(in.R, "R is not a decimal number");
+      const T Q = parse_decimal<T>(in.Q, "Q is not a decimal number");
+      const T sg = parse_decimal<T>(in.sigma, "sigma is not a decimal number");
+      if (!(P > 0 && R > 0 && sc.Estar > 0)) throw core::error(core::status::bad_size, "P, R, E* must be > 0");
+      if (!(sc.f > 0)) throw core::error(core::status::bad_friction, "f must be > 0");
+      const T pi = core::pi<T>();
+      sc.a = sqrt(4 * P * R / (pi * sc.Estar));
+      sc.p0 = 2 * P / (pi * sc.a);
+      sc.q = Q / (sc.f * P);
+      sc.s = sg / (sc.f * sc.p0);
+    } else {
+      sc.a = parse_decimal<T>(in.a, "a is not a decimal number");
+      sc.p0 = parse_decimal<T>(in.p0, "p0 is not a decimal number");
+      sc.q = parse_decimal<T>(in.q, "Q/fP is not a decimal number");
+      sc.s = parse_decimal<T>(in.s, "sigma/(f p0) is not a decimal number");
+    }
+    core::solve_options<T> opt;
+    opt.max_iterations = max_iterations;
+    sol_ = core::solve_hertz(sc, opt);
+  }
+  unsigned digits10() const override { return D; }
+  int regime() const override { return int(sol_.reg); }
+  int dir1() const override { return sol_.dir1(); }
+  int dir2() const override { return sol_.dir2(); }
+  int iterations() const override { return sol_.iterations; }
+  std::string value(quantity q, int sig) const override {
+    switch (q) {
+      case quantity::b1: return to_text(sol_.b1(), sig);
+      case quantity::b2: return to_text(sol_.b2(), sig);
+      case quantity::d1: return to_text(sol_.d1(), sig);
+      case quantity::d2: return to_text(sol_.d2(), sig);
+      case quantity::energy1: return to_text(sol_.energy(1), sig);
+      case quantity::energy2: return to_text(sol_.energy(2), sig);
+      case quantity::a: return to_text(sol_.scene.a, sig);
+      case quantity::p0: return to_text(sol_.scene.p0, sig);
+    }
+    throw core::error(core::status::bad_option, "unknown quantity");
+  }
+  std::string eval(point_eval what, const std::string &xs, int sig) const override {
+    const T x = parse_decimal<T>(xs, "evaluation point is not a decimal number");
+    if (!(abs(x) <= sol_.scene.a)) throw core::error(core::status::point_outside, "evaluation point outside |x| <= a");
+    switch (what) {
+      case point_eval::Bx: return to_text(sol_.Bx(x), sig);
+      case point_eval::slip: return to_text(sol_.slip(x), sig);
+      case point_eval::work: return to_text(sol_.work(x), sig);
+      case point_eval::pressure: return to_text(sol_.pressure(x), sig);
+    }
+    throw core::error(core::status::bad_option, "unknown evaluation");
+  }
+
+ private:
+  core::hertz_solution<T> sol_;
+};
+
+template <unsigned D> std::unique_ptr<tier_solution> make_tier(const text_scene &sc, int max_iterations) {
+  return std::unique_ptr<tier_solution>(new tier_solution_impl<D>(sc, max_iterations));
+}
+
+}}  // namespace hs::reference
