@@ -1,17 +1,17 @@
-// The `halfslip` command: solve a scene from the command line, through the C ABI.
-//
-//   halfslip solve [--geometry hertz] [--Q-over-fP X] [--sigma-over-fp0 Y]
-//                  [--a A] [--p0 P0] [--f F] [--E-star E]
-//                  [--P P --R R --E-star E --f F --Q Q --sigma S]
-//                  [--points N] [--json]
+// The `halfslip` command, through the C ABI only:
+//   halfslip solve [options]   one scene (double, or --digits N with the MPFR reference)
+//   halfslip table [options]   high-precision benchmark table over a grid (reference)
 #include <halfslip/halfslip.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
+#include <atomic>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -29,7 +29,16 @@ const char *kUsage =
     "  --P P --R R --E-star E --f F --Q Q --sigma S\n"
     "output:\n"
     "  --points N              also tabulate B_x, slip h and work W at N points per slip zone\n"
-    "  --json                  one JSON object, numbers with 17 significant digits\n";
+    "  --json                  one JSON object, numbers with 17 significant digits\n"
+    "  --digits N              reference backend (MPFR): every output to N significant digits\n"
+    "                          with its certified digit count; inputs are read as exact decimals\n"
+    "\n"
+    "usage: halfslip table --Q-over-fP LIST --sigma-over-fp0 LIST [--digits N] [--format csv|jsonl]\n"
+    "                      [--threads T] [--shard K/N] [--no-energy] [--a A --p0 P0 --f F --E-star E]\n"
+    "  High-precision benchmark table over the grid LIST x LIST (reference backend).\n"
+    "  LIST is v1,v2,... or start:step:count (exact decimal arithmetic).\n"
+    "  --shard K/N writes the K-th of N contiguous blocks of rows; the N outputs\n"
+    "  concatenated in order equal the unsharded output (CSV header in shard 1 only).\n";
 
 [[noreturn]] void die(const std::string &msg) {
   std::fprintf(stderr, "halfslip: %s\n", msg.c_str());
@@ -63,49 +72,148 @@ void check(int st, const std::string &what) {
   if (st != HS_OK) die(what + ": " + hs_strerror(st));
 }
 
-}  // namespace
 
-int main(int argc, char **argv) {
-  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
-    std::fputs(kUsage, argc < 2 ? stderr : stdout);
-    return argc < 2 ? 2 : 0;
-  }
-  if (std::strcmp(argv[1], "--version") == 0) {
-    std::printf("halfslip %s\n", hs_version_string());
-    return 0;
-  }
-  if (std::strcmp(argv[1], "solve") != 0) die(std::string("unknown command '") + argv[1] + "'\n" + kUsage);
+using Args = std::map<std::string, std::string>;
 
-  const char *known[] = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f", "--E-star",
-                         "--P", "--R", "--Q", "--sigma", "--points"};
-  std::map<std::string, std::string> args;
-  bool json = false;
-  for (int i = 2; i < argc; ++i) {
+// Parse "--key value" pairs (and the boolean flags given) after argv[first].
+Args parse_args(int argc, char **argv, int first, const std::vector<std::string> &keys,
+                const std::vector<std::string> &flags) {
+  Args args;
+  for (int i = first; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--json") { json = true; continue; }
-    if (a == "--help" || a == "-h") { std::fputs(kUsage, stdout); return 0; }
-    bool ok = false;
-    for (const char *k : known) ok = ok || a == k;
-    if (!ok) die("unknown option '" + a + "'");
+    if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    }
+    if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
+      args[a] = "1";
+      continue;
+    }
+    if (std::find(keys.begin(), keys.end(), a) == keys.end()) die("unknown option '" + a + "'");
     if (i + 1 >= argc) die("option " + a + " needs a value");
     if (args.count(a)) die("option " + a + " given twice");
     args[a] = argv[++i];
   }
   if (args.count("--geometry") && args["--geometry"] != "hertz")
     die("bad value for --geometry: '" + args["--geometry"] + "' (known: hertz)");
+  return args;
+}
 
+int parse_int(const std::string &flag, const std::string &text, int lo, int hi) {
+  const double v = parse_number(flag, text.c_str());
+  if (!(v >= lo && v <= hi && v == std::floor(v)))
+    die("bad value for " + flag + ": need an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return int(v);
+}
+
+// Check a decimal argument (finite number) and keep its exact text.
+std::string decimal_arg(const Args &args, const char *k, const char *def) {
+  auto it = args.find(k);
+  if (it == args.end()) return def;
+  parse_number(k, it->second.c_str());
+  return it->second;
+}
+
+std::string json_str(const std::string &s) { return "\"" + s + "\""; }
+
+// ---------------------------------------------------------------- solve
+const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
+                                             "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits"};
+
+bool is_dimensional(const Args &args) {
+  return args.count("--P") || args.count("--R") || args.count("--Q") || args.count("--sigma");
+}
+
+void check_dimensional(const Args &args) {
+  for (const char *k : {"--P", "--R", "--E-star", "--f", "--Q", "--sigma"})
+    if (!args.count(k)) die(std::string("dimensional input needs ") + k + " (give --P --R --E-star --f --Q --sigma)");
+  for (const char *k : {"--Q-over-fP", "--sigma-over-fp0", "--a", "--p0"})
+    if (args.count(k)) die(std::string(k) + " cannot be combined with dimensional --P/--R/--Q/--sigma");
+}
+
+int solve_reference(const Args &args, int digits) {
+  if (args.count("--points")) die("--points is not available with --digits (use the C ABI's hs_ref_eval)");
+  const bool json = args.count("--json") > 0;
+  // exact decimal texts of the inputs
+  std::map<std::string, std::string> in;
+  hs_ref_scene sc;
+  hs_ref_scene_default(&sc);
+  in["f"] = decimal_arg(args, "--f", "1");
+  in["E_star"] = decimal_arg(args, "--E-star", "1");
+  sc.f = in["f"].c_str();
+  sc.E_star = in["E_star"].c_str();
+  if (is_dimensional(args)) {
+    check_dimensional(args);
+    for (const char *k : {"--P", "--R", "--Q", "--sigma"}) in[k + 2] = decimal_arg(args, k, "");
+    if (!(std::strtod(in["P"].c_str(), nullptr) > 0)) die("bad value for --P: must be > 0");
+    sc.P = in["P"].c_str();
+    sc.R = in["R"].c_str();
+    sc.Q = in["Q"].c_str();
+    sc.sigma = in["sigma"].c_str();
+  } else {
+    in["Q_over_fP"] = decimal_arg(args, "--Q-over-fP", "0.5");
+    in["sigma_over_fp0"] = decimal_arg(args, "--sigma-over-fp0", "0.5");
+    in["a"] = decimal_arg(args, "--a", "1");
+    in["p0"] = decimal_arg(args, "--p0", "1");
+    if (!(std::fabs(std::strtod(in["Q_over_fP"].c_str(), nullptr)) < 1))
+      die("bad value for --Q-over-fP: |Q/fP| must be < 1 (gross sliding)");
+    sc.a = in["a"].c_str();
+    sc.p0 = in["p0"].c_str();
+    sc.Q_over_fP = in["Q_over_fP"].c_str();
+    sc.sigma_over_fp0 = in["sigma_over_fp0"].c_str();
+  }
+  hs_ref_solution *sol = nullptr;
+  check(hs_ref_solve(&sc, digits, &sol), "reference solve");
+  hs_ref_summary sm;
+  sm.struct_size = sizeof sm;
+  check(hs_ref_solution_summary(sol, &sm), "summary");
+  struct item { const char *key; int id; };
+  const item items[] = {{"a", HS_REF_A}, {"p0", HS_REF_P0}, {"b1", HS_REF_B1}, {"b2", HS_REF_B2}, {"d1", HS_REF_D1},
+                        {"d2", HS_REF_D2}, {"energy1", HS_REF_ENERGY1}, {"energy2", HS_REF_ENERGY2}};
+  std::vector<std::pair<std::string, int>> vals;
+  std::vector<char> buf(size_t(digits) + 64);
+  for (const auto &it : items) {
+    int cd = 0;
+    check(hs_ref_value(sol, it.id, buf.data(), buf.size(), nullptr, &cd), it.key);
+    vals.emplace_back(buf.data(), cd);
+  }
+  hs_ref_solution_free(sol);
+  if (json) {
+    std::printf("{\"geometry\": \"hertz\", \"regime\": \"%s\", \"digits\": %d, \"working_digits\": %d, "
+                "\"slip_dir1\": %d, \"slip_dir2\": %d",
+                regime_name(sm.regime), digits, sm.working_digits, sm.slip_dir1, sm.slip_dir2);
+    for (const auto &kv : in)
+      if (!kv.second.empty()) std::printf(", \"%s\": %s", kv.first.c_str(), json_str(kv.second).c_str());
+    for (size_t i = 0; i < vals.size(); ++i)
+      std::printf(", \"%s\": %s, \"%s_digits\": %d", items[i].key, json_str(vals[i].first).c_str(), items[i].key,
+                  vals[i].second);
+    std::printf("}\n");
+  } else {
+    std::printf("halfslip %s reference backend: Hertz contact, %d significant digits\n", hs_version_string(), digits);
+    std::printf("  (working precision %d digits, certified against a %d-digit run)\n", sm.working_digits,
+                sm.check_digits);
+    for (const auto &kv : in)
+      if (!kv.second.empty()) std::printf("  %s = %s\n", kv.first.c_str(), kv.second.c_str());
+    std::printf("regime: %s, slip directions %+d (zone 1), %+d (zone 2)\n", regime_name(sm.regime), sm.slip_dir1,
+                sm.slip_dir2);
+    for (size_t i = 0; i < vals.size(); ++i)
+      std::printf("  %-8s = %s   [%d digits certified]\n", items[i].key, vals[i].first.c_str(), vals[i].second);
+  }
+  return 0;
+}
+
+int cmd_solve(int argc, char **argv) {
+  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json"});
   auto get = [&](const char *k, double def) {
-    return args.count(k) ? parse_number(k, args[k].c_str()) : def;
+    return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
   };
-
+  if (args.count("--digits"))
+    return solve_reference(args, parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()));
+  const bool json = args.count("--json") > 0;
   hs_scene scene;
   hs_scene_default(&scene);
-  const bool dimensional = args.count("--P") || args.count("--R") || args.count("--Q") || args.count("--sigma");
-  if (dimensional) {
-    for (const char *k : {"--P", "--R", "--E-star", "--f", "--Q", "--sigma"})
-      if (!args.count(k)) die(std::string("dimensional input needs ") + k + " (give --P --R --E-star --f --Q --sigma)");
-    for (const char *k : {"--Q-over-fP", "--sigma-over-fp0", "--a", "--p0"})
-      if (args.count(k)) die(std::string(k) + " cannot be combined with dimensional --P/--R/--Q/--sigma");
+  if (is_dimensional(args)) {
+    check_dimensional(args);
     const double P = get("--P", 0), R = get("--R", 0), E = get("--E-star", 0), f = get("--f", 0);
     const double Q = get("--Q", 0), sg = get("--sigma", 0);
     if (!(P > 0)) die("bad value for --P: must be > 0");
@@ -127,13 +235,7 @@ int main(int argc, char **argv) {
     if (!(scene.f > 0)) die("bad value for --f: must be > 0");
     if (!(scene.E_star > 0)) die("bad value for --E-star: must be > 0");
   }
-  int npts = 0;
-  if (args.count("--points")) {
-    const double v = parse_number("--points", args["--points"].c_str());
-    if (!(v >= 0 && v <= 100000 && v == std::floor(v))) die("bad value for --points: need an integer in [0, 100000]");
-    npts = int(v);
-  }
-
+  const int npts = args.count("--points") ? parse_int("--points", args.at("--points"), 0, 100000) : 0;
   hs_solution *sol = nullptr;
   check(hs_solve(&scene, nullptr, &sol), "solve");
   hs_summary sm;
@@ -198,4 +300,164 @@ int main(int argc, char **argv) {
   }
   hs_solution_free(sol);
   return 0;
+}
+
+// ---------------------------------------------------------------- table
+// Exact decimal grid values: mantissa * 10^-scale with a 128-bit mantissa.
+struct decimal {
+  __int128 m = 0;
+  int scale = 0;
+};
+
+decimal parse_decimal_exact(const std::string &flag, const std::string &t) {
+  decimal d;
+  size_t i = 0;
+  bool neg = false, any = false, dot = false;
+  if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
+  for (; i < t.size(); ++i) {
+    if (t[i] == '.' && !dot) { dot = true; continue; }
+    if (!std::isdigit(static_cast<unsigned char>(t[i]))) die("bad value for " + flag + ": '" + t + "' is not a plain decimal");
+    if (d.m > (__int128(1) << 100)) die("bad value for " + flag + ": '" + t + "' has too many digits");
+    d.m = d.m * 10 + (t[i] - '0');
+    if (dot) ++d.scale;
+    any = true;
+  }
+  if (!any) die("bad value for " + flag + ": '" + t + "' is not a number");
+  if (neg) d.m = -d.m;
+  return d;
+}
+
+std::string decimal_text(decimal d) {
+  const bool neg = d.m < 0;
+  __int128 m = neg ? -d.m : d.m;
+  std::string s;
+  do { s.insert(s.begin(), char('0' + int(m % 10))); m /= 10; } while (m > 0);
+  if (d.scale > 0) {
+    while (int(s.size()) <= d.scale) s.insert(s.begin(), '0');
+    s.insert(s.end() - d.scale, '.');
+  }
+  return (neg ? "-" : "") + s;
+}
+
+std::vector<std::string> parse_list(const std::string &flag, const std::string &t) {
+  std::vector<std::string> out;
+  if (t.find(':') != std::string::npos) {
+    const size_t c1 = t.find(':'), c2 = t.find(':', c1 + 1);
+    if (c2 == std::string::npos) die("bad value for " + flag + ": use start:step:count");
+    decimal a = parse_decimal_exact(flag, t.substr(0, c1)), h = parse_decimal_exact(flag, t.substr(c1 + 1, c2 - c1 - 1));
+    const int n = parse_int(flag, t.substr(c2 + 1), 1, 100000);
+    while (a.scale < h.scale) { a.m *= 10; ++a.scale; }
+    while (h.scale < a.scale) { h.m *= 10; ++h.scale; }
+    for (int i = 0; i < n; ++i) out.push_back(decimal_text({a.m + h.m * i, a.scale}));
+  } else {
+    size_t p = 0;
+    while (p <= t.size()) {
+      const size_t q = t.find(',', p);
+      const std::string v = t.substr(p, q == std::string::npos ? std::string::npos : q - p);
+      parse_number(flag, v.c_str());
+      out.push_back(v);
+      if (q == std::string::npos) break;
+      p = q + 1;
+    }
+  }
+  return out;
+}
+
+int cmd_table(int argc, char **argv) {
+  const Args args = parse_args(argc, argv, 2,
+                               {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--digits", "--format", "--threads",
+                                "--shard", "--a", "--p0", "--f", "--E-star"},
+                               {"--no-energy"});
+  if (!args.count("--Q-over-fP") || !args.count("--sigma-over-fp0"))
+    die("table needs --Q-over-fP LIST and --sigma-over-fp0 LIST");
+  const auto qs = parse_list("--Q-over-fP", args.at("--Q-over-fP"));
+  const auto ss = parse_list("--sigma-over-fp0", args.at("--sigma-over-fp0"));
+  const int digits = args.count("--digits") ? parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()) : 40;
+  const std::string fmt = args.count("--format") ? args.at("--format") : "csv";
+  if (fmt != "csv" && fmt != "jsonl" && fmt != "json") die("bad value for --format: '" + fmt + "' (csv or jsonl)");
+  const bool jsonl = fmt != "csv";
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const int threads = args.count("--threads") ? parse_int("--threads", args.at("--threads"), 1, 1024) : int(hw);
+  int shard = 1, nshards = 1;
+  if (args.count("--shard")) {
+    const std::string t = args.at("--shard");
+    const size_t sl = t.find('/');
+    if (sl == std::string::npos) die("bad value for --shard: use K/N");
+    nshards = parse_int("--shard", t.substr(sl + 1), 1, 1000000);
+    shard = parse_int("--shard", t.substr(0, sl), 1, nshards);
+  }
+  const bool energy = !args.count("--no-energy");
+  const std::string a = decimal_arg(args, "--a", "1"), p0 = decimal_arg(args, "--p0", "1"),
+                    f = decimal_arg(args, "--f", "1"), E = decimal_arg(args, "--E-star", "1");
+  // rows in order q-major; shard k gets the k-th contiguous block
+  const size_t total = qs.size() * ss.size();
+  const size_t lo = total * size_t(shard - 1) / size_t(nshards), hi = total * size_t(shard) / size_t(nshards);
+  struct item { const char *key; int id; };
+  std::vector<item> items = {{"b1", HS_REF_B1}, {"b2", HS_REF_B2}, {"d1", HS_REF_D1}, {"d2", HS_REF_D2}};
+  if (energy) {
+    items.push_back({"energy1", HS_REF_ENERGY1});
+    items.push_back({"energy2", HS_REF_ENERGY2});
+  }
+  std::vector<std::string> lines(hi - lo);
+  std::atomic<size_t> next(lo);
+  std::atomic<bool> failed(false);
+  std::string first_error;
+  auto worker = [&]() {
+    for (size_t r = next++; r < hi && !failed; r = next++) {
+      const std::string &q = qs[r / ss.size()], &s = ss[r % ss.size()];
+      hs_ref_scene sc;
+      hs_ref_scene_default(&sc);
+      sc.a = a.c_str(); sc.p0 = p0.c_str(); sc.f = f.c_str(); sc.E_star = E.c_str();
+      sc.Q_over_fP = q.c_str(); sc.sigma_over_fp0 = s.c_str();
+      hs_ref_solution *sol = nullptr;
+      std::string line;
+      const int st = hs_ref_solve(&sc, digits, &sol);
+      hs_ref_summary sm;
+      sm.struct_size = sizeof sm;
+      if (st == HS_OK) hs_ref_solution_summary(sol, &sm);
+      const char *reg = st == HS_OK ? regime_name(sm.regime) : (st == HS_ERR_GROSS_SLIDING ? "gross-sliding" : "error");
+      if (jsonl) line = "{\"Q_over_fP\": " + json_str(q) + ", \"sigma_over_fp0\": " + json_str(s) +
+                        ", \"regime\": " + json_str(reg) + ", \"status\": " + std::to_string(st);
+      else line = q + "," + s + "," + reg + "," + std::to_string(st);
+      std::vector<char> buf(size_t(digits) + 64);
+      for (const auto &it : items) {
+        int cd = 0;
+        std::string v;
+        if (st == HS_OK && hs_ref_value(sol, it.id, buf.data(), buf.size(), nullptr, &cd) == HS_OK) v = buf.data();
+        if (jsonl) line += std::string(", \"") + it.key + "\": " + (v.empty() ? "null" : json_str(v)) + ", \"" +
+                           it.key + "_digits\": " + std::to_string(cd);
+        else line += "," + v + "," + std::to_string(cd);
+      }
+      if (jsonl) line += "}";
+      hs_ref_solution_free(sol);
+      lines[r - lo] = line;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (auto &t : pool) t.join();
+  if (!jsonl && shard == 1) {
+    std::printf("Q_over_fP,sigma_over_fp0,regime,status");
+    for (const auto &it : items) std::printf(",%s,%s_digits", it.key, it.key);
+    std::printf("\n");
+  }
+  for (const auto &l : lines) std::printf("%s\n", l.c_str());
+  (void)first_error;
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  if (std::strcmp(argv[1], "--version") == 0) {
+    std::printf("halfslip %s\n", hs_version_string());
+    return 0;
+  }
+  if (std::strcmp(argv[1], "solve") == 0) return cmd_solve(argc, argv);
+  if (std::strcmp(argv[1], "table") == 0) return cmd_table(argc, argv);
+  die(std::string("unknown command '") + argv[1] + "' (solve or table; see halfslip --help)");
 }

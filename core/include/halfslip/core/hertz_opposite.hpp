@@ -20,6 +20,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "elliptic.hpp"
 #include "numerics.hpp"
@@ -241,6 +242,33 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
   return false;
 }
 
+// Wider type for one step of iterative refinement of a converged solution
+// (double -> long double); other types refine in themselves (no-op).
+template <class T> struct refine_type { using type = T; };
+template <> struct refine_type<double> { using type = long double; };
+
+// One Newton step with the residual and Jacobian evaluated in the wider type
+// R: removes the rounding error the residual's O(pi s) terms leave in the
+// lengths, so that d1, d2 come out to a few ulps relative, not absolute.
+template <class T, class R>
+opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T> &st) {
+  using std::abs; using std::expm1;
+  const opposite_state<R> w{R(st.d1), R(st.d2), R(st.e)};
+  const auto r = opposite_residual<R>(R(q), R(s), w);
+  // coordinates (c, ln e): dc changes d1 by -dc, d2 by +dc; ln e as in Newton
+  const R det = r.F1c * r.F2l - r.F1l * r.F2c;
+  if (!(det != 0)) return st;
+  const R dc = -(r.F1 * r.F2l - r.F2 * r.F1l) / det;
+  const R dl = -(r.F1c * r.F2 - r.F2c * r.F1) / det;
+  const R de = w.e * expm1(dl);
+  opposite_state<R> n{w.d1 - dc - de / 2, w.d2 + dc - de / 2, w.e + de};
+  if (!(n.d1 > 0 && n.d2 > 0 && n.e > 0)) return st;
+  // a refinement step is a small correction; anything else means the wider
+  // evaluation disagrees, and the converged state is kept
+  if (abs(dc) > R(1e-6) || abs(dl) > R(1e-6)) return st;
+  return {T(n.d1), T(n.d2), T(n.e)};
+}
+
 // Solve the opposite-sign side conditions for canonical q >= 0, s > 4(1 - sqrt(1-q)).
 // Newton from the better of two starts: the same-sign lengths continued
 // across the boundary, and the large-sigma asymptote (stick zone of width
@@ -278,7 +306,12 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
     throw error(status::overflow, "opposite-sign regime: stick zone narrower than the smallest representable number");
   opposite_state<T> st;
   int its = 0;
-  if (opposite_newton<T, Basis>(q, s, best, max_iterations, st, its)) return {1 - st.d1, 1 - st.d2, st.d1, st.d2, st.e, its};
+  using W = typename refine_type<T>::type;
+  auto finish = [&](opposite_state<T> x, int n) -> opposite_result<T> {
+    if (!std::is_same<W, T>::value) x = refine_opposite<T, W>(q, s, x);
+    return {1 - x.d1, 1 - x.d2, x.d1, x.d2, x.e, n};
+  };
+  if (opposite_newton<T, Basis>(q, s, best, max_iterations, st, its)) return finish(st, its);
   // Continuation: s_k = s_b + (s - s_b) 2^(k-K); d1 grows linearly from 0.
   const T sb = 4 * m, span = s - sb;
   const int K = 40;
@@ -300,7 +333,7 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
       else cur.d2 -= grow;
     }
   }
-  return {1 - cur.d1, 1 - cur.d2, cur.d1, cur.d2, cur.e, total};
+  return finish(cur, total);
 }
 
 }}  // namespace hs::core

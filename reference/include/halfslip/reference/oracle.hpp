@@ -26,7 +26,8 @@ template <class T> T tol_for() {
 // integral over [lo, hi] of g(x, dist_lo, dist_hi) with accurate distances
 // to both ends (tanh-sinh, complement-aware).
 template <class T, class G> T integrate_ends(const G &g, const T &lo, const T &hi) {
-  boost::math::quadrature::tanh_sinh<T> ts(20);
+  const T e = boost::math::tools::epsilon<T>();
+  boost::math::quadrature::tanh_sinh<T> ts(20, e * e * e * e);  // see core integrate_ts
   const T L = hi - lo;
   // xc is the exact distance to the nearer end; the distance to the far end
   // is taken from the interval length, not from the rounded abscissa, so that
