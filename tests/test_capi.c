@@ -167,6 +167,52 @@ int main(void) {
     CHECK(hs_scene_from_hertz_loads(P, R, E, f, 0, 0, NULL) == HS_ERR_NULL_POINTER);
   }
 
+  /* reference backend */
+  {
+    hs_ref_scene rs;
+    hs_ref_solution *rsol = NULL;
+    hs_ref_summary rsm;
+    char buf[128], tiny[4];
+    size_t need = 0;
+    int cd = -1;
+    CHECK(hs_ref_scene_default(&rs) == HS_OK);
+    rs.Q_over_fP = "0.3";
+    rs.sigma_over_fp0 = "2";
+    CHECK(hs_ref_max_digits() >= 300);
+    CHECK(hs_ref_solve(&rs, 30, &rsol) == HS_OK);
+    rsm.struct_size = sizeof rsm;
+    CHECK(hs_ref_solution_summary(rsol, &rsm) == HS_OK);
+    CHECK(rsm.regime == HS_REGIME_OPPOSITE_SIGN && rsm.digits == 30 && rsm.working_digits >= 40);
+    CHECK(hs_ref_value(rsol, HS_REF_B1, buf, sizeof buf, &need, &cd) == HS_OK);
+    CHECK(strncmp(buf, "7.49058362968990633002635765716", 31) == 0);
+    CHECK(cd == 30 && need == strlen(buf) + 1);
+    memcpy(tiny, "xyz", 4);
+    CHECK(hs_ref_value(rsol, HS_REF_B1, tiny, sizeof tiny, &need, &cd) == HS_ERR_BUFFER_TOO_SMALL);
+    CHECK(strcmp(tiny, "xyz") == 0 && need == strlen(buf) + 1);
+    CHECK(hs_ref_value(rsol, 99, buf, sizeof buf, NULL, NULL) == HS_ERR_BAD_OPTION);
+    CHECK(hs_ref_eval(rsol, HS_REF_EVAL_BX, "0.9", buf, sizeof buf, NULL, &cd) == HS_OK);
+    CHECK(buf[0] == '-' && cd == 30);
+    CHECK(hs_ref_eval(rsol, HS_REF_EVAL_BX, "1.5", buf, sizeof buf, NULL, &cd) == HS_ERR_POINT_OUTSIDE);
+    CHECK(hs_ref_eval(rsol, HS_REF_EVAL_BX, "0.9q", buf, sizeof buf, NULL, &cd) == HS_ERR_BAD_NUMBER);
+    CHECK(hs_ref_eval(rsol, HS_REF_EVAL_BX, NULL, buf, sizeof buf, NULL, &cd) == HS_ERR_NULL_POINTER);
+    hs_ref_solution_free(rsol);
+    rsol = NULL;
+    CHECK(hs_ref_solve(&rs, 0, &rsol) == HS_ERR_BAD_OPTION && rsol == NULL);
+    CHECK(hs_ref_solve(&rs, hs_ref_max_digits() + 1, &rsol) == HS_ERR_BAD_OPTION);
+    rs.Q_over_fP = "abc";
+    CHECK(hs_ref_solve(&rs, 30, &rsol) == HS_ERR_BAD_NUMBER);
+    rs.Q_over_fP = "1";
+    CHECK(hs_ref_solve(&rs, 30, &rsol) == HS_ERR_GROSS_SLIDING);
+    rs.Q_over_fP = "0.3";
+    rs.f = "-1";
+    CHECK(hs_ref_solve(&rs, 30, &rsol) == HS_ERR_BAD_FRICTION);
+    rs.f = NULL;
+    rs.struct_size = 0;
+    CHECK(hs_ref_solve(&rs, 30, &rsol) == HS_ERR_STRUCT_SIZE);
+    CHECK(hs_ref_solve(NULL, 30, &rsol) == HS_ERR_NULL_POINTER);
+    hs_ref_solution_free(NULL);
+  }
+
   printf("capi: %d passed, %d failed\n", passed, failed);
   return failed == 0 ? 0 : 1;
 }

@@ -28,5 +28,20 @@ for bad in "--Q-over-fP 1.0" "--Q-over-fP nan" "--f -1" "--Q-over-fP abc" "--geo
 done
 err=$("$cli" solve --Q-over-fP 1.5 2>&1 >/dev/null); echo "$err" | grep -q "Q-over-fP" && ok || ko "message names the bad value"
 
+# reference backend: --digits, certified digits, JSON strings
+out=$("$cli" solve --digits 35 --Q-over-fP 0.3 --sigma-over-fp0 2) && echo "$out" | grep -q "7.4905836296899063300263576571618318e-01   \[35 digits certified\]" && ok || ko "solve --digits"
+js=$("$cli" solve --digits 25 --json) && echo "$js" | python3 -c 'import json,sys; json.load(sys.stdin)' && echo "$js" | grep -q '"b1": "8.321067811865475244008444e-01", "b1_digits": 25' && ok || ko "solve --digits --json"
+"$cli" solve --digits 0 >/dev/null 2>&1 && ko "--digits 0 accepted" || ok
+# table: sharded outputs concatenate to the unsharded one
+full=$("$cli" table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 2) && ok || ko "table"
+[ "$(printf '%s\n' "$full" | wc -l)" -eq 7 ] && ok || ko "table rows"
+cat_shards=$( for k in 1 2 3; do "$cli" table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 1 --shard $k/3; done )
+[ "$full" = "$cat_shards" ] && ok || ko "shards concatenate to the full table"
+jl=$("$cli" table --Q-over-fP 0.2,0.999 --sigma-over-fp0 0.5 --digits 20 --format jsonl --no-energy) && ok || ko "table jsonl"
+if command -v python3 >/dev/null 2>&1; then
+  echo "$jl" | python3 -c 'import json,sys; [json.loads(l) for l in sys.stdin]' && ok || ko "jsonl parses"
+fi
+"$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --shard 4/3 >/dev/null 2>&1 && ko "bad shard accepted" || ok
+
 echo "cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -182,8 +182,14 @@ int solve_reference(const Args &args, int digits) {
     std::printf("{\"geometry\": \"hertz\", \"regime\": \"%s\", \"digits\": %d, \"working_digits\": %d, "
                 "\"slip_dir1\": %d, \"slip_dir2\": %d",
                 regime_name(sm.regime), digits, sm.working_digits, sm.slip_dir1, sm.slip_dir2);
-    for (const auto &kv : in)
-      if (!kv.second.empty()) std::printf(", \"%s\": %s", kv.first.c_str(), json_str(kv.second).c_str());
+    std::printf(", \"inputs\": {");
+    bool first = true;
+    for (const auto &kv : in) {
+      if (kv.second.empty()) continue;
+      std::printf("%s\"%s\": %s", first ? "" : ", ", kv.first.c_str(), json_str(kv.second).c_str());
+      first = false;
+    }
+    std::printf("}");
     for (size_t i = 0; i < vals.size(); ++i)
       std::printf(", \"%s\": %s, \"%s_digits\": %d", items[i].key, json_str(vals[i].first).c_str(), items[i].key,
                   vals[i].second);
