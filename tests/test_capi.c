@@ -178,7 +178,7 @@ int main(void) {
     CHECK(hs_ref_scene_default(&rs) == HS_OK);
     rs.Q_over_fP = "0.3";
     rs.sigma_over_fp0 = "2";
-    CHECK(hs_ref_max_digits() >= 300);
+    CHECK(hs_ref_max_digits() >= 40); /* 380 in the default build; shorter ladders in sanitizer builds */
     CHECK(hs_ref_solve(&rs, 30, &rsol) == HS_OK);
     rsm.struct_size = sizeof rsm;
     CHECK(hs_ref_solution_summary(rsol, &rsm) == HS_OK);

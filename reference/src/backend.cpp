@@ -8,19 +8,18 @@
 
 namespace hs { namespace reference {
 
-// one factory per tier, each defined in its own translation unit
+// one factory per tier, each defined in its own generated translation unit;
+// tiers.inc lists them (CMake option HALFSLIP_REF_TIERS)
 #define HS_TIER(D) std::unique_ptr<tier_solution> make_tier_##D(const text_scene &, int);
-HS_TIER(50)
-HS_TIER(80)
-HS_TIER(120)
-HS_TIER(180)
-HS_TIER(270)
-HS_TIER(400)
-HS_TIER(600)
+#include "tiers.inc"
 #undef HS_TIER
 
 const std::vector<unsigned> &tiers() {
-  static const std::vector<unsigned> t = {50, 80, 120, 180, 270, 400, 600};
+#define HS_TIER(D) D,
+  static const std::vector<unsigned> t = {
+#include "tiers.inc"
+  };
+#undef HS_TIER
   return t;
 }
 
@@ -30,16 +29,11 @@ int max_digits() {
 }
 
 std::unique_ptr<tier_solution> solve_at(unsigned D, const text_scene &sc, int max_iterations) {
-  switch (D) {
-    case 50: return make_tier_50(sc, max_iterations);
-    case 80: return make_tier_80(sc, max_iterations);
-    case 120: return make_tier_120(sc, max_iterations);
-    case 180: return make_tier_180(sc, max_iterations);
-    case 270: return make_tier_270(sc, max_iterations);
-    case 400: return make_tier_400(sc, max_iterations);
-    case 600: return make_tier_600(sc, max_iterations);
-    default: throw core::error(core::status::bad_option, "no such precision tier");
-  }
+#define HS_TIER(DD) \
+  if (D == DD) return make_tier_##DD(sc, max_iterations);
+#include "tiers.inc"
+#undef HS_TIER
+  throw core::error(core::status::bad_option, "no such precision tier");
 }
 
 solution::solution(const text_scene &sc, int digits, int max_iterations) : digits_(digits) {
@@ -53,7 +47,7 @@ solution::solution(const text_scene &sc, int digits, int max_iterations) : digit
 }
 
 namespace {
-using big = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<620>,
+using big = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<HS_REF_TOP_TIER + 20>,
                                           boost::multiprecision::et_off>;
 }
 

@@ -1,9 +1,0 @@
-// Precision tier 50 decimal digits (explicit instantiation, own translation unit).
-#include "tier_impl.hpp"
-
-namespace hs { namespace reference {
-template class tier_solution_impl<50>;
-std::unique_ptr<tier_solution> make_tier_50(const text_scene &sc, int max_iterations) {
-  return make_tier<50>(sc, max_iterations);
-}
-}}  // namespace hs::reference

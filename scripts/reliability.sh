@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Reliability stage of the test suite (issue 7), run by scripts/test.sh:
+#   1. the whole ctest suite built with AddressSanitizer + UndefinedBehaviorSanitizer
+#   2. the threaded tests built with ThreadSanitizer
+#   3. valgrind memcheck on the C ABI test program
+#   4. a bounded libFuzzer run (clang) of the double and the reference C ABI
+# Sanitizer and fuzz builds use a short precision ladder (HALFSLIP_REF_TIERS)
+# to keep build time down. HS_FUZZ_SECONDS sets the time per fuzz target.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/setup.sh" >/dev/null
+hs_packages=(clang libclang-rt-14-dev valgrind)
+hs_install_missing
+cd "$HS_ROOT"
+short_tiers="50;80;120"
+jobs="$(nproc)"
+common=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DHALFSLIP_BUILD_BENCH=OFF "-DHALFSLIP_REF_TIERS=$short_tiers")
+
+echo "== reliability 1/4: ASan + UBSan, whole test suite"
+cmake -S . -B build-asan "${common[@]}" -DHALFSLIP_SANITIZE=address,undefined >/dev/null
+cmake --build build-asan -j "$jobs" >/dev/null
+(cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+   ctest --output-on-failure -j "$jobs" -E exported_symbols)
+
+echo "== reliability 2/4: ThreadSanitizer, threaded tests"
+cmake -S . -B build-tsan "${common[@]}" -DHALFSLIP_SANITIZE=thread -DHALFSLIP_BUILD_CLI=OFF >/dev/null
+cmake --build build-tsan -j "$jobs" --target test_core test_reference >/dev/null
+TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_core -tc="threads*"
+TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_reference -tc="two threads*"
+
+echo "== reliability 3/4: valgrind memcheck, C ABI test"
+valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite \
+  "$HS_BUILD/tests/test_capi"
+
+echo "== reliability 4/4: libFuzzer, ${HS_FUZZ_SECONDS:-25} s per target"
+cmake -S . -B build-fuzz "${common[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DHALFSLIP_FUZZ=ON \
+  -DHALFSLIP_BUILD_TESTS=OFF -DHALFSLIP_BUILD_CLI=OFF -DHALFSLIP_SANITIZE=address,undefined >/dev/null
+cmake --build build-fuzz -j "$jobs" --target fuzz_solve fuzz_ref >/dev/null
+mkdir -p tests/fuzz/crashes
+for t in solve ref; do
+  work="$(mktemp -d)"
+  cp tests/fuzz/corpus/$t/* "$work/"
+  # crash inputs are written to tests/fuzz/crashes/: copy them into corpus/$t to keep them as regression tests
+  build-fuzz/tests/fuzz/fuzz_$t "$work" -max_total_time="${HS_FUZZ_SECONDS:-25}" -max_len=256 -timeout=20 \
+    -rss_limit_mb=4096 -artifact_prefix=tests/fuzz/crashes/$t- -print_final_stats=1 2>&1 | tail -3
+  rm -rf "$work"
+done
+echo "reliability: all stages passed"

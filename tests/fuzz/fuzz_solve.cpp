@@ -1,0 +1,87 @@
+// libFuzzer target: the double C ABI. The input bytes become a scene, options
+// and evaluation points (raw doubles, so NaN, Inf, denormals, huge values and
+// garbage struct sizes all occur). Asserts the ABI contract: a known status,
+// a message for it, and on success self-consistent outputs.
+#include <halfslip/halfslip.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
+namespace {
+struct reader {
+  const uint8_t *p;
+  size_t n;
+  double real() {
+    double v = 0;
+    if (n >= sizeof v) {
+      std::memcpy(&v, p, sizeof v);
+      p += sizeof v;
+      n -= sizeof v;
+    }
+    return v;
+  }
+  uint8_t byte() {
+    if (!n) return 0;
+    --n;
+    return *p++;
+  }
+};
+void require(bool ok) {
+  if (!ok) std::abort();
+}
+bool known(int st) { return st >= HS_OK && st <= HS_ERR_BAD_NUMBER; }
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  reader r{data, size};
+  hs_scene sc;
+  hs_scene_default(&sc);
+  const uint8_t flags = r.byte();
+  sc.Q_over_fP = r.real();
+  sc.sigma_over_fp0 = r.real();
+  if (flags & 1) sc.a = r.real();
+  if (flags & 2) sc.p0 = r.real();
+  if (flags & 4) sc.f = r.real();
+  if (flags & 8) sc.E_star = r.real();
+  if (flags & 16) sc.geometry = r.byte();
+  if (flags & 32) sc.struct_size = r.byte();
+  hs_options o;
+  hs_options_default(&o);
+  if (flags & 64) {
+    o.rtol = r.real();
+    o.max_iterations = int(r.byte()) - 1;
+  }
+  hs_solution *sol = nullptr;
+  const int st = hs_solve(&sc, (flags & 128) ? &o : nullptr, &sol);
+  require(known(st) && hs_strerror(st) && *hs_strerror(st));
+  if (st != HS_OK) {
+    require(sol == nullptr);
+    return 0;
+  }
+  hs_summary sm;
+  sm.struct_size = sizeof sm;
+  require(hs_solution_summary(sol, &sm) == HS_OK);
+  require(std::isfinite(sm.b1) && std::isfinite(sm.b2) && sm.d1 >= 0 && sm.d2 >= 0);
+  require(sm.b1 <= sm.a && sm.b2 <= sm.a && sm.b1 + sm.b2 >= 0);
+  double x[4], out[4];
+  const size_t n = r.byte() % 5;
+  for (size_t i = 0; i < n; ++i) x[i] = r.real();
+  for (int k = 0; k < 4; ++k) {
+    for (size_t i = 0; i < n; ++i) out[i] = 12345.0;
+    int (*fn)(const hs_solution *, size_t, const double *, double *) =
+        k == 0 ? hs_eval_Bx : k == 1 ? hs_eval_slip : k == 2 ? hs_eval_work : hs_eval_pressure;
+    const int es = fn(sol, n, x, out);
+    require(known(es));
+    for (size_t i = 0; i < n; ++i) require(es == HS_OK ? std::isfinite(out[i]) : out[i] == 12345.0);
+  }
+  if (r.byte() & 1) {
+    double e[2] = {-1, -1};
+    const int es = hs_solution_energy(sol, e);
+    require(known(es));
+    if (es == HS_OK) require(e[0] >= 0 && e[1] >= 0);
+  }
+  hs_solution_free(sol);
+  return 0;
+}
