@@ -211,3 +211,35 @@ TEST_CASE("bad reference inputs are rejected with codes") {
   CHECK_THROWS_AS(ref::solution(t, 0), core::error);
   CHECK_THROWS_AS(ref::solution(t, ref::max_digits() + 1), core::error);
 }
+
+TEST_CASE("stability sweeps towards every failure region: double within its bound of the reference") {
+  // |b - b_ref| <= 8 eps a, and |d - d_ref| <= 8 eps a + 16 eps d_ref: a slip
+  // zone that is itself a small difference of the inputs (near the regime
+  // boundary) is only defined to absolute accuracy eps a by them.
+  const double eps = 2.220446049250313e-16;
+  struct Case { double q, s; const char *what; };
+  std::vector<Case> cases;
+  for (double d = 1e-1; d >= 1e-15; d /= 10) cases.push_back({d * (2 - d), 0.0, "tiny slip zone (Q only)"});
+  for (double omq = 1e-3; omq >= 1e-15; omq /= 100) cases.push_back({1 - omq, 0.0, "near sliding (Q only)"});
+  for (double q : {0.01, 0.3, 0.75, 0.9, 0.999}) {
+    const double sb = boundary_s(q);
+    for (double rel : {-1e-12, -1e-15, 1e-15, 1e-12, 1e-9, 1e-6}) cases.push_back({q, sb * (1 + rel), "regime boundary"});
+    for (double ds : {0.1, 1.0, 4.0, 8.0}) cases.push_back({q, sb + ds, "towards k -> 1 (large sigma)"});
+  }
+  for (const auto &c : cases) {
+    CAPTURE(c.what);
+    CAPTURE(c.q);
+    CAPTURE(c.s);
+    const auto dsol = solve_double(c.q, c.s);
+    CHECK(std::isfinite(dsol.b1()));
+    CHECK(std::isfinite(dsol.b2()));
+    const ref::solution rsol(text(c.q, c.s), 30);
+    CHECK(rsol.regime() == int(dsol.reg));
+    const double b1 = to_double(rsol.value(ref::quantity::b1).text), b2 = to_double(rsol.value(ref::quantity::b2).text);
+    const double d1 = to_double(rsol.value(ref::quantity::d1).text), d2 = to_double(rsol.value(ref::quantity::d2).text);
+    CHECK(std::abs(dsol.b1() - b1) <= 8 * eps);
+    CHECK(std::abs(dsol.b2() - b2) <= 8 * eps);
+    CHECK(std::abs(dsol.d1() - d1) <= 8 * eps + 16 * eps * d1);
+    CHECK(std::abs(dsol.d2() - d2) <= 8 * eps + 16 * eps * d2);
+  }
+}
