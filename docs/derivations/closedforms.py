@@ -10,7 +10,9 @@ def params(b1, e, f=None):
     p['om1'] = 1 - b1            # 1-b1  (exact if b1 is a double close to 1)
     p['op1'] = 1 + b1
     p['op2'] = (1 - b1) + e      # 1+b2 = (1-b1)+(b1+b2)  : sum of positives
-    p['om2'] = p['op1'] - e      # 1-b2 = (1+b1)-(b1+b2): accurate in the corner b1->-1, b2->1
+    # 1-b2 = 1+b1-e with a single rounding: for e>=1/2, 1-e is exact (Sterbenz); for e<1/2 the
+    # dangerous case (b2 -> 1) has b1 < -1/2, where 1+b1 is exact.
+    p['om2'] = ((1 - e) + b1) if e >= mp.mpf(0.5) else (p['op1'] - e)
     p['d12'] = 2*b1 - e          # b1-b2 formed from the inputs (one rounding)
     p['P'] = 2*e                 # (a-d)(b-c) = 2(b1+b2)
     p['Q'] = p['op1']*p['op2']   # (a-c)(b-d) = (1+b1)(1+b2)
@@ -69,7 +71,8 @@ def A1(p, B):
     b1, b2, e = p['b1'], p['b2'], p['e']
     if p['d12'] >= 0:
         return _A1k(b1, b2, p['d12'], e, p['om1'], p['op2'], p['om2'], B['RF'], B['RDb'], B['RJc'])
-    S = mp.mpf(3)/8*(b1**2+b2**2) - b1*b2/4 - mp.mpf(1)/2
+    # S = 3/8 (b1^2+b2^2) - b1 b2/4 - 1/2 = (b1-b2)^2/4 + ((b1+b2)^2-4)/8, with (b1+b2)-2 = -(om1+om2)
+    S = p['d12']**2/4 - (p['om1']+p['om2'])*(2+e)/8
     return -_A1k(b2, b1, -p['d12'], e, p['om2'], p['op1'], p['om1'], B['RF'], B['RDb'], _RJc2(p,B)) - mp.pi*S
 
 def G(p, B):

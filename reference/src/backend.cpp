@@ -36,7 +36,18 @@ std::unique_ptr<tier_solution> solve_at(unsigned D, const text_scene &sc, int ma
   throw core::error(core::status::bad_option, "no such precision tier");
 }
 
+namespace {
+// MPFR keeps per-thread caches (constants, exp/log tables) that it frees only
+// when asked. Every public entry point releases the calling thread's caches
+// on exit, so that threads the user creates and destroys do not leak them
+// (recomputing a constant costs microseconds against a solve's milliseconds).
+struct release_mpfr_thread_caches {
+  ~release_mpfr_thread_caches() { mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE); }
+};
+}  // namespace
+
 solution::solution(const text_scene &sc, int digits, int max_iterations) : digits_(digits) {
+  release_mpfr_thread_caches on_exit;
   if (digits < 1 || digits > max_digits())
     throw core::error(core::status::bad_option, "digits out of range (1 .. hs_ref_max_digits())");
   const auto &t = tiers();
@@ -52,6 +63,7 @@ using big = boost::multiprecision::number<boost::multiprecision::mpfr_float_back
 }
 
 int agreeing_digits(const std::string &a, const std::string &b, int cap) {
+  release_mpfr_thread_caches on_exit;
   // Largest k <= cap with |a - b| <= 0.5 ulp of b at k significant digits,
   // i.e. a is b correctly rounded to k digits (up to a tie).
   const big x(a), y(b);
@@ -69,10 +81,12 @@ certified solution::certify(const std::string &work, const std::string &check) c
 }
 
 certified solution::value(quantity q) const {
+  release_mpfr_thread_caches on_exit;
   return certify(work_->value(q, digits_), check_->value(q, int(check_->digits10())));
 }
 
 certified solution::eval(point_eval what, const std::string &x) const {
+  release_mpfr_thread_caches on_exit;
   return certify(work_->eval(what, x, digits_), check_->eval(what, x, int(check_->digits10())));
 }
 
