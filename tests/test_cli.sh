@@ -43,5 +43,9 @@ if command -v python3 >/dev/null 2>&1; then
 fi
 "$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --shard 4/3 >/dev/null 2>&1 && ko "bad shard accepted" || ok
 
+# bitwise reproducible run to run (separate processes)
+r1=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json); r2=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json)
+[ "$r1" = "$r2" ] && ok || ko "run-to-run reproducibility"
+
 echo "cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]
