@@ -309,7 +309,13 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
   using W = typename refine_type<T>::type;
   auto finish = [&](opposite_state<T> x, int n) -> opposite_result<T> {
     if (!std::is_same<W, T>::value) x = refine_opposite<T, W>(q, s, x);
-    return {1 - x.d1, 1 - x.d2, x.d1, x.d2, x.e, n};
+    const T beta1 = 1 - x.d1;
+    T beta2 = 1 - x.d2;
+    // A stick zone narrower than the rounding of beta1, beta2 (large sigma)
+    // must not come out with -b2 > b1: clamp it to zero width in the betas
+    // (its true width stays in x.e).
+    if (beta1 + beta2 < 0) beta2 = -beta1;
+    return {beta1, beta2, x.d1, x.d2, x.e, n};
   };
   if (opposite_newton<T, Basis>(q, s, best, max_iterations, st, its)) return finish(st, its);
   // Continuation: s_k = s_b + (s - s_b) 2^(k-K); d1 grows linearly from 0.
