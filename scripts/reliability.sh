@@ -40,8 +40,14 @@ for t in solve ref; do
   work="$(mktemp -d)"
   cp tests/fuzz/corpus/$t/* "$work/"
   # crash inputs are written to tests/fuzz/crashes/: copy them into corpus/$t to keep them as regression tests
-  build-fuzz/tests/fuzz/fuzz_$t "$work" -max_total_time="${HS_FUZZ_SECONDS:-25}" -max_len=256 -timeout=20 \
-    -rss_limit_mb=4096 -artifact_prefix=tests/fuzz/crashes/$t- -print_final_stats=1 2>&1 | tail -3
-  rm -rf "$work"
+  log="$(mktemp)"
+  if ! build-fuzz/tests/fuzz/fuzz_$t "$work" -max_total_time="${HS_FUZZ_SECONDS:-25}" -max_len=256 -timeout=20 \
+      -rss_limit_mb=4096 -artifact_prefix=tests/fuzz/crashes/$t- -print_final_stats=1 >"$log" 2>&1; then
+    tail -40 "$log"
+    echo "fuzz_$t found a failing input in tests/fuzz/crashes/ (add it to tests/fuzz/corpus/$t/)"
+    exit 1
+  fi
+  grep -E "stat::number_of_executed_units|stat::new_units_added" "$log" | sed "s/^/fuzz_$t: /"
+  rm -rf "$work" "$log"
 done
 echo "reliability: all stages passed"
