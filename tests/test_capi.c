@@ -28,6 +28,15 @@ static hs_scene scene_qs(double q, double s) {
   return sc;
 }
 
+static double hertz_p(double x, void *user) {
+  const double a = *(const double *)user;
+  return x > -a && x < a ? sqrt((a - x) * (a + x)) / a : 0.0;
+}
+static double negative_p(double x, void *user) {
+  (void)user;
+  return x < 0.2 ? sqrt(1 - x * x) : -1.0;
+}
+
 static int solve_status(hs_scene sc) {
   hs_solution *sol = NULL;
   int st = hs_solve(&sc, NULL, &sol);
@@ -165,6 +174,99 @@ int main(void) {
     CHECK(hs_scene_from_hertz_loads(P, R, E, 0, 0, 0, &sc) == HS_ERR_BAD_FRICTION);
     CHECK(hs_scene_from_hertz_loads(P, NAN, E, f, 0, 0, &sc) == HS_ERR_NOT_FINITE);
     CHECK(hs_scene_from_hertz_loads(P, R, E, f, 0, 0, NULL) == HS_ERR_NULL_POINTER);
+  }
+
+  /* general pressures through hs_solve_geometry */
+  {
+    hs_scene sc = scene_qs(0.3, 2.0);
+    hs_geometry g;
+    hs_solution *hz = NULL, *sol = NULL;
+    hs_summary a, b;
+    double xs[41], ps[41], unit = 1.0, x1[1] = {0.95}, B1[1], B2[1];
+    int i;
+    CHECK(hs_geometry_default(&g) == HS_OK && g.kind == HS_GEOMETRY_HERTZ);
+    CHECK(hs_solve(&sc, NULL, &hz) == HS_OK);
+    a.struct_size = sizeof a;
+    b.struct_size = sizeof b;
+    hs_solution_summary(hz, &a);
+    CHECK(a.quadrature_order == 0);
+    /* power law n = 2 and the flat punch with b_f = 0 are Hertz */
+    g.kind = HS_GEOMETRY_POWER_LAW;
+    g.exponent = 2.0;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_OK);
+    CHECK(hs_solution_summary(sol, &b) == HS_OK);
+    CHECK(b.regime == a.regime && fabs(b.b1 - a.b1) < 1e-13 && fabs(b.b2 - a.b2) < 1e-13 && b.quadrature_order > 0);
+    CHECK(hs_eval_Bx(sol, 1, x1, B1) == HS_OK && hs_eval_Bx(hz, 1, x1, B2) == HS_OK && fabs(B1[0] - B2[0]) < 1e-10);
+    hs_solution_free(sol);
+    g.kind = HS_GEOMETRY_FLAT_ROUNDED;
+    g.flat_over_a = 0.0;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_OK);
+    hs_solution_summary(sol, &b);
+    CHECK(fabs(b.b1 - a.b1) < 1e-13 && fabs(b.b2 - a.b2) < 1e-13);
+    hs_solution_free(sol);
+    /* a real flat punch: shear only gives b1 = b2 and the stick zone shrinks with Q */
+    g.flat_over_a = 0.6;
+    sc = scene_qs(0.5, 0.0);
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_OK);
+    hs_solution_summary(sol, &b);
+    CHECK(b.regime == HS_REGIME_SAME_SIGN && fabs(b.b1 - b.b2) < 1e-14 && b.b1 > 0.6 && b.b1 < 1);
+    hs_solution_free(sol);
+    /* callback and samples of the Hertz pressure */
+    sc = scene_qs(0.3, 2.0);
+    g.kind = HS_GEOMETRY_CALLBACK;
+    g.pressure = hertz_p;
+    g.user = &unit;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_OK);
+    hs_solution_summary(sol, &b);
+    CHECK(fabs(b.b1 - a.b1) < 1e-12 && fabs(b.b2 - a.b2) < 1e-12 && fabs(b.p0 - 1) < 1e-13);
+    hs_solution_free(sol);
+    for (i = 0; i < 41; ++i) {
+      xs[i] = -cos(kPi * i / 40.0);
+      ps[i] = hertz_p(xs[i], &unit);
+    }
+    xs[0] = -1;
+    xs[40] = 1;
+    g.kind = HS_GEOMETRY_SAMPLES;
+    g.n_samples = 41;
+    g.sample_x = xs;
+    g.sample_p = ps;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_OK);
+    hs_solution_summary(sol, &b);
+    CHECK(fabs(b.b1 - a.b1) < 1e-10 && fabs(b.b2 - a.b2) < 1e-10);
+    hs_solution_free(sol);
+    /* bad geometries */
+    g.sample_x = NULL;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_NULL_POINTER);
+    g.sample_x = xs;
+    ps[20] = -1;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
+    g.n_samples = 3;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
+    g.kind = HS_GEOMETRY_CALLBACK;
+    g.pressure = negative_p;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
+    g.pressure = NULL;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_NULL_POINTER);
+    g.kind = HS_GEOMETRY_FLAT_ROUNDED;
+    g.flat_over_a = 1.0;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
+    g.flat_over_a = NAN;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_NOT_FINITE);
+    g.kind = HS_GEOMETRY_POWER_LAW;
+    g.exponent = 1.0;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
+    g.kind = 42;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
+    g.struct_size = 0;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_STRUCT_SIZE);
+    CHECK(hs_solve_geometry(&sc, NULL, NULL, &sol) == HS_ERR_NULL_POINTER);
+    sc.Q_over_fP = 1.0;
+    hs_geometry_default(&g);
+    g.kind = HS_GEOMETRY_POWER_LAW;
+    g.exponent = 3;
+    CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_GROSS_SLIDING);
+    CHECK(hs_geometry_default(NULL) == HS_ERR_NULL_POINTER);
+    hs_solution_free(hz);
   }
 
   /* reference backend */

@@ -43,6 +43,21 @@ if command -v python3 >/dev/null 2>&1; then
 fi
 "$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --shard 4/3 >/dev/null 2>&1 && ko "bad shard accepted" || ok
 
+# other geometries
+out=$("$cli" solve --geometry flat-rounded --flat-over-a 0.5 --Q-over-fP 0.4 --sigma-over-fp0 2) && echo "$out" | grep -q "regime: opposite-sign" && echo "$out" | grep -q "Gauss-Legendre order" && ok || ko "flat-rounded"
+js=$("$cli" solve --geometry power-law --exponent 2 --json) && echo "$js" | grep -q '"b1": 0.83210678118654' && ok || ko "power law n=2 is Hertz"
+"$cli" solve --geometry flat-rounded --P 1000 --R 0.01 --E-star 1.15e11 --f 0.6 --Q 300 --sigma 2e6 --flat-width 0.0005 --json >/dev/null && ok || ko "dimensional flat-rounded"
+tmp=$(mktemp); python3 -c "
+import math
+for i in range(61):
+    x=-math.cos(math.pi*i/60); print(x, math.sqrt(max(0.0,1-x*x)))" > "$tmp"
+js=$("$cli" solve --geometry samples --pressure-file "$tmp" --json) && echo "$js" | grep -q '"b1": 0.83210678' && ok || ko "samples of Hertz"
+rm -f "$tmp"
+for bad in "--geometry flat-rounded --flat-over-a 1" "--geometry power-law --exponent 0.5" "--geometry samples" "--geometry samples --pressure-file /nonexistent" "--exponent 3" "--geometry flat-rounded --digits 30"; do
+  err=$("$cli" solve $bad 2>&1 >/dev/null); rc=$?
+  if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ]; then ok; else ko "bad geometry input '$bad' (rc=$rc): $err"; fi
+done
+
 # bitwise reproducible run to run (separate processes)
 r1=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json); r2=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json)
 [ "$r1" = "$r2" ] && ok || ko "run-to-run reproducibility"

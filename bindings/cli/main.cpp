@@ -21,12 +21,16 @@ const char *kUsage =
     "  Solves a half-plane partial-slip contact (constant normal load, shear\n"
     "  force Q, differential bulk tension sigma). Conventions: docs/conventions.md.\n"
     "options (dimensionless; a = p0 = f = E* = 1 unless given):\n"
-    "  --geometry hertz        contact geometry (only hertz so far)\n"
+    "  --geometry G            hertz (default), flat-rounded, power-law, samples\n"
+    "  --flat-over-a B         flat-rounded: flat half-width over contact half-width (default 0.5)\n"
+    "  --exponent N            power-law: profile g = A|x|^N, N > 1 (default 2)\n"
+    "  --pressure-file F       samples: two columns x p, sqrt edge behaviour, x in [-a, a]\n"
     "  --Q-over-fP X           shear force ratio Q/(fP), |X| < 1   (default 0.5)\n"
     "  --sigma-over-fp0 Y      bulk tension ratio sigma/(f p0)      (default 0.5)\n"
     "  --a A --p0 P0 --f F --E-star E   scales\n"
     "options (dimensional Hertz; all six together):\n"
     "  --P P --R R --E-star E --f F --Q Q --sigma S\n"
+    "  (flat-rounded: the same with R the corner radius, plus --flat-width b_f)\n"
     "output:\n"
     "  --points N              also tabulate B_x, slip h and work W at N points per slip zone\n"
     "  --json                  one JSON object, numbers with 17 significant digits\n"
@@ -94,8 +98,11 @@ Args parse_args(int argc, char **argv, int first, const std::vector<std::string>
     if (args.count(a)) die("option " + a + " given twice");
     args[a] = argv[++i];
   }
-  if (args.count("--geometry") && args["--geometry"] != "hertz")
-    die("bad value for --geometry: '" + args["--geometry"] + "' (known: hertz)");
+  if (args.count("--geometry")) {
+    const std::string g = args["--geometry"];
+    if (g != "hertz" && g != "flat-rounded" && g != "power-law" && g != "samples")
+      die("bad value for --geometry: '" + g + "' (known: hertz, flat-rounded, power-law, samples)");
+  }
   return args;
 }
 
@@ -118,7 +125,31 @@ std::string json_str(const std::string &s) { return "\"" + s + "\""; }
 
 // ---------------------------------------------------------------- solve
 const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
-                                             "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits"};
+                                             "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
+                                             "--flat-over-a", "--flat-width", "--exponent", "--pressure-file"};
+
+// Pressure samples: two columns x p per line ('#' comments allowed).
+void read_samples(const std::string &path, std::vector<double> &xs, std::vector<double> &ps) {
+  FILE *f = std::fopen(path.c_str(), "r");
+  if (!f) die("bad value for --pressure-file: cannot open '" + path + "'");
+  char line[512];
+  int ln = 0;
+  while (std::fgets(line, sizeof line, f)) {
+    ++ln;
+    char *p = line;
+    while (*p == ' ' || *p == '\t') ++p;
+    if (*p == '#' || *p == '\n' || *p == '\0') continue;
+    char *end = nullptr;
+    const double x = std::strtod(p, &end);
+    if (end == p) { std::fclose(f); die("bad value for --pressure-file: line " + std::to_string(ln) + " is not 'x p'"); }
+    char *end2 = nullptr;
+    const double v = std::strtod(end, &end2);
+    if (end2 == end) { std::fclose(f); die("bad value for --pressure-file: line " + std::to_string(ln) + " is not 'x p'"); }
+    xs.push_back(x);
+    ps.push_back(v);
+  }
+  std::fclose(f);
+}
 
 bool is_dimensional(const Args &args) {
   return args.count("--P") || args.count("--R") || args.count("--Q") || args.count("--sigma");
@@ -213,12 +244,72 @@ int cmd_solve(int argc, char **argv) {
   auto get = [&](const char *k, double def) {
     return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
   };
-  if (args.count("--digits"))
+  const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
+  if (args.count("--digits")) {
+    if (geometry != "hertz") die("--digits: the reference backend supports --geometry hertz only (so far)");
     return solve_reference(args, parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()));
+  }
   const bool json = args.count("--json") > 0;
+  hs_geometry geo;
+  hs_geometry_default(&geo);
+  std::vector<double> sx, sp;
+  if (geometry == "flat-rounded") {
+    geo.kind = HS_GEOMETRY_FLAT_ROUNDED;
+    if (args.count("--flat-over-a")) geo.flat_over_a = get("--flat-over-a", 0.5);
+    if (!(geo.flat_over_a >= 0 && geo.flat_over_a < 1)) die("bad value for --flat-over-a: need 0 <= b_f/a < 1");
+  } else if (geometry == "power-law") {
+    geo.kind = HS_GEOMETRY_POWER_LAW;
+    geo.exponent = get("--exponent", 2.0);
+    if (!(geo.exponent > 1 && geo.exponent < 1000)) die("bad value for --exponent: need 1 < n < 1000");
+  } else if (geometry == "samples") {
+    geo.kind = HS_GEOMETRY_SAMPLES;
+    if (!args.count("--pressure-file")) die("--geometry samples needs --pressure-file F (two columns x p)");
+    read_samples(args.at("--pressure-file"), sx, sp);
+    geo.n_samples = sx.size();
+    geo.sample_x = sx.data();
+    geo.sample_p = sp.data();
+  }
+  for (const char *k : {"--flat-over-a", "--flat-width"})
+    if (args.count(k) && geometry != "flat-rounded") die(std::string(k) + " needs --geometry flat-rounded");
+  if (args.count("--exponent") && geometry != "power-law") die("--exponent needs --geometry power-law");
+  if (args.count("--pressure-file") && geometry != "samples") die("--pressure-file needs --geometry samples");
   hs_scene scene;
   hs_scene_default(&scene);
-  if (is_dimensional(args)) {
+  if (geometry == "flat-rounded" && is_dimensional(args)) {
+    // dimensional flat punch: P, corner radius R, E*, f, Q, sigma and the flat half-width b_f;
+    // a from a^2 (pi - 2 phi0 - sin 2 phi0) = 2 A R P with A = 2/E*, b_f = a sin(phi0)
+    check_dimensional(args);
+    if (!args.count("--flat-width")) die("dimensional flat-rounded input needs --flat-width (b_f)");
+    if (args.count("--flat-over-a")) die("--flat-over-a cannot be combined with dimensional input (give --flat-width)");
+    const double P = get("--P", 0), R = get("--R", 0), E = get("--E-star", 0), f = get("--f", 0);
+    const double Q = get("--Q", 0), sg = get("--sigma", 0), bf = get("--flat-width", 0);
+    if (!(P > 0)) die("bad value for --P: must be > 0");
+    if (!(R > 0)) die("bad value for --R: must be > 0");
+    if (!(E > 0)) die("bad value for --E-star: must be > 0");
+    if (!(f > 0)) die("bad value for --f: must be > 0");
+    if (!(bf >= 0)) die("bad value for --flat-width: must be >= 0");
+    if (!(std::fabs(Q) < f * P)) die("bad value for --Q: |Q| >= fP means gross sliding");
+    // solve a^2 g(b_f/a) = 4 R P / E*, g(beta) = pi - 2 asin(beta) - sin(2 asin(beta)), by bisection on beta
+    const double target = 4 * R * P / E;
+    auto g = [](double beta) { const double t = std::asin(beta); return M_PI - 2 * t - std::sin(2 * t); };
+    double a = std::sqrt(target / M_PI);  // b_f = 0
+    if (bf > 0) {
+      double lo = 0, hi = 1;  // beta = bf/a; bf^2 g(beta)/beta^2 decreases in beta
+      for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (bf * bf * g(mid) / (mid * mid) > target) lo = mid; else hi = mid;
+      }
+      a = bf / (0.5 * (lo + hi));
+    }
+    geo.flat_over_a = bf / a;
+    scene.a = a;
+    scene.p0 = 2 * P / (M_PI * a);
+    scene.f = f;
+    scene.E_star = E;
+    scene.Q_over_fP = Q / (f * P);
+    scene.sigma_over_fp0 = sg / (f * scene.p0);
+  } else if (is_dimensional(args)) {
+    if (geometry != "hertz") die("dimensional input (--P --R ...) is available for hertz and flat-rounded");
     check_dimensional(args);
     const double P = get("--P", 0), R = get("--R", 0), E = get("--E-star", 0), f = get("--f", 0);
     const double Q = get("--Q", 0), sg = get("--sigma", 0);
@@ -243,7 +334,7 @@ int cmd_solve(int argc, char **argv) {
   }
   const int npts = args.count("--points") ? parse_int("--points", args.at("--points"), 0, 100000) : 0;
   hs_solution *sol = nullptr;
-  check(hs_solve(&scene, nullptr, &sol), "solve");
+  check(hs_solve_geometry(&scene, &geo, nullptr, &sol), "solve");
   hs_summary sm;
   sm.struct_size = sizeof sm;
   check(hs_solution_summary(sol, &sm), "summary");
@@ -266,18 +357,19 @@ int cmd_solve(int argc, char **argv) {
     check(hs_eval_slip(sol, xs.size(), xs.data(), h.data()), "slip");
     check(hs_eval_work(sol, xs.size(), xs.data(), W.data()), "work");
   }
-  const double P = M_PI * scene.a * scene.p0 / 2;
+  const double P = M_PI * sm.a * sm.p0 / 2;
 
   if (json) {
-    std::printf("{\"geometry\": \"hertz\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "
+    std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "
                 "\"E_star\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, "
                 "\"d1\": %s, \"d2\": %s, \"slip_dir1\": %d, \"slip_dir2\": %d, \"energy1\": %s, "
                 "\"energy2\": %s, \"iterations\": %d",
-                regime_name(sm.regime), num(sm.a).c_str(), num(scene.p0).c_str(), num(P).c_str(),
+                geometry.c_str(), regime_name(sm.regime), num(sm.a).c_str(), num(sm.p0).c_str(), num(P).c_str(),
                 num(scene.f).c_str(), num(scene.E_star).c_str(), num(scene.Q_over_fP).c_str(),
                 num(scene.sigma_over_fp0).c_str(), num(sm.b1).c_str(), num(sm.b2).c_str(), num(sm.d1).c_str(),
                 num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, num(energy[0]).c_str(), num(energy[1]).c_str(),
                 sm.iterations);
+    std::printf(", \"quadrature_order\": %d", sm.quadrature_order);
     if (!xs.empty()) {
       std::printf(", \"points\": [");
       for (size_t i = 0; i < xs.size(); ++i)
@@ -287,8 +379,11 @@ int cmd_solve(int argc, char **argv) {
     }
     std::printf("}\n");
   } else {
-    std::printf("halfslip %s: Hertz contact, constant normal load\n", hs_version_string());
-    std::printf("  a = %.10g, p0 = %.10g, P = %.10g, f = %.10g, E* = %.10g\n", sm.a, scene.p0, P, scene.f,
+    std::printf("halfslip %s: %s contact, constant normal load\n", hs_version_string(), geometry.c_str());
+    if (geometry == "flat-rounded") std::printf("  flat half-width b_f/a = %.10g\n", geo.flat_over_a);
+    if (geometry == "power-law") std::printf("  profile exponent n = %.10g\n", geo.exponent);
+    if (geometry == "samples") std::printf("  %zu pressure samples\n", geo.n_samples);
+    std::printf("  a = %.10g, p0 = %.10g, P = %.10g, f = %.10g, E* = %.10g\n", sm.a, sm.p0, P, scene.f,
                 scene.E_star);
     std::printf("  Q/fP = %.10g, sigma/(f p0) = %.10g\n", scene.Q_over_fP, scene.sigma_over_fp0);
     std::printf("regime: %s\n", regime_name(sm.regime));
@@ -298,6 +393,7 @@ int cmd_solve(int argc, char **argv) {
     std::printf("energy dissipated (monotonic loading, per unit length):\n");
     std::printf("  zone 1: %.10g, zone 2: %.10g, total: %.10g\n", energy[0], energy[1], energy[0] + energy[1]);
     if (sm.iterations) std::printf("  (Newton iterations: %d)\n", sm.iterations);
+    if (sm.quadrature_order) std::printf("  (quadrature: Gauss-Legendre order %d per panel)\n", sm.quadrature_order);
     if (!xs.empty()) {
       std::printf("%22s %22s %22s %22s\n", "x", "B_x", "h", "W");
       for (size_t i = 0; i < xs.size(); ++i)

@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <vector>
 
+#include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/reference/backend.hpp"
 
@@ -31,7 +33,12 @@ static_assert(HS_ERR_OVERFLOW == int(core::status::overflow), "status table");
 static_assert(HS_ERR_BAD_NUMBER == int(core::status::bad_number), "status table");
 
 struct hs_solution {
-  core::hertz_solution<double> sol;
+  // exactly one of hertz / general is set; the general solution refers to
+  // the pressure model, which the handle owns
+  std::unique_ptr<core::hertz_solution<double>> hertz;
+  std::shared_ptr<const core::pressure_model<double>> model;
+  std::unique_ptr<core::general_solution<double>> general;
+  template <class F> auto visit(F &&f) const { return hertz ? f(*hertz) : f(*general); }
 };
 
 struct hs_ref_solution {
@@ -81,14 +88,14 @@ int eval_points(const hs_solution *sol, size_t n, const double *x, double *out, 
     require(sol != nullptr, core::status::null_pointer, "solution is NULL");
     if (n == 0) return;
     require(x != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
-    const double a = sol->sol.scene.a;
+    const double a = sol->visit([](const auto &s) { return double(s.scene.a); });
     for (size_t i = 0; i < n; ++i) {
       require(std::isfinite(x[i]), core::status::not_finite, "evaluation point is NaN or infinite");
       require(std::fabs(x[i]) <= a, core::status::point_outside, "evaluation point outside |x| <= a");
     }
     std::vector<double> tmp(n);
     for (size_t i = 0; i < n; ++i) {
-      tmp[i] = fn(sol->sol, x[i]);
+      tmp[i] = sol->visit([&](const auto &s) { return fn(s, x[i]); });
       require(std::isfinite(tmp[i]), core::status::overflow, "result not representable");
     }
     std::memcpy(out, tmp.data(), n * sizeof(double));
@@ -205,8 +212,9 @@ int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
       o.max_iterations = opts->max_iterations;
       o.rtol = opts->rtol;
     }
-    auto *h = new hs_solution{core::solve_hertz<double>(sc, o)};
-    *out = h;
+    auto h = std::make_unique<hs_solution>();
+    h->hertz = std::make_unique<core::hertz_solution<double>>(core::solve_hertz<double>(sc, o));
+    *out = h.release();
   });
 }
 
@@ -216,19 +224,23 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
   return guard([&] {
     require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
     require(out->struct_size == sizeof(hs_summary), core::status::struct_size, "summary struct_size");
-    const auto &s = sol->sol;
     hs_summary r;
     std::memset(&r, 0, sizeof r);
     r.struct_size = sizeof(hs_summary);
-    r.regime = int(s.reg);
-    r.slip_dir1 = s.dir1();
-    r.slip_dir2 = s.dir2();
-    r.iterations = s.iterations;
-    r.a = s.scene.a;
-    r.b1 = s.b1();
-    r.b2 = s.b2();
-    r.d1 = s.d1();
-    r.d2 = s.d2();
+    sol->visit([&](const auto &s) {
+      r.regime = int(s.reg);
+      r.slip_dir1 = s.dir1();
+      r.slip_dir2 = s.dir2();
+      r.iterations = s.iterations;
+      r.a = s.scene.a;
+      r.b1 = s.b1();
+      r.b2 = s.b2();
+      r.d1 = s.d1();
+      r.d2 = s.d2();
+      r.p0 = s.scene.p0;
+      return 0;
+    });
+    r.quadrature_order = sol->general ? sol->general->order : 0;
     *out = r;
   });
 }
@@ -236,25 +248,116 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
 int hs_solution_energy(const hs_solution *sol, double energy[2]) {
   return guard([&] {
     require(sol != nullptr && energy != nullptr, core::status::null_pointer, "NULL argument");
-    const double e1 = sol->sol.energy(1), e2 = sol->sol.energy(2);
+    const double e1 = sol->visit([](const auto &s) { return double(s.energy(1)); });
+    const double e2 = sol->visit([](const auto &s) { return double(s.energy(2)); });
     require(std::isfinite(e1) && std::isfinite(e2), core::status::overflow, "energy not representable");
     energy[0] = e1;
     energy[1] = e2;
   });
 }
 
+int hs_geometry_default(hs_geometry *geometry) {
+  if (!geometry) return HS_ERR_NULL_POINTER;
+  hs_geometry g;
+  std::memset(&g, 0, sizeof g);
+  g.struct_size = sizeof(hs_geometry);
+  g.kind = HS_GEOMETRY_HERTZ;
+  g.flat_over_a = 0.5;
+  g.exponent = 2.0;
+  *geometry = g;
+  return HS_OK;
+}
+
+int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const hs_options *opts,
+                      hs_solution **out) {
+  return guard([&] {
+    require(out != nullptr && scene != nullptr && geometry != nullptr, core::status::null_pointer, "NULL argument");
+    require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry struct_size");
+    if (geometry->kind == HS_GEOMETRY_HERTZ) {
+      hs_scene h = *scene;
+      h.geometry = HS_GEOMETRY_HERTZ;
+      const int st = hs_solve(&h, opts, out);
+      if (st != HS_OK) throw core::error(core::status(st), "hertz");
+      return;
+    }
+    require(scene->struct_size == sizeof(hs_scene), core::status::struct_size, "scene struct_size");
+    core::general_scene<double> sc;
+    sc.a = scene->a;
+    sc.p0 = scene->p0;
+    sc.f = scene->f;
+    sc.Estar = scene->E_star;
+    sc.q = scene->Q_over_fP;
+    sc.s = scene->sigma_over_fp0;
+    require(std::isfinite(sc.a) && sc.a > 0, std::isfinite(sc.a) ? core::status::bad_size : core::status::not_finite,
+            "contact half-width a must be finite and > 0");
+    core::general_options<double> o;
+    if (opts) {
+      require(opts->struct_size == sizeof(hs_options), core::status::struct_size, "options struct_size");
+      require(opts->max_iterations >= 1 && opts->max_iterations <= 100000, core::status::bad_option,
+              "max_iterations out of range");
+      require(std::isfinite(opts->rtol) && (opts->rtol == 0 || (opts->rtol >= 1e-15 && opts->rtol <= 1e-2)),
+              core::status::bad_option, "rtol out of range");
+      o.max_iterations = opts->max_iterations;
+      o.rtol = opts->rtol;
+    }
+    auto h = std::make_unique<hs_solution>();
+    switch (geometry->kind) {
+      case HS_GEOMETRY_FLAT_ROUNDED:
+        require(std::isfinite(geometry->flat_over_a), core::status::not_finite, "flat_over_a is not finite");
+        h->model = std::make_shared<core::flat_rounded_pressure<double>>(geometry->flat_over_a);
+        break;
+      case HS_GEOMETRY_POWER_LAW:
+        require(std::isfinite(geometry->exponent), core::status::not_finite, "exponent is not finite");
+        h->model = std::make_shared<core::power_law_pressure<double>>(geometry->exponent);
+        break;
+      case HS_GEOMETRY_SAMPLES: {
+        require(geometry->sample_x != nullptr && geometry->sample_p != nullptr, core::status::null_pointer,
+                "sample arrays are NULL");
+        require(geometry->n_samples >= 6 && geometry->n_samples <= 10000000, core::status::bad_geometry,
+                "need at least 6 pressure samples");
+        std::vector<double> xs(geometry->sample_x, geometry->sample_x + geometry->n_samples);
+        std::vector<double> ps(geometry->sample_p, geometry->sample_p + geometry->n_samples);
+        for (size_t i = 0; i < xs.size(); ++i)
+          require(std::isfinite(xs[i]) && std::isfinite(ps[i]), core::status::not_finite, "sample is not finite");
+        auto m = std::make_shared<core::sampled_pressure<double>>(xs, ps, sc.a);
+        sc.p0 = m->p0();
+        h->model = m;
+        break;
+      }
+      case HS_GEOMETRY_CALLBACK: {
+        require(geometry->pressure != nullptr, core::status::null_pointer, "pressure callback is NULL");
+        double (*fn)(double, void *) = geometry->pressure;
+        void *user = geometry->user;
+        auto m = std::make_shared<core::callback_pressure<double>>(
+            [fn, user](const double &x) {
+              const double v = fn(x, user);
+              if (!std::isfinite(v)) throw core::error(core::status::not_finite, "pressure callback returned NaN/Inf");
+              return v;
+            },
+            sc.a);
+        sc.p0 = m->p0();
+        h->model = m;
+        break;
+      }
+      default:
+        throw core::error(core::status::bad_geometry, "unknown geometry");
+    }
+    h->general = std::make_unique<core::general_solution<double>>(core::solve_general<double>(*h->model, sc, o));
+    *out = h.release();
+  });
+}
+
 int hs_eval_Bx(const hs_solution *sol, size_t n, const double *x, double *out) {
-  return eval_points(sol, n, x, out, [](const core::hertz_solution<double> &s, double v) { return s.Bx(v); });
+  return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.Bx(v)); });
 }
 int hs_eval_slip(const hs_solution *sol, size_t n, const double *x, double *out) {
-  return eval_points(sol, n, x, out, [](const core::hertz_solution<double> &s, double v) { return s.slip(v); });
+  return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.slip(v)); });
 }
 int hs_eval_work(const hs_solution *sol, size_t n, const double *x, double *out) {
-  return eval_points(sol, n, x, out, [](const core::hertz_solution<double> &s, double v) { return s.work(v); });
+  return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.work(v)); });
 }
 int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out) {
-  return eval_points(sol, n, x, out,
-                     [](const core::hertz_solution<double> &s, double v) { return s.pressure(v); });
+  return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.pressure(v)); });
 }
 
 int hs_ref_scene_default(hs_ref_scene *scene) {

@@ -70,7 +70,11 @@ HS_EXPORT const char *hs_version_string(void);
 HS_EXPORT const char *hs_strerror(int status);
 
 /* ---- geometry ----------------------------------------------------------- */
-#define HS_GEOMETRY_HERTZ 1  /* cylinder on flat: p(x) = p0 sqrt(1 - x^2/a^2) */
+#define HS_GEOMETRY_HERTZ        1  /* cylinder on flat: p(x) = p0 sqrt(1 - x^2/a^2) (closed forms) */
+#define HS_GEOMETRY_FLAT_ROUNDED 2  /* flat punch with rounded corners (Ciavarella, Hills & Monno 1998) */
+#define HS_GEOMETRY_POWER_LAW    3  /* symmetric profile g(x) = A |x|^n, n > 1 */
+#define HS_GEOMETRY_SAMPLES      4  /* user pressure samples (x_i, p_i), p ~ sqrt(distance) at both edges */
+#define HS_GEOMETRY_CALLBACK     5  /* user pressure function p(x, user) */
 
 /* ---- regimes -------------------------------------------------------------- */
 #define HS_REGIME_STUCK         0  /* Q = sigma = 0: no slip */
@@ -134,9 +138,39 @@ typedef struct hs_summary {
   double b2;
   double d1;            /* a - b1, to full relative accuracy */
   double d2;            /* a - b2 */
+  double p0;            /* reference pressure 2P/(pi a) actually used */
+  int quadrature_order; /* Gauss-Legendre order per panel (0: closed forms) */
 } hs_summary;
 
 HS_EXPORT int hs_solution_summary(const hs_solution *sol, hs_summary *out);
+
+/* ---- any half-plane pressure --------------------------------------------------
+ * The pressure of a non-Hertz geometry is described by an hs_geometry and
+ * solved by hs_solve_geometry with numerical Cauchy-kernel inversion
+ * (quadrature matched to the end behaviour of each slip zone, order chosen
+ * from opts->rtol and reported in hs_summary.quadrature_order). The scene's
+ * a, f, E*, Q/fP and sigma/(f p0) are used as for Hertz, with
+ * p0 = 2P/(pi a) the reference pressure; for HS_GEOMETRY_SAMPLES and
+ * HS_GEOMETRY_CALLBACK the pressure is given in absolute units, so P and p0
+ * come from it and the scene's p0 is ignored. scene->geometry is ignored:
+ * geometry->kind decides. HS_GEOMETRY_HERTZ here uses the closed forms. */
+typedef struct hs_geometry {
+  size_t struct_size;        /* = sizeof(hs_geometry), set by hs_geometry_default */
+  int kind;                  /* HS_GEOMETRY_* */
+  double flat_over_a;        /* FLAT_ROUNDED: flat half-width b_f over a, in [0, 1) */
+  double exponent;           /* POWER_LAW: n > 1 (n = 2 is Hertz) */
+  size_t n_samples;          /* SAMPLES: number of samples (>= 6), x increasing in [-a, a] */
+  const double *sample_x;    /* SAMPLES: abscissae (copied; need not outlive the call) */
+  const double *sample_p;    /* SAMPLES: pressures >= 0, vanishing like sqrt at both edges */
+  double (*pressure)(double x, void *user);  /* CALLBACK: p(x) on (-a, a); must stay valid, and */
+  void *user;                                /* thread-safe, while the solution is used */
+} hs_geometry;
+
+/* Defaults: Hertz, flat_over_a = 0.5, exponent = 2, no samples, no callback. */
+HS_EXPORT int hs_geometry_default(hs_geometry *geometry);
+
+HS_EXPORT int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const hs_options *opts,
+                                hs_solution **out);
 
 /* Energy dissipated against friction in each slip zone for monotonic loading
  * (per unit length out of plane): E_i = integral over zone i of f p |h| dx.

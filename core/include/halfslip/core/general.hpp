@@ -1,0 +1,685 @@
+// halfslip core: partial slip under constant normal load for a general
+// contact pressure (issue #4): Hertz, flat punch with rounded corners, power
+// law, sampled or callback pressure (pressure.hpp).
+//
+// Canonical frame (as hertz.hpp): a = 1, p_hat = p/p0 (p0 = 2P/(pi a)),
+// f = E* = 1, q = Q/fP >= 0, s = sigma/(f p0) >= 0 after the symmetries
+// (Q, sigma) -> (-Q, -sigma) (all slips flip) and sigma -> -sigma (mirror
+// x -> -x; for an asymmetric pressure the mirrored pressure is used).
+// Zone R = (b1, 1) slips with sign sR, zone L = (-1, -b2) with sL = +1;
+// sR = +1 (same sign) or -1 (opposite sign). Side conditions (docs/conventions.md):
+//   F1 = sL I1L - sR I1R - pi s/4                          = 0
+//   F2 = sL I2L - sR I2R - pi s (b1 - b2)/8 + pi q/2       = 0
+// with I_jZ = int_Z p_hat(t) t^(j-1) / sqrt(|t-b1||t+b2|) dt.
+//
+// Unknowns. One Newton iteration covers both regimes: x1 = +d1 (same sign) or
+// -d1 (opposite sign), d1 = 1 - b1 the length of zone R, and x2 = ln e, e = b1 + b2
+// the stick-zone length (tiny for large s). Since I_jR = O(d1) as d1 -> 0, the
+// residual sR(x1) I_jR(|x1|) is C^1 across x1 = 0 (the regime boundary) and
+// the iteration crosses it freely; the regime is the sign of x1 at the
+// solution. This is the rule "solve same-sign first; if it has no solution
+// with b1 < a, the scene is opposite-sign": a same-sign solution is exactly
+// a root with x1 > 0.
+//
+// Zone integrals: t = b1 + d1 sin^2(theta) (zone R), t = -b2 - d2 sin^2(theta)
+// (zone L) turn both end behaviours (sqrt at the contact edge, 1/sqrt at the
+// stick edge) into the smooth weight 2 d cos^2(theta). The remaining factor
+// 1/sqrt(e + d sin^2 theta) is nearly singular at theta = 0 when e << d:
+// panels are graded geometrically towards 0 from theta ~ sqrt(e/d). Pressure
+// kinks are panel ends; at graded kinks (log-singular p') the panel is mapped
+// polynomially, theta = end + L u^m (m from the precision). Gauss-Legendre
+// of order N per panel, nodes computed in T. N doubles until the residual
+// evaluated with 2N agrees with zero to the tolerance; the order used is
+// reported.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "hertz.hpp"
+#include "numerics.hpp"
+#include "pressure.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+template <class T> struct general_scene {
+  T a{1}, p0{1}, f{1}, Estar{1};  // p0 = 2P/(pi a)
+  T q{0};                          // Q / (f P)
+  T s{0};                          // sigma / (f p0)
+};
+
+template <class T> struct general_options {
+  int max_iterations = 100;  // Newton iterations per solve (continuation: per step)
+  T rtol = T(0);             // 0: full precision of T
+  int max_order = 1024;      // largest Gauss-Legendre order per panel
+};
+
+namespace gdetail {
+
+template <class T> struct panel {
+  T lo, hi;
+  int grade;  // 0: none, -1: graded towards lo, +1: towards hi
+};
+
+// Exponent of the polynomial grading at log-singular kinks: on the graded
+// panel (t - k) ln|t - k| becomes u^(2m-1) ln u, whose Gauss-Legendre error
+// falls like N^(-4m); m is chosen so that N ~ 16 reaches eps.
+template <class T> int grading_power() {
+  const int d10 = std::numeric_limits<T>::digits10;
+  return std::max(4, (d10 * 10 + 47) / 48);
+}
+
+// Panels on [0, pi/2] in theta for a zone of length d next to a stick zone
+// of length e; kinks: theta values with their grading flag.
+template <class T>
+std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<T, bool>> kinks) {
+  using std::asin; using std::sqrt;
+  const T half_pi = pi<T>() / 2;
+  std::vector<std::pair<T, bool>> pts = kinks;
+  pts.push_back({T(0), false});
+  pts.push_back({half_pi, false});
+  // geometric grading towards theta = 0 (singularity at theta ~ i sqrt(e/d))
+  const T epsr = sqrt(e / d);
+  if (epsr < half_pi / 2) {
+    T g = epsr < 1 ? asin(epsr) : epsr;
+    // a panel [g, 2g] is 1.5 of its half-lengths... from the singularity: ratio 2
+    const T tiny = eps<T>() * eps<T>();
+    if (g < tiny) g = tiny;
+    for (; g < half_pi / 2; g *= 2) pts.push_back({g, false});
+  }
+  std::sort(pts.begin(), pts.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
+  // merge equal points (a graded flag wins)
+  std::vector<std::pair<T, bool>> u;
+  for (const auto &p : pts) {
+    if (!u.empty() && !(p.first > u.back().first)) {
+      u.back().second = u.back().second || p.second;
+      continue;
+    }
+    u.push_back(p);
+  }
+  std::vector<panel<T>> out;
+  for (std::size_t i = 0; i + 1 < u.size(); ++i) {
+    const T lo = u[i].first, hi = u[i + 1].first;
+    const bool gl = u[i].second, gh = u[i + 1].second;
+    if (gl && gh) {
+      const T mid = (lo + hi) / 2;
+      out.push_back({lo, mid, -1});
+      out.push_back({mid, hi, +1});
+    } else {
+      out.push_back({lo, hi, gl ? -1 : (gh ? 1 : 0)});
+    }
+  }
+  return out;
+}
+
+// Calls f(theta, weight) for every node of the composite rule of order n.
+template <class T, class F> void for_nodes(const std::vector<panel<T>> &panels, int n, const F &f) {
+  using std::pow;
+  const auto rule = gauss_legendre<T>(n);
+  const int m = grading_power<T>();
+  for (const auto &pn : panels) {
+    const T L = pn.hi - pn.lo;
+    for (int i = 0; i < n; ++i) {
+      const T t = rule->x[i], w = rule->w[i];
+      if (pn.grade == 0) {
+        f(pn.lo + L * (1 + t) / 2, L * w / 2);
+      } else {
+        const T u = pn.grade < 0 ? (1 + t) / 2 : (1 - t) / 2;
+        T um1 = 1;
+        for (int k = 0; k < m - 1; ++k) um1 *= u;
+        const T off = L * um1 * u;
+        const T wt = L * T(m) * um1 * w / 2;
+        f(pn.grade < 0 ? pn.lo + off : pn.hi - off, wt);
+      }
+    }
+  }
+}
+
+}  // namespace gdetail
+
+// Sums of the single-zone integrals and their derivatives in b1, b2.
+template <class T> struct zone_sums {
+  T I1{0}, I2{0}, I1b1{0}, I1b2{0}, I2b1{0}, I2b2{0};
+};
+
+// Single-zone integrals I_j = int_zone p_hat t^(j-1)/R(t) dt, j = 1, 2, and
+// (if jac) their derivatives in b1 and b2, by the composite rule of order n.
+// side = +1: zone (b1, 1) of length d = d1; side = -1: zone (-1, -b2), d = d2.
+// e = b1 + b2 > 0.
+template <class T>
+zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, const T &e, int n, bool jac) {
+  using std::asin; using std::cos; using std::sin; using std::sqrt;
+  zone_sums<T> r;
+  if (!(d > 0)) return r;
+  // kinks inside the zone, as theta
+  std::vector<std::pair<T, bool>> kinks;
+  for (const auto &bp : pm.breakpoints()) {
+    // distance from the stick edge of the zone: zone R: t - b1 = t - 1 + d; zone L: -b2 - t = 1 - d - t
+    const T dist = side > 0 ? bp.x - 1 + d : d - 1 - bp.x;
+    if (dist > 0 && dist < d) kinks.push_back({asin(sqrt(dist / d)), bp.graded});
+  }
+  const auto panels = gdetail::make_panels<T>(d, e, kinks);
+  gdetail::for_nodes<T>(panels, n, [&](const T &th, const T &w) {
+    const T sn = sin(th), cs = cos(th);
+    const T s2 = sn * sn, c2 = cs * cs;
+    const T dc = d * c2;           // distance to the contact edge
+    const T ds = d * s2;           // distance to the stick edge
+    const T g = e + ds;            // |t - (other stick edge)|: t + b2 (R) or b1 - t (L)
+    const T t = side > 0 ? (s2 < T(0.5) ? 1 - d + ds : 1 - dc) : (s2 < T(0.5) ? d - 1 - ds : dc - 1);
+    const T dm = side > 0 ? 2 - dc : dc;  // 1 + t
+    const T dp = side > 0 ? dc : 2 - dc;  // 1 - t
+    const T ph = pm.phi(t, dm, dp);
+    const T far = side > 0 ? dm : dp;     // distance to the far contact edge
+    const T sf = sqrt(far);
+    const T psi = sf * ph;                 // p_hat / sqrt(distance to the near edge)
+    const T rg = 1 / sqrt(g);
+    const T base = 2 * d * c2 * psi * rg;  // integrand of I_1 (per dtheta)
+    r.I1 += w * base;
+    r.I2 += w * base * t;
+    if (!jac) return;
+    const T dph = pm.dphi(t, dm, dp);
+    // psi' = d psi / dt
+    const T dpsi = side > 0 ? ph / (2 * sf) + sf * dph : -ph / (2 * sf) + sf * dph;
+    // d/d(g) of base: -base/(2g)
+    const T bg = -base / (2 * g);
+    // G_j(t) = psi t^(j-1) g^(-1/2); dG/dt along the map (d fixed) with dg/dt = +1 (R) or -1 (L)
+    const T sg = side > 0 ? T(1) : T(-1);
+    const T G1p = dpsi * rg - sg * psi * rg / (2 * g);
+    const T G2p = (dpsi * t + psi) * rg - sg * psi * t * rg / (2 * g);
+    const T G1 = psi * rg, G2 = psi * t * rg;
+    if (side > 0) {
+      // b2 enters only through g = t + b2
+      r.I1b2 += w * bg;
+      r.I2b2 += w * bg * t;
+      // b1: d = 1 - b1, t = 1 - d cos^2 => dd/db1 = -1, dt/db1 = cos^2
+      r.I1b1 += w * (-2 * c2 * G1 + 2 * d * c2 * c2 * G1p);
+      r.I2b1 += w * (-2 * c2 * G2 + 2 * d * c2 * c2 * G2p);
+    } else {
+      // b1 enters only through g = b1 - t
+      r.I1b1 += w * bg;
+      r.I2b1 += w * bg * t;
+      // b2: d = 1 - b2, t = -1 + d cos^2 => dd/db2 = -1, dt/db2 = -cos^2
+      r.I1b2 += w * (-2 * c2 * G1 - 2 * d * c2 * c2 * G1p);
+      r.I2b2 += w * (-2 * c2 * G2 - 2 * d * c2 * c2 * G2p);
+    }
+  });
+  return r;
+}
+
+// Residuals and Jacobian in (x1, ln e) of the unified system.
+template <class T> struct general_eval {
+  T F1, F2;
+  T J11, J12, J21, J22;  // dF/dx1, dF/dln e
+};
+
+template <class T> struct general_state {
+  T x1;  // +d1 (same sign), -d1 (opposite sign)
+  T e;   // b1 + b2
+  T d1() const { using std::abs; return abs(x1); }
+  T d2() const { return 2 - d1() - e; }
+  int sR() const { return x1 < 0 ? -1 : 1; }
+};
+
+template <class T>
+general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const T &s, const general_state<T> &st,
+                                 int n, bool jac) {
+  const T pi_ = pi<T>();
+  const T d1 = st.d1(), d2 = st.d2(), e = st.e;
+  const int sR = st.sR();
+  const zone_sums<T> R = zone_integrals(pm, +1, d1, e, n, jac);
+  const zone_sums<T> L = zone_integrals(pm, -1, d2, e, n, jac);
+  const T bdiff = d2 - d1;  // b1 - b2
+  general_eval<T> r;
+  r.F1 = L.I1 - sR * R.I1 - pi_ * s / 4;
+  r.F2 = L.I2 - sR * R.I2 - pi_ * s * bdiff / 8 + pi_ * q / 2;
+  if (!jac) return r;
+  const T F1b1 = L.I1b1 - sR * R.I1b1, F1b2 = L.I1b2 - sR * R.I1b2;
+  const T F2b1 = L.I2b1 - sR * R.I2b1 - pi_ * s / 8, F2b2 = L.I2b2 - sR * R.I2b2 + pi_ * s / 8;
+  // b1 = 1 - |x1|, b2 = e - b1: d/dx1 = sign(x1)(-d/db1 + d/db2); d/dln e = e d/db2
+  const T sg = T(sR);
+  r.J11 = sg * (F1b2 - F1b1);
+  r.J21 = sg * (F2b2 - F2b1);
+  r.J12 = e * F1b2;
+  r.J22 = e * F2b2;
+  return r;
+}
+
+// ---------------------------------------------------------------------------
+template <class T> class general_solution {
+ public:
+  general_scene<T> scene;
+  regime reg = regime::stuck;
+  bool negate = false, mirror = false;
+  // canonical, dimensionless (units of a)
+  T beta1{1}, beta2{1}, delta1{0}, delta2{0}, width{2};
+  int dirR = 0, dirL = 0;
+  int iterations = 0;       // Newton iterations (all continuation steps)
+  int continuation_steps = 0;
+  int order = 0;            // Gauss-Legendre order per panel of the accepted residual
+  T rtol{0};
+  std::shared_ptr<const pressure_model<T>> owned;  // mirrored view, if any
+  const pressure_model<T> *pm = nullptr;            // canonical pressure (must outlive)
+
+  // ---- user frame ----
+  int sign() const { return negate ? -1 : 1; }
+  T b1() const { return scene.a * (mirror ? beta2 : beta1); }
+  T b2() const { return scene.a * (mirror ? beta1 : beta2); }
+  T d1() const { return scene.a * (mirror ? delta2 : delta1); }
+  T d2() const { return scene.a * (mirror ? delta1 : delta2); }
+  int dir1() const { return sign() * (mirror ? dirL : dirR); }
+  int dir2() const { return sign() * (mirror ? dirR : dirL); }
+
+  T quad_tol() const {
+    using std::cbrt;
+    const T c = cbrt(eps<T>());
+    return c * c;  // tanh-sinh converges quadratically: far below this in practice
+  }
+
+  // C_Z(xi) = int_Z p_hat(t) / (R(t) (t - xi)) dt (principal value when xi in Z)
+  // for the canonical point xi at distance dl from the stick edge of zone pz.
+  T cauchy(int zside, int pz, const T &dl) const {
+    using std::asin; using std::cos; using std::sin; using std::sqrt;
+    const T d = zside > 0 ? delta1 : delta2;
+    if (!(d > 0)) return T(0);
+    const T e = width;
+    auto H = [&](const T &th, const T &thc) {  // thc: pi/2 - th
+      const T sn = sin(th), cs = sin(thc);
+      const T s2 = sn * sn, c2 = cs * cs;
+      const T dc = d * c2, ds = d * s2;
+      const T t = zside > 0 ? (s2 < T(0.5) ? 1 - d + ds : 1 - dc) : (s2 < T(0.5) ? d - 1 - ds : dc - 1);
+      const T dm = zside > 0 ? 2 - dc : dc, dp = zside > 0 ? dc : 2 - dc;
+      const T far = zside > 0 ? dm : dp;
+      return 2 * d * c2 * sqrt(far) * pm->phi(t, dm, dp) / sqrt(e + ds);
+    };
+    const T half_pi = pi<T>() / 2;
+    std::vector<T> cuts;
+    for (const auto &bp : pm->breakpoints()) {
+      const T dist = zside > 0 ? bp.x - 1 + d : d - 1 - bp.x;
+      if (dist > 0 && dist < d) cuts.push_back(asin(sqrt(dist / d)));
+    }
+    const T tol = quad_tol();
+    if (pz != zside) {
+      // no singularity: |t - xi| = e + dl + d sin^2
+      auto f = [&](const T &th, const T &thc) {
+        const T sn = sin(th);
+        const T den = e + dl + d * sn * sn;
+        return H(th, thc) / den;
+      };
+      cuts.push_back(T(0));
+      cuts.push_back(half_pi);
+      std::sort(cuts.begin(), cuts.end());
+      T sum = 0;
+      for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const T lo = cuts[i], hi = cuts[i + 1];
+        if (!(hi > lo)) continue;
+        sum += integrate_ts<T>([&](const T &th, const T &xc) {
+          const T thc = xc > 0 && hi == half_pi ? xc : half_pi - th;
+          return f(th, thc);
+        }, lo, hi, tol);
+      }
+      // zone R: t - xi > 0 (xi in zone L); zone L: t - xi < 0 (xi in zone R)
+      return zside > 0 ? sum : -sum;
+    }
+    // principal value: t - xi = +-d (sin^2 th - sin^2 thx); PV int_0^{pi/2} dth/(sin^2 th - c) = 0
+    if (!(dl > 0)) return T(0);
+    const T ratio = dl / d;
+    const T thx = ratio >= 1 ? half_pi : asin(sqrt(ratio));
+    const T thxc = ratio >= 1 ? T(0) : half_pi - thx;
+    const T Hx = H(thx, thxc);
+    cuts.push_back(T(0));
+    cuts.push_back(half_pi);
+    cuts.push_back(thx);
+    std::sort(cuts.begin(), cuts.end());
+    T sum = 0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const T lo = cuts[i], hi = cuts[i + 1];
+      if (!(hi > lo)) continue;
+      sum += integrate_ts<T>([&](const T &th, const T &xc) {
+        // exact distance to thx when thx is an end of this piece
+        T delta;
+        if (xc < 0 && lo == thx) delta = -xc;
+        else if (xc > 0 && hi == thx) delta = -xc;
+        else delta = th - thx;
+        const T thc = (xc > 0 && hi == half_pi) ? xc : half_pi - th;
+        const T den = sin(delta) * sin(2 * thx + delta);
+        if (den == 0) return T(0);
+        return (H(th, thc) - Hx) / den;
+      }, lo, hi, tol);
+    }
+    return zside > 0 ? sum / d : -sum / d;
+  }
+
+  // canonical dimensionless B_x (units f p0 / E*) at distance dl from the
+  // stick edge of zone z (+1: R, -1: L)
+  T bhat(int z, const T &dl) const {
+    using std::sqrt;
+    if (!(dl > 0)) return T(0);
+    const T Rx = sqrt(dl * (width + dl));
+    const T br = dirR * cauchy(+1, z, dl) - dirL * cauchy(-1, z, dl);
+    return (z > 0 ? -2 : 2) * Rx * br / pi<T>();
+  }
+  // d h / d(dl) in zone z (h = 0 at the stick edge)
+  T hgrad(int z, const T &dl) const { return z > 0 ? bhat(z, dl) : -bhat(z, dl); }
+  T zone_length(int z) const { return z > 0 ? delta1 : delta2; }
+
+  std::vector<T> kink_distances(int z) const {
+    std::vector<T> v;
+    const T d = zone_length(z);
+    for (const auto &bp : pm->breakpoints()) {
+      const T dist = z > 0 ? bp.x - 1 + d : d - 1 - bp.x;
+      if (dist > 0 && dist < d) v.push_back(dist);
+    }
+    return v;
+  }
+
+  // canonical slip (units f p0 a / E*)
+  T hhat(int z, const T &dl) const {
+    if (!(dl > 0)) return T(0);
+    std::vector<T> cuts;
+    for (const T &k : kink_distances(z))
+      if (k < dl) cuts.push_back(k / dl);
+    return dl * integrate_split<T>([&](const T &w) { return hgrad(z, w * dl); }, cuts, quad_tol());
+  }
+
+  // canonical zone energy int p_hat |h| (units f^2 p0^2 a^2 / E*), by parts:
+  // dir * int_0^d tail(d - u) h'(u) du
+  T energy_hat(int z) const {
+    using std::abs;
+    const T d = zone_length(z);
+    if (!(d > 0)) return T(0);
+    std::vector<T> cuts;
+    for (const T &k : kink_distances(z)) cuts.push_back(k);
+    cuts.push_back(T(0));
+    cuts.push_back(d);
+    std::sort(cuts.begin(), cuts.end());
+    T sum = 0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const T lo = cuts[i], hi = cuts[i + 1];
+      if (!(hi > lo)) continue;
+      sum += integrate_ts<T>([&](const T &u, const T &uc) {
+        const T c = (uc > 0 && hi == d) ? uc : d - u;  // distance to the contact edge
+        return pm->tail(z, c) * hgrad(z, u);
+      }, lo, hi, quad_tol());
+    }
+    return abs(sum);
+  }
+
+  int locate(const T &x, T &dl) const {
+    const T xi = (mirror ? -x : x) / scene.a;
+    if (delta1 > 0 && xi >= beta1) { dl = xi - beta1; return +1; }
+    if (delta2 > 0 && xi <= -beta2) { dl = -beta2 - xi; return -1; }
+    dl = T(0);
+    return 0;
+  }
+  T Bx(const T &x) const {
+    T dl;
+    const int z = locate(x, dl);
+    if (z == 0) return T(0);
+    const T v = scene.f * scene.p0 / scene.Estar * bhat(z, dl);
+    return (mirror ? -sign() : sign()) * v;
+  }
+  T slip(const T &x) const {
+    T dl;
+    const int z = locate(x, dl);
+    if (z == 0) return T(0);
+    return sign() * scene.f * scene.p0 * scene.a / scene.Estar * hhat(z, dl);
+  }
+  T pressure(const T &x) const {
+    const T xi = (mirror ? -x : x) / scene.a;
+    if (!(xi > -1 && xi < 1)) return T(0);
+    return scene.p0 * pm->p(xi);
+  }
+  T work(const T &x) const {
+    using std::abs;
+    return scene.f * pressure(x) * abs(slip(x));
+  }
+  T energy(int i) const {
+    const int z = ((i == 1) != mirror) ? +1 : -1;
+    const T scale = scene.f * scene.f * scene.p0 * scene.p0 * scene.a * scene.a / scene.Estar;
+    return scale * energy_hat(z);
+  }
+};
+
+namespace gdetail {
+
+template <class T> T residual_norm(const general_eval<T> &r) {
+  using std::abs;
+  return abs(r.F1) + abs(r.F2);
+}
+
+// Newton from a start at fixed order n; true on convergence.
+template <class T>
+bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n, const T &tol_step,
+            int max_it, int &iterations) {
+  using std::abs; using std::exp; using std::max;
+  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
+  const T noise_floor = 64 * eps<T>() * pi<T>() * (1 + s);
+  general_eval<T> r = general_residual(pm, q, s, st, n, true);
+  T norm = residual_norm(r);
+  T prev_step = -1;
+  for (int it = 1; it <= max_it; ++it) {
+    ++iterations;
+    const T det = r.J11 * r.J22 - r.J12 * r.J21;
+    if (!(det != 0) || !(abs(det) < boost::math::tools::max_value<T>())) return false;
+    T dx = -(r.F1 * r.J22 - r.F2 * r.J12) / det;
+    T dy = -(r.J11 * r.F2 - r.J21 * r.F1) / det;
+    const T a11 = r.J11, a12 = r.J12, a21 = r.J21, a22 = r.J22;
+    auto level = [&](const general_eval<T> &f) {
+      return abs((f.F1 * a22 - f.F2 * a12) / det) + abs((a11 * f.F2 - a21 * f.F1) / det);
+    };
+    const T level0 = abs(dx) + abs(dy);
+    const T cap = 4;
+    if (abs(dy) > cap) { dx *= cap / abs(dy); dy = dy > 0 ? cap : -cap; }
+    if (abs(dx) > 1) { dy /= abs(dx); dx = dx > 0 ? T(1) : T(-1); }
+    T lam = 1;
+    general_state<T> nst;
+    general_eval<T> nr;
+    T nnorm = 0;
+    bool ok = false;
+    for (int k = 0; k < 40; ++k, lam /= 2) {
+      nst.x1 = st.x1 + lam * dx;
+      nst.e = st.e * exp(lam * dy);
+      const T nd2 = nst.d2();
+      if (!(nst.e > tiny) || !(nd2 > st.d2() / 4) || !(nst.d1() < 2)) continue;
+      nr = general_residual(pm, q, s, nst, n, true);
+      nnorm = residual_norm(nr);
+      if (!(nnorm == nnorm)) continue;
+      if (level(nr) <= (1 - lam / 4) * level0 || (nnorm <= noise_floor && nnorm <= norm)) {
+        ok = true;
+        break;
+      }
+    }
+    if (!ok) return norm <= noise_floor;
+    const T step = max(abs(lam * dx), abs(lam * dy));
+    st = nst;
+    r = nr;
+    norm = nnorm;
+    if (lam == 1 && step <= tol_step) return true;
+    if (norm <= noise_floor && prev_step >= 0 && step >= prev_step / 4) return true;
+    prev_step = step;
+  }
+  return false;
+}
+
+// Start at s = 0: the restriction of F2 to b1 = b2 = 1 - d (e = 2 - 2d),
+// F2(d) = I2L - I2R + pi q/2, falls monotonically from pi q/2 (d = 0) to
+// pi (q - 1)/2 (d -> 1); bracketed Illinois iteration in d to sqrt(eps).
+// (For a symmetric pressure this is eq (15) and b1 = b2 exactly; for an
+// asymmetric one it is a start for the 2D Newton.)
+template <class T>
+general_state<T> shear_only_start(const pressure_model<T> &pm, const T &q, int n) {
+  using std::abs; using std::sqrt;
+  auto F = [&](const T &d) {
+    return general_residual(pm, q, T(0), general_state<T>{d, 2 * (1 - d)}, n, false).F2;
+  };
+  T lo = 0, hi = 1, flo = pi<T>() * q / 2, fhi = pi<T>() * (q - 1) / 2;
+  int side = 0;
+  const T tol = sqrt(eps<T>());
+  for (int it = 0; it < 200 && hi - lo > tol; ++it) {
+    T d = (lo * fhi - hi * flo) / (fhi - flo);
+    if (!(d > lo && d < hi)) d = (lo + hi) / 2;
+    const T fd = F(d);
+    if (fd > 0) {
+      lo = d; flo = fd;
+      if (side == +1) fhi /= 2;
+      side = +1;
+    } else {
+      hi = d; fhi = fd;
+      if (side == -1) flo /= 2;
+      side = -1;
+    }
+  }
+  const T d = (lo + hi) / 2;
+  return {d, 2 * (1 - d)};
+}
+
+// Continuation in s from s = 0 with the tangent predictor dx/ds = -J^-1 dF/ds.
+template <class T>
+bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
+                  const T &tol_step, int max_it, int &iterations, int &steps) {
+  using std::abs; using std::exp; using std::ldexp;
+  T sc = 0;
+  T h = s / 4;
+  const T hmin = s * ldexp(T(1), -40);
+  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
+  while (sc < s) {
+    if (h < hmin) return false;
+    const T sn = (s - sc <= h) ? s : sc + h;
+    const T ds = sn - sc;
+    // tangent predictor
+    general_state<T> pred = st;
+    const general_eval<T> r = general_residual(pm, q, sc, st, n, true);
+    const T det = r.J11 * r.J22 - r.J12 * r.J21;
+    if (det != 0) {
+      const T pi_ = pi<T>();
+      const T Fs1 = -pi_ / 4, Fs2 = -pi_ * (st.d2() - st.d1()) / 8;
+      const T dx = -(Fs1 * r.J22 - Fs2 * r.J12) / det;
+      const T dy = -(r.J11 * Fs2 - r.J21 * Fs1) / det;
+      general_state<T> p2{st.x1 + ds * dx, st.e * exp(ds * dy)};
+      if (p2.e > tiny && p2.d2() > 0 && p2.d1() < 2) pred = p2;
+    }
+    int its = 0;
+    general_state<T> trial = pred;
+    ++steps;
+    if (newton(pm, q, sn, trial, n, tol_step, max_it, its)) {
+      iterations += its;
+      st = trial;
+      sc = sn;
+      if (its <= 4) h *= 2;
+    } else {
+      iterations += its;
+      h /= 4;
+    }
+  }
+  return true;
+}
+
+}  // namespace gdetail
+
+// Solve a general scene for the pressure pm (dimensionless model; scene
+// gives a, p0, f, E* for the dimensional outputs). pm must outlive the
+// solution. Throws hs::core::error on bad input or failure.
+template <class T>
+general_solution<T> solve_general(const pressure_model<T> &pm, const general_scene<T> &sc,
+                                  const general_options<T> &opt = {}) {
+  using std::abs; using std::max; using std::sqrt;
+  {
+    hertz_scene<T> hs;
+    hs.a = sc.a; hs.p0 = sc.p0; hs.f = sc.f; hs.Estar = sc.Estar; hs.q = sc.q; hs.s = sc.s;
+    validate(hs);
+  }
+  if (opt.max_iterations < 1 || opt.max_order < 2 || !(opt.rtol >= 0))
+    throw error(status::bad_option, "bad solver options");
+  general_solution<T> sol;
+  sol.scene = sc;
+  sol.rtol = opt.rtol;
+  T q = sc.q, s = sc.s;
+  if (q < 0) { sol.negate = true; q = -q; s = -s; }
+  if (s < 0) { sol.mirror = true; s = -s; }
+  if (sol.mirror && !pm.symmetric()) {
+    auto mp = std::make_shared<mirrored_pressure<T>>(pm);
+    sol.owned = mp;
+    sol.pm = mp.get();
+  } else {
+    sol.pm = &pm;
+  }
+  const pressure_model<T> &P = *sol.pm;
+  if (q == 0 && s == 0) { sol.reg = regime::stuck; return sol; }
+
+  const T tolq = max(opt.rtol, 64 * eps<T>());
+  const T tol_step = max(opt.rtol, 4 * eps<T>());
+  const T qtol = tolq * pi<T>() * (1 + s);
+  // initial order from the tolerance: the smallest power of two >= 2/3 of
+  // the digits asked for (the residual is then validated at twice the order)
+  int n = 4;
+  {
+    using std::log10;
+    const T digits = -log10(tolq);
+    while (T(n) < digits * 2 / 3) n *= 2;
+  }  // start: the Hertz solution of the same (q, s)
+  general_state<T> st;
+  {
+    hertz_scene<T> hs;
+    hs.q = q; hs.s = s;
+    const auto h = solve_hertz(hs);
+    st.x1 = h.reg == regime::opposite_sign ? -h.delta1 : h.delta1;
+    st.e = h.width;
+  }
+  int its = 0;
+  general_state<T> trial = st;
+  if (!gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its)) {
+    // fallback: continuation in s from the shear-only solution
+    general_state<T> s0 = gdetail::shear_only_start(P, q, n);
+    if (!gdetail::newton(P, q, T(0), s0, n, tol_step, opt.max_iterations, its))
+      throw error(status::no_convergence, "general solver: no convergence at sigma = 0");
+    trial = s0;
+    if (s > 0 && !gdetail::continuation(P, q, s, trial, n, tol_step, opt.max_iterations, its,
+                                        sol.continuation_steps))
+      throw error(status::no_convergence, "general solver: continuation in sigma failed");
+  }
+  st = trial;
+  // order control: accept n when the residual with 2n is within qtol; finish
+  // with one Newton step on the 2n residual.
+  for (;;) {
+    const general_eval<T> r2 = general_residual(P, q, s, st, 2 * n, true);
+    if (gdetail::residual_norm(r2) <= qtol) {
+      const T det = r2.J11 * r2.J22 - r2.J12 * r2.J21;
+      if (det != 0) {
+        using std::exp;
+        const T dx = -(r2.F1 * r2.J22 - r2.F2 * r2.J12) / det;
+        const T dy = -(r2.J11 * r2.F2 - r2.J21 * r2.F1) / det;
+        general_state<T> ns{st.x1 + dx, st.e * exp(dy)};
+        // keep the regime of the accepted state unless the state sits on the boundary
+        if (ns.d2() > 0 && ns.e > 0 && (ns.x1 == 0 || (ns.x1 > 0) == (st.x1 > 0) || abs(st.x1) <= qtol))
+          st = ns;
+      }
+      n *= 2;
+      break;
+    }
+    n *= 2;
+    if (2 * n > opt.max_order)
+      throw error(status::no_convergence, "general solver: quadrature order limit reached");
+    if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its))
+      throw error(status::no_convergence, "general solver: Newton iteration did not converge");
+  }
+  sol.iterations = its;
+  sol.order = n;
+  sol.delta1 = st.d1();
+  sol.width = st.e;
+  sol.delta2 = st.d2();
+  sol.beta1 = 1 - sol.delta1;
+  sol.beta2 = 1 - sol.delta2;
+  if (st.x1 < 0) {
+    sol.reg = regime::opposite_sign;
+    sol.dirR = -1;
+  } else {
+    sol.reg = regime::same_sign;
+    sol.dirR = sol.delta1 > 0 ? 1 : 0;
+  }
+  sol.dirL = 1;
+  return sol;
+}
+
+}}  // namespace hs::core

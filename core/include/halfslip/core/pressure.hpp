@@ -1,0 +1,588 @@
+// halfslip core: contact pressure models for the general (non-Hertz) path.
+//
+// Every model is dimensionless: lengths in units of the contact half-width a
+// (contact |x| < 1), pressure in units of p0 = 2P/(pi a), so that
+//     p_hat(x) = p(a x)/p0,   integral_{-1}^{1} p_hat = pi/2.
+// A model supplies the edge-regular factor
+//     phi(x) = p_hat(x) / sqrt(1 - x^2),
+// which is bounded, positive and smooth near both edges for a pressure that
+// vanishes like sqrt(distance) at the edges (the declared edge behaviour of
+// every model). phi is evaluated from x and the exact distances to the edges
+// dm = 1 + x, dp = 1 - x, so that callers that know these distances better
+// than x (quadrature nodes close to an edge) lose nothing.
+//
+// Models: Hertz, flat punch with rounded corners (Ciavarella, Hills & Monno
+// 1998), symmetric power-law profile g = A|x|^n, sampled pressure and a
+// user callback. Generic in the real type T (double, long double, Boost
+// multiprecision): every precision-dependent choice derives from eps<T>().
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+#include <boost/math/special_functions/gamma.hpp>
+
+#include "numerics.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+// ---------------------------------------------------------------------------
+// Gauss-Legendre rules in the working precision T.
+template <class T> struct gl_rule {
+  std::vector<T> x, w;  // nodes and weights on [-1, 1], x increasing
+};
+
+// Nodes by Newton's method on P_n from Tricomi's asymptotic start, iterated
+// until the correction is below a few eps (quadratic convergence: one more
+// step then changes nothing). Cached per (order, precision) behind a mutex;
+// the returned rule is immutable and shared.
+template <class T> std::shared_ptr<const gl_rule<T>> gauss_legendre(int n) {
+  using std::abs; using std::cos;
+  static std::mutex mtx;
+  static std::map<std::pair<int, int>, std::shared_ptr<const gl_rule<T>>> cache;
+  const int digits = std::numeric_limits<T>::digits;
+  {
+    std::lock_guard<std::mutex> lock(mtx);
+    auto it = cache.find({n, digits});
+    if (it != cache.end()) return it->second;
+  }
+  auto r = std::make_shared<gl_rule<T>>();
+  r->x.resize(n);
+  r->w.resize(n);
+  const T pi_ = pi<T>();
+  for (int k = 1; k <= (n + 1) / 2; ++k) {
+    // Tricomi: x_k ~ (1 - (n-1)/(8n^3)) cos(pi (4k-1)/(4n+2)) (k-th largest root)
+    const T nn = T(n);
+    T x = (1 - (nn - 1) / (8 * nn * nn * nn)) * cos(pi_ * T(4 * k - 1) / T(4 * n + 2));
+    T dp = 1;
+    for (int it = 0; it < 100; ++it) {
+      T p0 = 1, p1 = x;
+      for (int j = 2; j <= n; ++j) {
+        const T p2 = (T(2 * j - 1) * x * p1 - T(j - 1) * p0) / T(j);
+        p0 = p1;
+        p1 = p2;
+      }
+      // p1 = P_n(x), p0 = P_{n-1}(x)
+      dp = T(n) * (x * p1 - p0) / (x * x - 1);
+      const T dx = p1 / dp;
+      x -= dx;
+      if (abs(dx) <= 2 * eps<T>()) {
+        if (it > 0 && abs(dx) <= eps<T>() / 2) break;
+      }
+      if (abs(dx) <= eps<T>() / 4) break;
+    }
+    // final derivative at the converged node
+    {
+      T p0 = 1, p1 = x;
+      for (int j = 2; j <= n; ++j) {
+        const T p2 = (T(2 * j - 1) * x * p1 - T(j - 1) * p0) / T(j);
+        p0 = p1;
+        p1 = p2;
+      }
+      dp = T(n) * (x * p1 - p0) / (x * x - 1);
+    }
+    const T w = 2 / ((1 - x * x) * dp * dp);
+    r->x[n - k] = x;
+    r->w[n - k] = w;
+    r->x[k - 1] = -x;
+    r->w[k - 1] = w;
+  }
+  if (n % 2 == 1) r->x[n / 2] = 0;
+  std::lock_guard<std::mutex> lock(mtx);
+  auto ins = cache.emplace(std::make_pair(n, digits), r);
+  return ins.first->second;
+}
+
+// A point of (-1, 1) where phi is not smooth. graded: phi' is log-singular
+// there (or phi has a |x - x_k|^alpha term); quadrature panels ending there
+// are graded polynomially towards it. Otherwise a plain split (e.g. a knot of
+// a piecewise cubic).
+template <class T> struct breakpoint {
+  T x;
+  bool graded;
+};
+
+// ---------------------------------------------------------------------------
+template <class T> class pressure_model {
+ public:
+  virtual ~pressure_model() = default;
+  // phi = p_hat / sqrt(1 - x^2); dm = 1 + x, dp = 1 - x.
+  virtual T phi(const T &x, const T &dm, const T &dp) const = 0;
+  // d phi / dx. Default: central difference with step cbrt(eps) times the
+  // distance to the nearer edge (phi is smooth up to the edges), accurate to
+  // eps^(2/3): used only in Newton Jacobians, never in a residual.
+  virtual T dphi(const T &x, const T &dm, const T &dp) const {
+    using std::cbrt; using std::min;
+    const T h = cbrt(eps<T>()) * min(min(dm, dp), T(1)) / 2;
+    return (phi(x + h, dm + h, dp - h) - phi(x - h, dm - h, dp + h)) / (2 * h);
+  }
+  virtual std::vector<breakpoint<T>> breakpoints() const { return {}; }
+  // p(-x) = p(x): the mirror x -> -x is then a symmetry of the problem.
+  virtual bool symmetric() const { return false; }
+  // Integral of p_hat from the edge on `side` (+1: x = 1, -1: x = -1) over a
+  // length c in [0, 2]. Default: quadrature (t = edge -+ c w^2 removes the sqrt).
+  virtual T tail(int side, const T &c) const;
+
+  T p(const T &x, const T &dm, const T &dp) const {
+    using std::sqrt;
+    if (!(dm > 0) || !(dp > 0)) return T(0);
+    return sqrt(dm * dp) * phi(x, dm, dp);
+  }
+  T p(const T &x) const { return p(x, 1 + x, 1 - x); }
+};
+
+// Integral of f(w) over [0, 1] by tanh-sinh split at given points (in w).
+template <class T, class F>
+T integrate_split(const F &f, std::vector<T> cuts, const T &tol) {
+  cuts.push_back(T(0));
+  cuts.push_back(T(1));
+  std::sort(cuts.begin(), cuts.end());
+  T sum = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    if (!(cuts[i + 1] > cuts[i])) continue;
+    sum += integrate_ts<T>([&](const T &w, const T &) { return f(w); }, cuts[i], cuts[i + 1], tol);
+  }
+  return sum;
+}
+
+template <class T> T pressure_model<T>::tail(int side, const T &c) const {
+  using std::sqrt;
+  if (!(c > 0)) return T(0);
+  // t = edge - side * c w^2: distance to this edge c w^2, to the other 2 - c w^2
+  std::vector<T> cuts;
+  for (const auto &b : breakpoints()) {
+    const T dist = side > 0 ? 1 - b.x : 1 + b.x;
+    if (dist > 0 && dist < c) cuts.push_back(sqrt(dist / c));
+  }
+  const T sc = sqrt(c);
+  auto f = [&](const T &w) {
+    const T near = c * w * w, far = 2 - near;
+    const T x = side > 0 ? 1 - near : near - 1;
+    const T ph = side > 0 ? phi(x, far, near) : phi(x, near, far);
+    return 2 * c * sc * w * w * sqrt(far) * ph;
+  };
+  return integrate_split<T>(f, cuts, boost::math::tools::root_epsilon<T>());
+}
+
+// ---------------------------------------------------------------------------
+// a. Hertz: p = p0 sqrt(1 - x^2).
+template <class T> class hertz_pressure final : public pressure_model<T> {
+ public:
+  T phi(const T &, const T &, const T &) const override { return T(1); }
+  T dphi(const T &, const T &, const T &) const override { return T(0); }
+  bool symmetric() const override { return true; }
+  T tail(int, const T &c) const override { return pressure_tail(c); }
+};
+
+// ---------------------------------------------------------------------------
+// b. Flat punch of half-width b_f with corners rounded to radius R
+// (Ciavarella, Hills & Monno 1998). With x = a sin(phi), b_f = a sin(phi0):
+//   P = a^2 (pi - 2 phi0 - sin 2phi0) / (2 A R),
+//   p = a/(pi A R) [(pi - 2phi0) cos phi + sin phi ln|sin(phi+phi0)/sin(phi-phi0)|
+//                   + sin phi0 ln|tan((phi+phi0)/2) tan((phi-phi0)/2)|],
+// so p_hat = [...] / g(beta), g(beta) = pi - 2 phi0 - sin 2 phi0 = 2 ep - sin 2 ep
+// with ep = acos(beta), beta = b_f/a. (Normalisation and the sqrt edge
+// behaviour verified with mpmath at 30 digits.) p' is log-singular at
+// x = +-beta: graded breakpoints.
+template <class T> class flat_rounded_pressure final : public pressure_model<T> {
+ public:
+  // beta = b_f / a in [0, 1)
+  explicit flat_rounded_pressure(const T &beta) : beta_(beta) {
+    using std::acos; using std::sqrt; using std::asin;
+    if (!(beta >= 0) || !(beta < 1))
+      throw error(status::bad_geometry, "flat punch: need 0 <= b_f/a < 1");
+    phi0_ = asin(beta);
+    c0_ = sqrt((1 - beta) * (1 + beta));
+    t0_ = beta / c0_;
+    g_ = load_factor(beta);
+  }
+  // g(beta) = pi - 2 asin(beta) - sin(2 asin beta) = 2ep - sin(2ep), ep = acos(beta)
+  static T load_factor(const T &beta) {
+    using std::acos;
+    return y_minus_sin(2 * acos(beta));
+  }
+  // d g / d beta = -4 sqrt(1 - beta^2)
+  static T load_factor_derivative(const T &beta) {
+    using std::sqrt;
+    return -4 * sqrt((1 - beta) * (1 + beta));
+  }
+  // Contact half-width a from the load: a^2 g(b_f/a) = 2 A R P (A: plane-strain
+  // compliance, R: corner radius). Returns a > b_f (Newton in a, bracketed).
+  static T half_width_from_load(const T &P, const T &A, const T &R, const T &bf) {
+    if (!(P > 0) || !(A > 0) || !(R > 0) || !(bf >= 0))
+      throw error(status::bad_geometry, "flat punch: need P, A, R > 0 and b_f >= 0");
+    if (bf == 0) {  // Hertz: a^2 pi = 2 A R P
+      using std::sqrt;
+      return sqrt(2 * A * R * P / pi<T>());
+    }
+    // with a = bf / beta: bf^2 g(beta)/beta^2 = 2ARP, decreasing in beta
+    const T target = 2 * A * R * P / (bf * bf);
+    const T beta = solve_ratio(target);
+    return bf / beta;
+  }
+  // Half-width c/a of the same punch under the load (1 - q) P, for
+  // beta = b_f/a: c^2 g(beta/c) = (1 - q) g(beta), c in (beta, 1]. This is
+  // the Ciavarella-Jager stick half-width under shear q = Q/fP.
+  static T reduced_load_half_width(const T &beta, const T &q) {
+    if (beta == 0) {
+      using std::sqrt;
+      return sqrt(1 - q);
+    }
+    const T target = (1 - q) * load_factor(beta) / (beta * beta);
+    return beta / solve_ratio(target);
+  }
+
+  T phi(const T &x, const T &dm, const T &dp) const override {
+    using std::abs; using std::asin; using std::atanh; using std::cos; using std::log;
+    using std::sin; using std::sqrt; using std::min;
+    const T ax = abs(x);
+    const T dist = min(dm, dp);               // distance to the nearer edge
+    const T c = sqrt(dist * (2 - dist));      // sqrt(1 - x^2), cos(phi)
+    const T pi_ = pi<T>();
+    const T s0 = beta_;
+    if (s0 == 0) return T(1);
+    if (ax > s0 && 2 * c <= c0_) {
+      // near the edges: bracket/c = (pi - 2phi0) + 2 t0 [atanh(z1)/z1 - atanh(z2)/z2]
+      const T z1 = t0_ * c / ax, z2 = c / c0_;
+      return (pi_ - 2 * phi0_ + 2 * t0_ * (atanh_ratio(z1) - atanh_ratio(z2))) / g_;
+    }
+    // kink-safe form: with A = sin(phi+phi0), D = sin(phi-phi0),
+    // |x| L1 + s0 L2 = |x| ln A - (|x| - s0) ln|D| + s0 ln(sin((phi+phi0)/2)/cos(delta/2)) - s0 ln(c0 + c)
+    const T ph = asin(ax);
+    const T delta = ph - phi0_;
+    const T A = ax * c0_ + s0 * c;
+    const T D = ax * c0_ - s0 * c;
+    T br = (pi_ - 2 * phi0_) * c + ax * log(A) + s0 * log(sin((ph + phi0_) / 2) / cos(delta / 2)) -
+           s0 * log(c0_ + c);
+    if (D != 0) br -= (ax - s0) * log(abs(D));
+    return br / (c * g_);
+  }
+  std::vector<breakpoint<T>> breakpoints() const override {
+    if (beta_ == 0) return {};
+    return {{-beta_, true}, {beta_, true}};
+  }
+  bool symmetric() const override { return true; }
+  T beta() const { return beta_; }
+
+ private:
+  static T atanh_ratio(const T &z) {
+    using std::atanh;
+    return z == 0 ? T(1) : atanh(z) / z;
+  }
+  // beta in (0, 1) with g(beta)/beta^2 = target (decreasing in beta from +inf to 0)
+  static T solve_ratio(const T &target) {
+    using std::abs;
+    if (!(target > 0)) throw error(status::bad_geometry, "flat punch: load must be positive");
+    T lo = 0, hi = 1, b = T(0.5);
+    for (int it = 0; it < 400; ++it) {
+      const T h = load_factor(b) / (b * b) - target;
+      if (h > 0) lo = b; else hi = b;
+      // d/db [g/b^2] = g'/b^2 - 2 g / b^3
+      const T dh = load_factor_derivative(b) / (b * b) - 2 * load_factor(b) / (b * b * b);
+      T nb = b - h / dh;
+      if (!(nb > lo && nb < hi)) nb = (lo + hi) / 2;
+      const T step = abs(nb - b);
+      b = nb;
+      if (step <= 2 * eps<T>() * b || hi - lo <= 2 * eps<T>() * b) break;
+    }
+    return b;
+  }
+  T beta_, phi0_, c0_, t0_, g_;
+};
+
+// ---------------------------------------------------------------------------
+// c. Symmetric power-law profile g(x) = A |x|^n, n > 1, bounded at both ends.
+// The half-plane inversion gives (derivation: docs; verified with mpmath)
+//   p_hat(x) = (n/2) sqrt(1-x^2) F(x),  F(x) = int_0^1 (x^2 + (1-x^2) v^2)^((n-2)/2) dv
+//            = 2F1(1, 1 - n/2; 3/2; 1 - x^2),
+// normalised so that int p_hat = pi/2 (P = (n/2) ... is not needed: the
+// dimensionless pressure depends on n only; P is proportional to a^n).
+// F is evaluated by
+//   1 - x^2 <= 1/2: the series of 2F1 in z = 1 - x^2 (ratio <= 1/2);
+//   x^2 < 1/2, m = (n-1)/2 not within 1/8 of an integer: the connection
+//     formula  F = 2F1(1, 1/2-m; 1-m; x^2)/(2m)
+//                 + |x|^(2m) (sqrt(pi)/2) Gamma(-m)/Gamma(1/2-m) / sqrt(1-x^2);
+//   n odd: the recurrence I_p = (1 + 2 p x^2 I_{p-1})/(2p+1) from
+//     I_{-1/2} = asinh(sqrt(1-x^2)/|x|)/sqrt(1-x^2);
+//   otherwise (m near an integer): tanh-sinh quadrature of
+//     F = (1/beta) int_0^W (cosh t - beta sinh t)^(n-1) dt, beta = sqrt(1-x^2), W = atanh(beta).
+// x = 0 is a graded breakpoint unless n is an even integer (F is then a polynomial).
+template <class T> class power_law_pressure final : public pressure_model<T> {
+ public:
+  explicit power_law_pressure(const T &n) : n_(n) {
+    using std::floor; using std::abs;
+    if (!(n > 1) || !(n < 1000)) throw error(status::bad_geometry, "power law: need 1 < n < 1000");
+    m_ = (n - 1) / 2;
+    const T hn = n / 2;
+    even_ = floor(hn) == hn;
+    const T mr = floor(m_ + T(0.5));
+    odd_ = (mr == m_);
+    near_int_ = !odd_ && abs(m_ - mr) < T(0.125);
+    if (!even_ && !odd_ && !near_int_)
+      conn_ = boost::math::constants::root_pi<T>() / 2 * boost::math::tgamma(T(-m_)) /
+              boost::math::tgamma(T(T(0.5) - m_));
+  }
+  T phi(const T &x, const T &dm, const T &dp) const override {
+    using std::min;
+    const T dist = min(dm, dp);
+    const T z = dist * (2 - dist);  // 1 - x^2
+    return n_ / 2 * F(x, z);
+  }
+  std::vector<breakpoint<T>> breakpoints() const override {
+    if (even_) return {};
+    return {{T(0), true}};
+  }
+  bool symmetric() const override { return true; }
+
+  T F(const T &x, const T &z) const {
+    using std::abs; using std::asinh; using std::cosh; using std::pow; using std::sinh;
+    using std::sqrt;
+    const T y = x * x;
+    const T e = eps<T>();
+    if (even_ || z <= T(0.5)) {
+      // sum_j (1 - n/2)_j / (3/2)_j z^j
+      T term = 1, sum = 1;
+      const T b = 1 - n_ / 2;
+      for (int j = 0; j < 100000; ++j) {
+        term *= (b + j) / (T(1.5) + j) * z;
+        sum += term;
+        if (abs(term) <= e * abs(sum) / 4) break;
+      }
+      return sum;
+    }
+    if (odd_) {
+      const T ax = abs(x), be = sqrt(z);
+      if (ax == 0) return 1 / (n_ - 1);
+      T I = asinh(be / ax) / be;
+      for (T p = T(0.5); p <= (n_ - 2) / 2 + T(0.25); p += 1) I = (1 + 2 * p * y * I) / (2 * p + 1);
+      return I;
+    }
+    if (!near_int_) {
+      // 2F1(1, 1/2 - m; 1 - m; y), y < 1/2
+      T term = 1, sum = 1;
+      const T b = T(0.5) - m_, c = 1 - m_;
+      for (int j = 0; j < 100000; ++j) {
+        term *= (b + j) / (c + j) * y;
+        sum += term;
+        if (abs(term) <= e * abs(sum) / 4) break;
+      }
+      return sum / (2 * m_) + pow(abs(x), 2 * m_) * conn_ / sqrt(z);
+    }
+    const T be = sqrt(z);
+    // integrand decreasing from ((1+be)/2...)~1 to |x|^(n-1) at W = asinh(be/|x|);
+    // beyond Tc it is below eps (times the remaining length, at most ~ln(1/eps))
+    using std::log; using std::min;
+    const T Tc = -log(eps<T>()) / (n_ - 1) + 2;
+    const T ax = abs(x);
+    const T W = ax > 0 ? min(T(asinh(be / ax)), Tc) : Tc;
+    const T I = integrate_ts<T>(
+        [&](const T &t, const T &) {
+          const T v = cosh(t) - be * sinh(t);
+          return v > 0 ? pow(v, n_ - 1) : T(0);
+        },
+        T(0), W, boost::math::tools::root_epsilon<T>());
+    return I / be;
+  }
+
+ private:
+  T n_, m_, conn_{0};
+  bool even_ = false, odd_ = false, near_int_ = false;
+};
+
+// ---------------------------------------------------------------------------
+// Checks shared by the user-supplied pressures.
+namespace detail {
+// local exponent of p at an edge from two distances d1 < d2: p ~ d^alpha.
+// The declared edge behaviour is alpha = 1/2; accepted in [1/4, 3/4].
+template <class T> void check_edge_exponent(const T &p1, const T &d1, const T &p2, const T &d2) {
+  using std::log;
+  if (!(p1 > 0) || !(p2 > 0))
+    throw error(status::bad_geometry, "pressure must be positive inside the contact");
+  const T alpha = log(p2 / p1) / log(d2 / d1);
+  if (!(alpha >= T(0.25) && alpha <= T(0.75)))
+    throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
+}
+}  // namespace detail
+
+// ---------------------------------------------------------------------------
+// d1. Sampled pressure (x_i, p_i), dimensional, on a contact of half-width a.
+// phi_i = p_i / sqrt(a^2 - x_i^2) is interpolated by a monotone piecewise
+// cubic (Fritsch-Carlson / PCHIP slopes) and extrapolated linearly to the
+// edges with the end slope; the pressure is sqrt(a^2 - x^2) phi(x). Samples
+// at x = +-a must have p = 0 and are not interpolated. Rejected (bad_geometry):
+// fewer than 4 interior samples, x not strictly increasing or outside [-a, a],
+// a negative p, a zero p inside, and an edge behaviour other than sqrt
+// (local exponent from the two outermost interior samples at each edge).
+template <class T> class sampled_pressure final : public pressure_model<T> {
+ public:
+  sampled_pressure(const std::vector<T> &xs, const std::vector<T> &ps, const T &a) : a_(a) {
+    using std::sqrt; using std::abs;
+    if (!(a > 0)) throw error(status::bad_size, "sampled pressure: a must be > 0");
+    if (xs.size() != ps.size()) throw error(status::bad_geometry, "sampled pressure: size mismatch");
+    T pmax = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      if (!(ps[i] >= 0)) throw error(status::bad_geometry, "pressure must not be negative");
+      if (i > 0 && !(xs[i] > xs[i - 1])) throw error(status::bad_geometry, "sample abscissae must increase");
+      if (!(xs[i] >= -a && xs[i] <= a)) throw error(status::bad_geometry, "sample outside the contact");
+      pmax = std::max(pmax, ps[i]);
+    }
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const T dm = a + xs[i], dp = a - xs[i];
+      if (dm == 0 || dp == 0) {
+        if (ps[i] > 64 * eps<T>() * pmax)
+          throw error(status::bad_geometry, "pressure must vanish at the contact edges");
+        continue;
+      }
+      if (!(ps[i] > 0)) throw error(status::bad_geometry, "pressure must be positive inside the contact");
+      x_.push_back(xs[i] / a);
+      f_.push_back(ps[i] / sqrt(dm * dp));
+      praw_.push_back(ps[i]);
+      dm_.push_back(dm / a);
+      dp_.push_back(dp / a);
+    }
+    const std::size_t n = x_.size();
+    if (n < 4) throw error(status::bad_geometry, "sampled pressure: need at least 4 interior samples");
+    detail::check_edge_exponent(praw_[0], dm_[0], praw_[1], dm_[1]);
+    detail::check_edge_exponent(praw_[n - 1], dp_[n - 1], praw_[n - 2], dp_[n - 2]);
+    // PCHIP slopes
+    std::vector<T> h(n - 1), del(n - 1);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      h[i] = x_[i + 1] - x_[i];
+      del[i] = (f_[i + 1] - f_[i]) / h[i];
+    }
+    d_.assign(n, T(0));
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      if (del[i - 1] * del[i] > 0) {
+        const T w1 = 2 * h[i] + h[i - 1], w2 = h[i] + 2 * h[i - 1];
+        d_[i] = (w1 + w2) / (w1 / del[i - 1] + w2 / del[i]);
+      }
+    }
+    auto endslope = [](const T &h0, const T &h1, const T &d0, const T &d1) {
+      T d = ((2 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
+      if (d * d0 <= 0) d = 0;
+      else if (d0 * d1 <= 0 && abs(d) > abs(3 * d0)) d = 3 * d0;
+      return d;
+    };
+    d_[0] = endslope(h[0], h[1], del[0], del[1]);
+    d_[n - 1] = endslope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
+    // edge values of phi by linear extrapolation must stay positive
+    if (!(f_[0] - d_[0] * dm_[0] > 0) || !(f_[n - 1] + d_[n - 1] * dp_[n - 1] > 0))
+      throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
+    // normalisation: P = a^2 int_{-1}^{1} sqrt(1-xi^2) phi(xi) dxi (phi dimensional)
+    scale_ = 1;
+    const T I = this->tail(+1, T(2));  // int p with scale 1 (phi in p/sqrt units / a)
+    P_ = a * a * I;
+    p0_ = 2 * P_ / (pi<T>() * a);
+    scale_ = a / p0_;
+  }
+  T phi(const T &x, const T &, const T &) const override { return scale_ * interp(x, false); }
+  T dphi(const T &x, const T &, const T &) const override { return scale_ * interp(x, true); }
+  std::vector<breakpoint<T>> breakpoints() const override {
+    std::vector<breakpoint<T>> b;
+    for (const T &x : x_) b.push_back({x, false});
+    return b;
+  }
+  T load() const { return P_; }      // P
+  T p0() const { return p0_; }       // 2P/(pi a)
+  T half_width() const { return a_; }
+
+ private:
+  T interp(const T &x, bool deriv) const {
+    const std::size_t n = x_.size();
+    if (x <= x_[0]) return deriv ? d_[0] : f_[0] + d_[0] * (x - x_[0]);
+    if (x >= x_[n - 1]) return deriv ? d_[n - 1] : f_[n - 1] + d_[n - 1] * (x - x_[n - 1]);
+    const std::size_t i = std::upper_bound(x_.begin(), x_.end(), x) - x_.begin() - 1;
+    const T h = x_[i + 1] - x_[i], t = (x - x_[i]) / h;
+    const T t2 = t * t, t3 = t2 * t;
+    if (!deriv)
+      return (2 * t3 - 3 * t2 + 1) * f_[i] + (t3 - 2 * t2 + t) * h * d_[i] + (-2 * t3 + 3 * t2) * f_[i + 1] +
+             (t3 - t2) * h * d_[i + 1];
+    return ((6 * t2 - 6 * t) * f_[i] + (-6 * t2 + 6 * t) * f_[i + 1]) / h + (3 * t2 - 4 * t + 1) * d_[i] +
+           (3 * t2 - 2 * t) * d_[i + 1];
+  }
+  T a_;
+  std::vector<T> x_, f_, d_, praw_, dm_, dp_;
+  T scale_{1}, P_{0}, p0_{1};
+};
+
+// ---------------------------------------------------------------------------
+// d2. User callback p(x), dimensional, on |x| < a (std::function, or a
+// function pointer with user data). Optional breakpoints (dimensional) where
+// p is not smooth. Validated at 64 interior points (positive) and at the
+// edges (sqrt behaviour: local exponent from distances a 2^-10 and a 2^-12).
+template <class T> class callback_pressure final : public pressure_model<T> {
+ public:
+  using fn_type = std::function<T(const T &)>;
+  callback_pressure(fn_type fn, const T &a, std::vector<T> kinks = {}) : fn_(std::move(fn)), a_(a) {
+    init(kinks);
+  }
+  callback_pressure(T (*fn)(const T &, void *), void *user, const T &a, std::vector<T> kinks = {})
+      : fn_([fn, user](const T &x) { return fn(x, user); }), a_(a) {
+    init(kinks);
+  }
+  T phi(const T &x, const T &dm, const T &dp) const override {
+    using std::sqrt;
+    const T r = dm * dp;
+    if (!(r > 0)) return T(0);  // exactly at an edge (zero weight in every integral)
+    return scale_ * fn_(a_ * x) / sqrt(r);
+  }
+  std::vector<breakpoint<T>> breakpoints() const override { return bps_; }
+  T load() const { return P_; }
+  T p0() const { return p0_; }
+
+ private:
+  void init(const std::vector<T> &kinks) {
+    using std::ldexp; using std::cos;
+    if (!fn_) throw error(status::null_pointer, "pressure callback is null");
+    if (!(a_ > 0)) throw error(status::bad_size, "callback pressure: a must be > 0");
+    for (const T &k : kinks) {
+      if (!(k > -a_ && k < a_)) throw error(status::bad_geometry, "breakpoint outside the contact");
+      bps_.push_back({k / a_, true});
+    }
+    for (int i = 0; i < 64; ++i) {
+      const T x = a_ * cos(pi<T>() * (T(i) + T(0.5)) / 64);
+      const T v = fn_(x);
+      if (!(v > 0)) throw error(status::bad_geometry, "pressure must be positive inside the contact");
+    }
+    const T d1 = ldexp(a_, -12), d2 = ldexp(a_, -10);
+    detail::check_edge_exponent(fn_(-a_ + d1), d1, fn_(-a_ + d2), d2);
+    detail::check_edge_exponent(fn_(a_ - d1), d1, fn_(a_ - d2), d2);
+    scale_ = 1;
+    P_ = a_ * this->tail(+1, T(2));  // int p dx = a int p(a xi) dxi; here phi = p/sqrt(1-xi^2)
+    p0_ = 2 * P_ / (pi<T>() * a_);
+    scale_ = 1 / p0_;
+  }
+  fn_type fn_;
+  T a_;
+  std::vector<breakpoint<T>> bps_;
+  T scale_{1}, P_{0}, p0_{1};
+};
+
+// ---------------------------------------------------------------------------
+// The mirror image p(-x) of a model (for an asymmetric pressure with
+// sigma < 0, handled as sigma > 0 on the mirrored contact).
+template <class T> class mirrored_pressure final : public pressure_model<T> {
+ public:
+  explicit mirrored_pressure(const pressure_model<T> &base) : b_(base) {}
+  T phi(const T &x, const T &dm, const T &dp) const override { return b_.phi(-x, dp, dm); }
+  T dphi(const T &x, const T &dm, const T &dp) const override { return -b_.dphi(-x, dp, dm); }
+  std::vector<breakpoint<T>> breakpoints() const override {
+    auto v = b_.breakpoints();
+    for (auto &b : v) b.x = -b.x;
+    std::reverse(v.begin(), v.end());
+    return v;
+  }
+  bool symmetric() const override { return b_.symmetric(); }
+  T tail(int side, const T &c) const override { return b_.tail(-side, c); }
+
+ private:
+  const pressure_model<T> &b_;
+};
+
+}}  // namespace hs::core
