@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 
 namespace core = hs::core;
@@ -259,6 +260,55 @@ int main(int argc, char **argv) {
     out << "eval_Bx,halfslip," << rn << "," << nsB << ",,0\n";
     out << "eval_slip,halfslip," << rn << "," << nsH << ",,0\n";
     out << "energy,halfslip," << rn << "," << nsE << ",,0\n";
+  }
+  // General-pressure path (issue 4): Hertz through the general solver (error
+  // against the closed forms' reference) and the flat punch with rounded
+  // corners, b_f/a = 0.5, at several tolerances.
+  {
+    const core::hertz_pressure<double> hz;
+    const core::flat_rounded_pressure<double> flat(0.5);
+    for (double rtol : {1e-6, 1e-9, 1e-12, 0.0}) {
+      core::general_options<double> o;
+      o.rtol = rtol;
+      for (int reg = 0; reg < 2; ++reg) {
+        const auto &sc = reg == 0 ? same : opp;
+        const char *rn = reg == 0 ? "same-sign" : "opposite-sign";
+        double err = 0;
+        int order = 0;
+        for (const auto &c : sc) {
+          core::general_scene<double> g;
+          g.q = c.q;
+          g.s = c.s;
+          const auto sol = core::solve_general(hz, g, o);
+          const auto b = ref(c);
+          err = std::max(err, std::max(std::abs(sol.b1() - b.first), std::abs(sol.b2() - b.second)));
+          order = std::max(order, sol.order);
+        }
+        const double nsH = median_ns(
+            [&](int i) {
+              const auto &c = sc[size_t(i) % sc.size()];
+              core::general_scene<double> g;
+              g.q = c.q;
+              g.s = c.s;
+              g_sink = core::solve_general(hz, g, o).b1();
+            },
+            5, int(sc.size()));
+        const double nsF = median_ns(
+            [&](int i) {
+              const auto &c = sc[size_t(i) % sc.size()];
+              core::general_scene<double> g;
+              g.q = std::min(c.q, 0.9);
+              g.s = c.s;
+              g_sink = core::solve_general(flat, g, o).b1();
+            },
+            5, int(sc.size()));
+        const std::string name = "general-path rtol=" + (rtol > 0 ? std::to_string(int(std::round(-std::log10(rtol)))) : std::string("full"));
+        std::printf("%-18s %-14s %11.3g ns %14.3g %9d   (Hertz via general path; order %d)\n", name.c_str(), rn, nsH, err, 0, order);
+        std::printf("%-18s %-14s %11.3g ns %14s %9d   (flat punch b_f/a = 0.5)\n", name.c_str(), rn, nsF, "-", 0);
+        out << "solve," << name << "," << rn << "," << nsH << "," << err << ",0\n";
+        out << "flat_solve," << name << "," << rn << "," << nsF << ",,0\n";
+      }
+    }
   }
   std::printf("CSV written to %s\n", csv.c_str());
   return 0;
