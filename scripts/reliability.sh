@@ -31,7 +31,7 @@ echo "== reliability 3/4: valgrind memcheck, C ABI test"
 valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite \
   "$HS_BUILD/tests/test_capi"
 
-echo "== reliability 4/4: libFuzzer, ${HS_FUZZ_SECONDS:-25} s per target"
+echo "== reliability 4/4: libFuzzer, ${HS_FUZZ_SECONDS:-20} s per target"
 cmake -S . -B build-fuzz "${common[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DHALFSLIP_FUZZ=ON \
   -DHALFSLIP_BUILD_TESTS=OFF -DHALFSLIP_BUILD_CLI=OFF -DHALFSLIP_SANITIZE=address,undefined >/dev/null
 cmake --build build-fuzz -j "$jobs" --target fuzz_solve fuzz_ref >/dev/null
@@ -41,7 +41,7 @@ for t in solve ref; do
   cp tests/fuzz/corpus/$t/* "$work/"
   # crash inputs are written to tests/fuzz/crashes/: copy them into corpus/$t to keep them as regression tests
   log="$(mktemp)"
-  if ! build-fuzz/tests/fuzz/fuzz_$t "$work" -max_total_time="${HS_FUZZ_SECONDS:-25}" -max_len=256 -timeout=20 \
+  if ! build-fuzz/tests/fuzz/fuzz_$t "$work" -max_total_time="${HS_FUZZ_SECONDS:-20}" -max_len=256 -timeout=20 \
       -rss_limit_mb=4096 -artifact_prefix=tests/fuzz/crashes/$t- -print_final_stats=1 >"$log" 2>&1; then
     tail -40 "$log"
     echo "fuzz_$t found a failing input in tests/fuzz/crashes/ (add it to tests/fuzz/corpus/$t/)"
