@@ -5,7 +5,7 @@ set -euo pipefail
 HS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 HS_BUILD="${HS_BUILD:-$HS_ROOT/build}"
 
-hs_packages=(cmake make g++ pkg-config python3 libboost-dev libmpfr-dev libgmp-dev libeigen3-dev libgsl-dev doctest-dev)
+hs_packages=(cmake make g++ gfortran pkg-config python3 libboost-dev libmpfr-dev libgmp-dev libeigen3-dev libgsl-dev doctest-dev)
 
 hs_install_missing() {
   local missing=()

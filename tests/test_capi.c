@@ -4,6 +4,7 @@
 #include <halfslip/halfslip.h>
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -105,6 +106,15 @@ int main(void) {
     }
     sm.struct_size = 3;
     CHECK(hs_solution_summary(sol, &sm) == HS_ERR_STRUCT_SIZE);
+    /* a caller built against the 0.1 header (summary without p0, quadrature_order) */
+    {
+      hs_summary old;
+      memset(&old, 0xab, sizeof old);
+      old.struct_size = offsetof(hs_summary, p0);
+      CHECK(hs_solution_summary(sol, &old) == HS_OK);
+      CHECK(old.struct_size == offsetof(hs_summary, p0) && fabs(old.b1 - (sqrt(0.5) + 0.05)) < 1e-15);
+      CHECK(old.quadrature_order == (int)0xabababab); /* beyond the old size: untouched */
+    }
     CHECK(hs_solution_summary(NULL, &sm) == HS_ERR_NULL_POINTER);
     CHECK(hs_solution_energy(sol, NULL) == HS_ERR_NULL_POINTER);
     hs_solution_free(sol);
@@ -297,6 +307,12 @@ int main(void) {
     CHECK(hs_ref_eval(rsol, HS_REF_EVAL_BX, "1.5", buf, sizeof buf, NULL, &cd) == HS_ERR_POINT_OUTSIDE);
     CHECK(hs_ref_eval(rsol, HS_REF_EVAL_BX, "0.9q", buf, sizeof buf, NULL, &cd) == HS_ERR_BAD_NUMBER);
     CHECK(hs_ref_eval(rsol, HS_REF_EVAL_BX, NULL, buf, sizeof buf, NULL, &cd) == HS_ERR_NULL_POINTER);
+    hs_ref_solution_free(rsol);
+    rsol = NULL;
+    /* one significant digit, correctly rounded (0.749... -> 7e-01) */
+    CHECK(hs_ref_solve(&rs, 1, &rsol) == HS_OK);
+    CHECK(hs_ref_value(rsol, HS_REF_B1, buf, sizeof buf, &need, &cd) == HS_OK);
+    CHECK(strcmp(buf, "7e-01") == 0 && cd == 1);
     hs_ref_solution_free(rsol);
     rsol = NULL;
     CHECK(hs_ref_solve(&rs, 0, &rsol) == HS_ERR_BAD_OPTION && rsol == NULL);

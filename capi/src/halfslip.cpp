@@ -4,6 +4,7 @@
 #include "halfslip/halfslip.h"
 
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <memory>
 #include <new>
@@ -223,7 +224,11 @@ void hs_solution_free(hs_solution *sol) { delete sol; }
 int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
   return guard([&] {
     require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
-    require(out->struct_size == sizeof(hs_summary), core::status::struct_size, "summary struct_size");
+    // structs grow at the end: a caller built against the 0.1 header (before
+    // p0 and quadrature_order) passes the shorter size and gets those fields
+    const size_t n = out->struct_size;
+    require(n == sizeof(hs_summary) || n == offsetof(hs_summary, p0), core::status::struct_size,
+            "summary struct_size");
     hs_summary r;
     std::memset(&r, 0, sizeof r);
     r.struct_size = sizeof(hs_summary);
@@ -241,7 +246,8 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
       return 0;
     });
     r.quadrature_order = sol->general ? sol->general->order : 0;
-    *out = r;
+    r.struct_size = n;
+    std::memcpy(out, &r, n);
   });
 }
 

@@ -3,6 +3,8 @@
 #pragma once
 #include <boost/multiprecision/mpfr.hpp>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -37,6 +39,19 @@ template <class T> T parse_decimal(const std::string &s, const char *what) {
 }
 
 template <class T> std::string to_text(const T &v, int sig) {
+  if (sig == 1 && v != 0) {
+    // iostream precision 0 means "all digits" for Boost's MPFR numbers: ask
+    // MPFR for the one correctly rounded digit directly.
+    mpfr_exp_t e = 0;
+    char *d = mpfr_get_str(nullptr, &e, 10, 1, v.backend().data(), MPFR_RNDN);
+    std::string s(d);
+    mpfr_free_str(d);
+    const bool neg = s[0] == '-';
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%se%c%02ld", s.c_str(), e - 1 < 0 ? '-' : '+', std::labs(long(e - 1)));
+    (void)neg;
+    return buf;
+  }
   std::ostringstream os;
   os << std::scientific << std::setprecision(sig > 1 ? sig - 1 : 0) << v;
   return os.str();

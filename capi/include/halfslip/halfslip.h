@@ -12,9 +12,15 @@
  * (-a, -b2); the fully stuck traction is q_st(x) = (Q/pi - sigma x/4)/sqrt(a^2-x^2),
  * so that sigma > 0 moves the stick zone towards x = +a.
  *
- * Thread safety: no global mutable state. Distinct handles may be used from
- * any threads; a solution handle is immutable after hs_solve and may be read
- * (evaluated) from several threads at once.
+ * Thread safety: distinct handles may be used from any threads; a solution
+ * handle is immutable after hs_solve and may be read (evaluated) from several
+ * threads at once. The only shared state is an internal, mutex-protected
+ * cache of quadrature rules (general pressures); the MPFR precision is part
+ * of each call, never global. A pressure callback (HS_GEOMETRY_CALLBACK) must
+ * itself be thread-safe if its solution is evaluated from several threads.
+ *
+ * Structs carry a struct_size field and grow only at the end; functions that
+ * fill a struct accept the sizes of earlier versions (documented per struct).
  */
 #ifndef HALFSLIP_H
 #define HALFSLIP_H
@@ -41,7 +47,7 @@ extern "C" {
 
 /* ---- version ------------------------------------------------------------ */
 #define HS_VERSION_MAJOR 0
-#define HS_VERSION_MINOR 1
+#define HS_VERSION_MINOR 2
 #define HS_VERSION_PATCH 0
 
 /* Version of the library actually loaded (may differ from the header's). */
@@ -138,6 +144,7 @@ typedef struct hs_summary {
   double b2;
   double d1;            /* a - b1, to full relative accuracy */
   double d2;            /* a - b2 */
+  /* since 0.2: (a caller may pass struct_size = offsetof(hs_summary, p0)) */
   double p0;            /* reference pressure 2P/(pi a) actually used */
   int quadrature_order; /* Gauss-Legendre order per panel (0: closed forms) */
 } hs_summary;

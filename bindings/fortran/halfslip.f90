@@ -1,0 +1,764 @@
+! halfslip: Fortran 2003 bindings to the C ABI (capi/include/halfslip/halfslip.h).
+!
+! Conventions of this module:
+! - The C functions are reached through private bind(c) interfaces (c_hs_*);
+!   the public wrappers keep the C names (hs_solve, hs_eval_Bx, ...).
+! - Every wrapper that can fail has an optional last argument ierr. When it
+!   is present, it receives the status (HS_OK or an HS_ERR_* code) and the
+!   caller decides. When it is absent and the call fails, the wrapper prints
+!   "halfslip: <function>: <hs_strerror message>" on the error unit and
+!   executes error stop.
+! - On error, outputs are left untouched (as in C): output arguments are
+!   intent(inout) for that reason.
+! - Handles are type(c_ptr) inside hs_solution_t / hs_ref_solution_t, which
+!   start as C_NULL_PTR. Release them with hs_solution_free /
+!   hs_ref_solution_free (which reset them to C_NULL_PTR). A handle is
+!   immutable after the solve and may be evaluated from several threads.
+! - Arrays of points are explicit-shape real(c_double) arrays x(n), out(n),
+!   passed straight to the C pointers: no copy is made.
+! - The status codes, regimes and quantity selectors are integer(c_int)
+!   parameters with the values of the C header (checked by the test suite).
+! The Fortran standard used is 2008 (error stop, c_sizeof); the interop itself
+! is Fortran 2003.
+module halfslip
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_char, c_ptr, c_funptr, &
+                                         c_null_ptr, c_null_funptr, c_null_char, c_associated, c_f_pointer, &
+                                         c_loc, c_funloc, c_sizeof
+  use, intrinsic :: iso_fortran_env, only: error_unit
+  implicit none
+  private
+
+  ! ---- constants (same values as halfslip.h) ----------------------------------
+  integer(c_int), parameter, public :: HS_VERSION_MAJOR = 0
+  integer(c_int), parameter, public :: HS_VERSION_MINOR = 2
+  integer(c_int), parameter, public :: HS_VERSION_PATCH = 0
+
+  integer(c_int), parameter, public :: HS_OK                   = 0
+  integer(c_int), parameter, public :: HS_ERR_NULL_POINTER     = 1
+  integer(c_int), parameter, public :: HS_ERR_STRUCT_SIZE      = 2
+  integer(c_int), parameter, public :: HS_ERR_NOT_FINITE       = 3
+  integer(c_int), parameter, public :: HS_ERR_BAD_SIZE         = 4
+  integer(c_int), parameter, public :: HS_ERR_BAD_FRICTION     = 5
+  integer(c_int), parameter, public :: HS_ERR_GROSS_SLIDING    = 6
+  integer(c_int), parameter, public :: HS_ERR_BAD_GEOMETRY     = 7
+  integer(c_int), parameter, public :: HS_ERR_POINT_OUTSIDE    = 8
+  integer(c_int), parameter, public :: HS_ERR_BUFFER_TOO_SMALL = 9
+  integer(c_int), parameter, public :: HS_ERR_NO_CONVERGENCE   = 10
+  integer(c_int), parameter, public :: HS_ERR_BAD_OPTION       = 11
+  integer(c_int), parameter, public :: HS_ERR_OUT_OF_MEMORY    = 12
+  integer(c_int), parameter, public :: HS_ERR_INTERNAL         = 13
+  integer(c_int), parameter, public :: HS_ERR_OVERFLOW         = 14
+  integer(c_int), parameter, public :: HS_ERR_BAD_NUMBER       = 15
+
+  integer(c_int), parameter, public :: HS_GEOMETRY_HERTZ        = 1
+  integer(c_int), parameter, public :: HS_GEOMETRY_FLAT_ROUNDED = 2
+  integer(c_int), parameter, public :: HS_GEOMETRY_POWER_LAW    = 3
+  integer(c_int), parameter, public :: HS_GEOMETRY_SAMPLES      = 4
+  integer(c_int), parameter, public :: HS_GEOMETRY_CALLBACK     = 5
+
+  integer(c_int), parameter, public :: HS_REGIME_STUCK         = 0
+  integer(c_int), parameter, public :: HS_REGIME_SAME_SIGN     = 1
+  integer(c_int), parameter, public :: HS_REGIME_OPPOSITE_SIGN = 2
+
+  integer(c_int), parameter, public :: HS_REF_B1      = 1
+  integer(c_int), parameter, public :: HS_REF_B2      = 2
+  integer(c_int), parameter, public :: HS_REF_D1      = 3
+  integer(c_int), parameter, public :: HS_REF_D2      = 4
+  integer(c_int), parameter, public :: HS_REF_ENERGY1 = 5
+  integer(c_int), parameter, public :: HS_REF_ENERGY2 = 6
+  integer(c_int), parameter, public :: HS_REF_A       = 7
+  integer(c_int), parameter, public :: HS_REF_P0      = 8
+
+  integer(c_int), parameter, public :: HS_REF_EVAL_BX       = 1
+  integer(c_int), parameter, public :: HS_REF_EVAL_SLIP     = 2
+  integer(c_int), parameter, public :: HS_REF_EVAL_WORK     = 3
+  integer(c_int), parameter, public :: HS_REF_EVAL_PRESSURE = 4
+
+  ! ---- plain-data structs passed to C (layouts of halfslip.h) -------------------
+  ! Fill them with hs_scene_default / hs_options_default, then set fields.
+  type, bind(c), public :: hs_scene
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: geometry = 0
+    real(c_double)    :: a = 0, p0 = 0, f = 0, E_star = 0
+    real(c_double)    :: Q_over_fP = 0, sigma_over_fp0 = 0
+  end type hs_scene
+
+  type, bind(c), public :: hs_options
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: max_iterations = 0
+    real(c_double)    :: rtol = 0
+  end type hs_options
+
+  ! Outputs: the wrappers set struct_size themselves.
+  type, bind(c), public :: hs_summary
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: regime = -1, slip_dir1 = 0, slip_dir2 = 0, iterations = 0
+    real(c_double)    :: a = 0, b1 = 0, b2 = 0, d1 = 0, d2 = 0
+    real(c_double)    :: p0 = 0                 ! reference pressure 2P/(pi a) used
+    integer(c_int)    :: quadrature_order = 0   ! Gauss-Legendre order per panel (0: closed forms)
+  end type hs_summary
+
+  ! Pressure of a non-Hertz geometry (hs_solve_geometry). Fill it with
+  ! hs_geometry_default, then set kind and flat_over_a (HS_GEOMETRY_FLAT_ROUNDED)
+  ! or exponent (HS_GEOMETRY_POWER_LAW). Samples and callbacks are easiest
+  ! through hs_solve_samples and hs_solve_callback, which set the pointers.
+  type, bind(c), public :: hs_geometry
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: kind = 0
+    real(c_double)    :: flat_over_a = 0, exponent = 0
+    integer(c_size_t) :: n_samples = 0
+    type(c_ptr)       :: sample_x = c_null_ptr, sample_p = c_null_ptr
+    type(c_funptr)    :: pressure = c_null_funptr
+    type(c_ptr)       :: user = c_null_ptr
+  end type hs_geometry
+
+  ! The pressure callback of HS_GEOMETRY_CALLBACK: p(x) on (-a, a), in
+  ! absolute units; user is passed through. It must be bind(c) and stay
+  ! valid (and thread-safe) while the solution is used.
+  abstract interface
+    function hs_pressure_fn(x, user) bind(c) result(p)
+      import :: c_double, c_ptr
+      real(c_double), value :: x
+      type(c_ptr), value :: user
+      real(c_double) :: p
+    end function hs_pressure_fn
+  end interface
+  public :: hs_pressure_fn
+
+  type, bind(c), public :: hs_ref_summary
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: regime = -1, slip_dir1 = 0, slip_dir2 = 0, iterations = 0
+    integer(c_int)    :: digits = 0, working_digits = 0, check_digits = 0
+  end type hs_ref_summary
+
+  ! ---- handles ------------------------------------------------------------------
+  type, public :: hs_solution_t
+    type(c_ptr) :: ptr = c_null_ptr
+  end type hs_solution_t
+
+  type, public :: hs_ref_solution_t
+    type(c_ptr) :: ptr = c_null_ptr
+  end type hs_ref_solution_t
+
+  ! Reference-backend scene: decimal strings. An unallocated component means
+  ! the C default ("1" for a, p0, f, E_star; "0.5" for the two ratios). When P
+  ! is allocated, the dimensional input P, R, Q, sigma (all required) is used
+  ! instead of a, p0 and the ratios.
+  type, public :: hs_ref_scene_t
+    integer(c_int) :: geometry = HS_GEOMETRY_HERTZ
+    character(len=:), allocatable :: a, p0, f, E_star, Q_over_fP, sigma_over_fp0
+    character(len=:), allocatable :: P, R, Q, sigma
+  end type hs_ref_scene_t
+
+  ! The C layout of hs_ref_scene (private: built from hs_ref_scene_t).
+  type, bind(c) :: c_hs_ref_scene
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: geometry = 0
+    type(c_ptr)       :: a = c_null_ptr, p0 = c_null_ptr, f = c_null_ptr, E_star = c_null_ptr
+    type(c_ptr)       :: Q_over_fP = c_null_ptr, sigma_over_fp0 = c_null_ptr
+    type(c_ptr)       :: P = c_null_ptr, R = c_null_ptr, Q = c_null_ptr, sigma = c_null_ptr
+  end type c_hs_ref_scene
+
+  ! A NUL-terminated copy of a Fortran string, kept alive during a C call.
+  type :: c_string
+    character(kind=c_char), allocatable :: s(:)
+  end type c_string
+
+  public :: hs_version, hs_version_string, hs_strerror
+  public :: hs_scene_default, hs_scene_from_hertz_loads, hs_options_default
+  public :: hs_solve, hs_solution_free, hs_solution_summary, hs_solution_energy
+  public :: hs_geometry_default, hs_solve_geometry, hs_solve_samples, hs_solve_callback
+  public :: hs_eval_Bx, hs_eval_slip, hs_eval_work, hs_eval_pressure
+  public :: hs_ref_max_digits, hs_ref_solve, hs_ref_solution_free, hs_ref_solution_summary
+  public :: hs_ref_value, hs_ref_eval
+  public :: hs_associated
+
+  interface hs_associated
+    module procedure solution_associated, ref_solution_associated
+  end interface hs_associated
+
+  ! ---- the C ABI ----------------------------------------------------------------
+  interface
+    function c_strlen(s) bind(c, name="strlen") result(n)
+      import :: c_ptr, c_size_t
+      type(c_ptr), value :: s
+      integer(c_size_t) :: n
+    end function c_strlen
+
+    function c_hs_version(major, minor, patch) bind(c, name="hs_version") result(st)
+      import :: c_int
+      integer(c_int), intent(inout) :: major, minor, patch
+      integer(c_int) :: st
+    end function c_hs_version
+
+    function c_hs_version_string() bind(c, name="hs_version_string") result(s)
+      import :: c_ptr
+      type(c_ptr) :: s
+    end function c_hs_version_string
+
+    function c_hs_strerror(status) bind(c, name="hs_strerror") result(s)
+      import :: c_int, c_ptr
+      integer(c_int), value :: status
+      type(c_ptr) :: s
+    end function c_hs_strerror
+
+    function c_hs_scene_default(scene) bind(c, name="hs_scene_default") result(st)
+      import :: c_int, hs_scene
+      type(hs_scene), intent(inout) :: scene
+      integer(c_int) :: st
+    end function c_hs_scene_default
+
+    function c_hs_scene_from_hertz_loads(P, R, E_star, f, Q, sigma, scene) &
+        bind(c, name="hs_scene_from_hertz_loads") result(st)
+      import :: c_int, c_double, hs_scene
+      real(c_double), value :: P, R, E_star, f, Q, sigma
+      type(hs_scene), intent(inout) :: scene
+      integer(c_int) :: st
+    end function c_hs_scene_from_hertz_loads
+
+    function c_hs_options_default(opts) bind(c, name="hs_options_default") result(st)
+      import :: c_int, hs_options
+      type(hs_options), intent(inout) :: opts
+      integer(c_int) :: st
+    end function c_hs_options_default
+
+    function c_hs_solve(scene, opts, out) bind(c, name="hs_solve") result(st)
+      import :: c_int, c_ptr, hs_scene
+      type(hs_scene), intent(in) :: scene
+      type(c_ptr), value :: opts     ! const hs_options * (may be NULL)
+      type(c_ptr), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_solve
+
+    function c_hs_geometry_default(geometry) bind(c, name="hs_geometry_default") result(st)
+      import :: c_int, hs_geometry
+      type(hs_geometry), intent(inout) :: geometry
+      integer(c_int) :: st
+    end function c_hs_geometry_default
+
+    function c_hs_solve_geometry(scene, geometry, opts, out) bind(c, name="hs_solve_geometry") result(st)
+      import :: c_int, c_ptr, hs_scene, hs_geometry
+      type(hs_scene), intent(in) :: scene
+      type(hs_geometry), intent(in) :: geometry
+      type(c_ptr), value :: opts     ! const hs_options * (may be NULL)
+      type(c_ptr), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_solve_geometry
+
+    subroutine c_hs_solution_free(sol) bind(c, name="hs_solution_free")
+      import :: c_ptr
+      type(c_ptr), value :: sol
+    end subroutine c_hs_solution_free
+
+    function c_hs_solution_summary(sol, out) bind(c, name="hs_solution_summary") result(st)
+      import :: c_int, c_ptr, hs_summary
+      type(c_ptr), value :: sol
+      type(hs_summary), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_solution_summary
+
+    function c_hs_solution_energy(sol, energy) bind(c, name="hs_solution_energy") result(st)
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value :: sol
+      real(c_double), intent(inout) :: energy(2)
+      integer(c_int) :: st
+    end function c_hs_solution_energy
+
+    ! hs_eval_Bx, hs_eval_slip, hs_eval_work, hs_eval_pressure share one shape.
+    function c_hs_eval_Bx(sol, n, x, out) bind(c, name="hs_eval_Bx") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_Bx
+
+    function c_hs_eval_slip(sol, n, x, out) bind(c, name="hs_eval_slip") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_slip
+
+    function c_hs_eval_work(sol, n, x, out) bind(c, name="hs_eval_work") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_work
+
+    function c_hs_eval_pressure(sol, n, x, out) bind(c, name="hs_eval_pressure") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_pressure
+
+    function c_hs_ref_scene_default(scene) bind(c, name="hs_ref_scene_default") result(st)
+      import :: c_int, c_hs_ref_scene
+      type(c_hs_ref_scene), intent(inout) :: scene
+      integer(c_int) :: st
+    end function c_hs_ref_scene_default
+
+    function c_hs_ref_max_digits() bind(c, name="hs_ref_max_digits") result(n)
+      import :: c_int
+      integer(c_int) :: n
+    end function c_hs_ref_max_digits
+
+    function c_hs_ref_solve(scene, digits, out) bind(c, name="hs_ref_solve") result(st)
+      import :: c_int, c_ptr, c_hs_ref_scene
+      type(c_hs_ref_scene), intent(in) :: scene
+      integer(c_int), value :: digits
+      type(c_ptr), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_ref_solve
+
+    subroutine c_hs_ref_solution_free(sol) bind(c, name="hs_ref_solution_free")
+      import :: c_ptr
+      type(c_ptr), value :: sol
+    end subroutine c_hs_ref_solution_free
+
+    function c_hs_ref_solution_summary(sol, out) bind(c, name="hs_ref_solution_summary") result(st)
+      import :: c_int, c_ptr, hs_ref_summary
+      type(c_ptr), value :: sol
+      type(hs_ref_summary), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_ref_solution_summary
+
+    function c_hs_ref_value(sol, quantity, buf, size, needed, certified) &
+        bind(c, name="hs_ref_value") result(st)
+      import :: c_int, c_ptr, c_size_t, c_char
+      type(c_ptr), value :: sol
+      integer(c_int), value :: quantity
+      character(kind=c_char), intent(inout) :: buf(*)
+      integer(c_size_t), value :: size
+      integer(c_size_t), intent(inout) :: needed
+      integer(c_int), intent(inout) :: certified
+      integer(c_int) :: st
+    end function c_hs_ref_value
+
+    function c_hs_ref_eval(sol, what, x, buf, size, needed, certified) &
+        bind(c, name="hs_ref_eval") result(st)
+      import :: c_int, c_ptr, c_size_t, c_char
+      type(c_ptr), value :: sol
+      integer(c_int), value :: what
+      character(kind=c_char), intent(in) :: x(*)
+      character(kind=c_char), intent(inout) :: buf(*)
+      integer(c_size_t), value :: size
+      integer(c_size_t), intent(inout) :: needed
+      integer(c_int), intent(inout) :: certified
+      integer(c_int) :: st
+    end function c_hs_ref_eval
+  end interface
+
+contains
+
+  ! ---- helpers --------------------------------------------------------------------
+
+  ! Report status: into ierr when present, else stop on error with the message.
+  subroutine check(st, fname, ierr)
+    integer(c_int), intent(in) :: st
+    character(len=*), intent(in) :: fname
+    integer, intent(out), optional :: ierr
+    if (present(ierr)) then
+      ierr = int(st)
+    else if (st /= HS_OK) then
+      write (error_unit, '(a)') 'halfslip: ' // fname // ': ' // hs_strerror(int(st))
+      error stop
+    end if
+  end subroutine check
+
+  ! Fortran copy of a NUL-terminated C string ('' for NULL).
+  function from_c(p) result(s)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: s
+    character(kind=c_char), pointer :: chars(:)
+    integer(c_size_t) :: n, i
+    if (.not. c_associated(p)) then
+      s = ''
+      return
+    end if
+    n = c_strlen(p)
+    call c_f_pointer(p, chars, [n])
+    allocate (character(len=n) :: s)
+    do i = 1, n
+      s(i:i) = chars(i)
+    end do
+  end function from_c
+
+  ! NUL-terminated copy of a Fortran string (trailing blanks are kept).
+  subroutine to_c(s, cs)
+    character(len=*), intent(in) :: s
+    character(kind=c_char), allocatable, intent(inout) :: cs(:)
+    integer :: i
+    if (allocated(cs)) deallocate (cs)
+    allocate (cs(len(s) + 1))
+    do i = 1, len(s)
+      cs(i) = s(i:i)
+    end do
+    cs(len(s) + 1) = c_null_char
+  end subroutine to_c
+
+  ! Fortran copy of the first n characters of a C buffer.
+  function buf_to_f(buf, n) result(s)
+    character(kind=c_char), intent(in) :: buf(:)
+    integer, intent(in) :: n
+    character(len=:), allocatable :: s
+    integer :: i
+    allocate (character(len=n) :: s)
+    do i = 1, n
+      s(i:i) = buf(i)
+    end do
+  end function buf_to_f
+
+  ! Point to an optional string component's C copy (NULL if unallocated).
+  subroutine set_c_string(src, store, p)
+    character(len=:), allocatable, intent(in) :: src
+    type(c_string), target, intent(inout) :: store
+    type(c_ptr), intent(out) :: p
+    if (allocated(src)) then
+      call to_c(src, store%s)
+      p = c_loc(store%s)
+    else
+      p = c_null_ptr
+    end if
+  end subroutine set_c_string
+
+  logical function solution_associated(sol)
+    type(hs_solution_t), intent(in) :: sol
+    solution_associated = c_associated(sol%ptr)
+  end function solution_associated
+
+  logical function ref_solution_associated(sol)
+    type(hs_ref_solution_t), intent(in) :: sol
+    ref_solution_associated = c_associated(sol%ptr)
+  end function ref_solution_associated
+
+  ! ---- version and messages ---------------------------------------------------------
+
+  ! Version of the library actually loaded.
+  subroutine hs_version(major, minor, patch, ierr)
+    integer, intent(out) :: major, minor, patch
+    integer, intent(out), optional :: ierr
+    integer(c_int) :: ma, mi, pa, st
+    ma = 0
+    mi = 0
+    pa = 0
+    st = c_hs_version(ma, mi, pa)
+    if (st == HS_OK) then
+      major = int(ma)
+      minor = int(mi)
+      patch = int(pa)
+    end if
+    call check(st, 'hs_version', ierr)
+  end subroutine hs_version
+
+  function hs_version_string() result(s)
+    character(len=:), allocatable :: s
+    s = from_c(c_hs_version_string())
+  end function hs_version_string
+
+  ! The message of a status code (the C library's one table).
+  function hs_strerror(status) result(msg)
+    integer, intent(in) :: status
+    character(len=:), allocatable :: msg
+    msg = from_c(c_hs_strerror(int(status, c_int)))
+  end function hs_strerror
+
+  ! ---- scenes and options ----------------------------------------------------------------
+
+  ! Defaults: Hertz, a = p0 = f = E* = 1, Q/fP = 0.5, sigma/fp0 = 0.5.
+  subroutine hs_scene_default(scene, ierr)
+    type(hs_scene), intent(inout) :: scene
+    integer, intent(out), optional :: ierr
+    call check(c_hs_scene_default(scene), 'hs_scene_default', ierr)
+  end subroutine hs_scene_default
+
+  subroutine hs_scene_from_hertz_loads(P, R, E_star, f, Q, sigma, scene, ierr)
+    real(c_double), intent(in) :: P, R, E_star, f, Q, sigma
+    type(hs_scene), intent(inout) :: scene
+    integer, intent(out), optional :: ierr
+    call check(c_hs_scene_from_hertz_loads(P, R, E_star, f, Q, sigma, scene), &
+               'hs_scene_from_hertz_loads', ierr)
+  end subroutine hs_scene_from_hertz_loads
+
+  subroutine hs_options_default(opts, ierr)
+    type(hs_options), intent(inout) :: opts
+    integer, intent(out), optional :: ierr
+    call check(c_hs_options_default(opts), 'hs_options_default', ierr)
+  end subroutine hs_options_default
+
+  ! ---- double-precision solve -----------------------------------------------------------
+
+  ! Solve scene into sol (a new handle; free it with hs_solution_free). sol must
+  ! not hold a live handle: it is overwritten on success, untouched on error.
+  subroutine hs_solve(scene, sol, opts, ierr)
+    type(hs_scene), intent(in) :: scene
+    type(hs_solution_t), intent(inout) :: sol
+    type(hs_options), intent(in), target, optional :: opts
+    integer, intent(out), optional :: ierr
+    type(c_ptr) :: h, po
+    integer(c_int) :: st
+    h = c_null_ptr
+    po = c_null_ptr
+    if (present(opts)) po = c_loc(opts)
+    st = c_hs_solve(scene, po, h)
+    if (st == HS_OK) sol%ptr = h
+    call check(st, 'hs_solve', ierr)
+  end subroutine hs_solve
+
+  ! Defaults: Hertz, flat_over_a = 0.5, exponent = 2, no samples, no callback.
+  subroutine hs_geometry_default(geometry, ierr)
+    type(hs_geometry), intent(inout) :: geometry
+    integer, intent(out), optional :: ierr
+    call check(c_hs_geometry_default(geometry), 'hs_geometry_default', ierr)
+  end subroutine hs_geometry_default
+
+  ! Solve scene with the pressure of geometry (numerical Cauchy-kernel
+  ! inversion; HS_GEOMETRY_HERTZ uses the closed forms). sol as in hs_solve.
+  subroutine hs_solve_geometry(scene, geometry, sol, opts, ierr)
+    type(hs_scene), intent(in) :: scene
+    type(hs_geometry), intent(in) :: geometry
+    type(hs_solution_t), intent(inout) :: sol
+    type(hs_options), intent(in), target, optional :: opts
+    integer, intent(out), optional :: ierr
+    type(c_ptr) :: h, po
+    integer(c_int) :: st
+    h = c_null_ptr
+    po = c_null_ptr
+    if (present(opts)) po = c_loc(opts)
+    st = c_hs_solve_geometry(scene, geometry, po, h)
+    if (st == HS_OK) sol%ptr = h
+    call check(st, 'hs_solve_geometry', ierr)
+  end subroutine hs_solve_geometry
+
+  ! Pressure samples p(i) at x(i), i = 1..n (n >= 6, x increasing over
+  ! [-a, a], p vanishing like a square root at both edges, absolute units).
+  ! The library copies them: they need not outlive the call.
+  subroutine hs_solve_samples(scene, n, x, p, sol, opts, ierr)
+    type(hs_scene), intent(in) :: scene
+    integer, intent(in) :: n
+    real(c_double), intent(in), target :: x(n), p(n)
+    type(hs_solution_t), intent(inout) :: sol
+    type(hs_options), intent(in), optional :: opts
+    integer, intent(out), optional :: ierr
+    type(hs_geometry) :: g
+    integer(c_int) :: st
+    st = c_hs_geometry_default(g)
+    if (st == HS_OK) then
+      g%kind = HS_GEOMETRY_SAMPLES
+      g%n_samples = int(max(n, 0), c_size_t)
+      if (n > 0) then
+        g%sample_x = c_loc(x)
+        g%sample_p = c_loc(p)
+      end if
+      call hs_solve_geometry(scene, g, sol, opts, ierr)
+    else
+      call check(st, 'hs_solve_samples', ierr)
+    end if
+  end subroutine hs_solve_samples
+
+  ! Pressure given by a bind(c) function p(x, user) (absolute units). The
+  ! function must stay valid while the solution is used; user is passed
+  ! through (C_NULL_PTR when absent).
+  subroutine hs_solve_callback(scene, pressure, sol, user, opts, ierr)
+    type(hs_scene), intent(in) :: scene
+    procedure(hs_pressure_fn) :: pressure
+    type(hs_solution_t), intent(inout) :: sol
+    type(c_ptr), intent(in), optional :: user
+    type(hs_options), intent(in), optional :: opts
+    integer, intent(out), optional :: ierr
+    type(hs_geometry) :: g
+    integer(c_int) :: st
+    st = c_hs_geometry_default(g)
+    if (st == HS_OK) then
+      g%kind = HS_GEOMETRY_CALLBACK
+      g%pressure = c_funloc(pressure)
+      if (present(user)) g%user = user
+      call hs_solve_geometry(scene, g, sol, opts, ierr)
+    else
+      call check(st, 'hs_solve_callback', ierr)
+    end if
+  end subroutine hs_solve_callback
+
+  ! Release the handle (no-op for a null handle) and reset it to C_NULL_PTR.
+  subroutine hs_solution_free(sol)
+    type(hs_solution_t), intent(inout) :: sol
+    call c_hs_solution_free(sol%ptr)
+    sol%ptr = c_null_ptr
+  end subroutine hs_solution_free
+
+  subroutine hs_solution_summary(sol, summary, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    type(hs_summary), intent(inout) :: summary
+    integer, intent(out), optional :: ierr
+    type(hs_summary) :: tmp
+    integer(c_int) :: st
+    tmp%struct_size = c_sizeof(tmp)
+    st = c_hs_solution_summary(sol%ptr, tmp)
+    if (st == HS_OK) summary = tmp
+    call check(st, 'hs_solution_summary', ierr)
+  end subroutine hs_solution_summary
+
+  ! energy(1): zone 1 (b1, a); energy(2): zone 2 (-a, -b2).
+  subroutine hs_solution_energy(sol, energy, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    real(c_double), intent(inout) :: energy(2)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_solution_energy(sol%ptr, energy), 'hs_solution_energy', ierr)
+  end subroutine hs_solution_energy
+
+  ! Point evaluations: out(i) at x(i), i = 1..n, |x(i)| <= a. No copies.
+  subroutine hs_eval_Bx(sol, n, x, out, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_eval_Bx(sol%ptr, int(max(n, 0), c_size_t), x, out), 'hs_eval_Bx', ierr)
+  end subroutine hs_eval_Bx
+
+  subroutine hs_eval_slip(sol, n, x, out, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_eval_slip(sol%ptr, int(max(n, 0), c_size_t), x, out), 'hs_eval_slip', ierr)
+  end subroutine hs_eval_slip
+
+  subroutine hs_eval_work(sol, n, x, out, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_eval_work(sol%ptr, int(max(n, 0), c_size_t), x, out), 'hs_eval_work', ierr)
+  end subroutine hs_eval_work
+
+  subroutine hs_eval_pressure(sol, n, x, out, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_eval_pressure(sol%ptr, int(max(n, 0), c_size_t), x, out), 'hs_eval_pressure', ierr)
+  end subroutine hs_eval_pressure
+
+  ! ---- arbitrary-precision reference backend ---------------------------------------------
+
+  integer function hs_ref_max_digits()
+    hs_ref_max_digits = int(c_hs_ref_max_digits())
+  end function hs_ref_max_digits
+
+  ! Solve to `digits` significant digits. sol is overwritten on success.
+  subroutine hs_ref_solve(scene, digits, sol, ierr)
+    type(hs_ref_scene_t), intent(in) :: scene
+    integer, intent(in) :: digits
+    type(hs_ref_solution_t), intent(inout) :: sol
+    integer, intent(out), optional :: ierr
+    type(c_hs_ref_scene) :: cs
+    type(c_string), target :: store(10)
+    type(c_ptr) :: h
+    integer(c_int) :: st
+    st = c_hs_ref_scene_default(cs)
+    if (st == HS_OK) then
+      cs%geometry = scene%geometry
+      call set_c_string(scene%a, store(1), cs%a)
+      call set_c_string(scene%p0, store(2), cs%p0)
+      call set_c_string(scene%f, store(3), cs%f)
+      call set_c_string(scene%E_star, store(4), cs%E_star)
+      call set_c_string(scene%Q_over_fP, store(5), cs%Q_over_fP)
+      call set_c_string(scene%sigma_over_fp0, store(6), cs%sigma_over_fp0)
+      call set_c_string(scene%P, store(7), cs%P)
+      call set_c_string(scene%R, store(8), cs%R)
+      call set_c_string(scene%Q, store(9), cs%Q)
+      call set_c_string(scene%sigma, store(10), cs%sigma)
+      h = c_null_ptr
+      st = c_hs_ref_solve(cs, int(digits, c_int), h)
+      if (st == HS_OK) sol%ptr = h
+    end if
+    call check(st, 'hs_ref_solve', ierr)
+  end subroutine hs_ref_solve
+
+  subroutine hs_ref_solution_free(sol)
+    type(hs_ref_solution_t), intent(inout) :: sol
+    call c_hs_ref_solution_free(sol%ptr)
+    sol%ptr = c_null_ptr
+  end subroutine hs_ref_solution_free
+
+  subroutine hs_ref_solution_summary(sol, summary, ierr)
+    type(hs_ref_solution_t), intent(in) :: sol
+    type(hs_ref_summary), intent(inout) :: summary
+    integer, intent(out), optional :: ierr
+    type(hs_ref_summary) :: tmp
+    integer(c_int) :: st
+    tmp%struct_size = c_sizeof(tmp)
+    st = c_hs_ref_solution_summary(sol%ptr, tmp)
+    if (st == HS_OK) summary = tmp
+    call check(st, 'hs_ref_solution_summary', ierr)
+  end subroutine hs_ref_solution_summary
+
+  ! value: the quantity (HS_REF_*) as a decimal string in scientific notation;
+  ! certified: how many of its leading digits are certified.
+  subroutine hs_ref_value(sol, quantity, value, certified, ierr)
+    type(hs_ref_solution_t), intent(in) :: sol
+    integer, intent(in) :: quantity
+    character(len=:), allocatable, intent(inout) :: value
+    integer, intent(out), optional :: certified
+    integer, intent(out), optional :: ierr
+    character(kind=c_char), allocatable :: buf(:)
+    integer(c_size_t) :: needed
+    integer(c_int) :: st, cd
+    allocate (buf(64))
+    cd = 0
+    do
+      needed = 0
+      st = c_hs_ref_value(sol%ptr, int(quantity, c_int), buf, size(buf, kind=c_size_t), needed, cd)
+      if (st /= HS_ERR_BUFFER_TOO_SMALL .or. needed <= size(buf, kind=c_size_t)) exit
+      deallocate (buf)
+      allocate (buf(needed))
+    end do
+    if (st == HS_OK) then
+      value = buf_to_f(buf, int(needed) - 1)
+      if (present(certified)) certified = int(cd)
+    end if
+    call check(st, 'hs_ref_value', ierr)
+  end subroutine hs_ref_value
+
+  ! Point evaluation (HS_REF_EVAL_*) at the decimal point x.
+  subroutine hs_ref_eval(sol, what, x, value, certified, ierr)
+    type(hs_ref_solution_t), intent(in) :: sol
+    integer, intent(in) :: what
+    character(len=*), intent(in) :: x
+    character(len=:), allocatable, intent(inout) :: value
+    integer, intent(out), optional :: certified
+    integer, intent(out), optional :: ierr
+    character(kind=c_char), allocatable :: buf(:), cx(:)
+    integer(c_size_t) :: needed
+    integer(c_int) :: st, cd
+    call to_c(x, cx)
+    allocate (buf(64))
+    cd = 0
+    do
+      needed = 0
+      st = c_hs_ref_eval(sol%ptr, int(what, c_int), cx, buf, size(buf, kind=c_size_t), needed, cd)
+      if (st /= HS_ERR_BUFFER_TOO_SMALL .or. needed <= size(buf, kind=c_size_t)) exit
+      deallocate (buf)
+      allocate (buf(needed))
+    end do
+    if (st == HS_OK) then
+      value = buf_to_f(buf, int(needed) - 1)
+      if (present(certified)) certified = int(cd)
+    end if
+    call check(st, 'hs_ref_eval', ierr)
+  end subroutine hs_ref_eval
+
+end module halfslip

@@ -1,0 +1,508 @@
+! Test of the Fortran module halfslip against the C library: constants and
+! struct layouts agree with the header, real results (same-sign closed form,
+! opposite-sign value, reference digits), error codes through ierr, outputs
+! untouched on error. Prints "fortran: N passed, M failed"; exit status 1 on
+! any failure.
+! Pressure callbacks for hs_solve_callback (bind(c) procedures of a module).
+module test_fortran_pressures
+  use, intrinsic :: iso_c_binding, only: c_double, c_ptr, c_associated, c_f_pointer
+  implicit none
+contains
+  ! Hertz pressure p0 sqrt(1 - x^2/a^2) with p0 = 1 and a from user (a real(c_double)).
+  function hertz_p(x, user) bind(c) result(p)
+    real(c_double), value :: x
+    type(c_ptr), value :: user
+    real(c_double) :: p
+    real(c_double), pointer :: a
+    call c_f_pointer(user, a)
+    p = 0
+    if (abs(x) < a) p = sqrt((a - x) * (a + x)) / a
+  end function hertz_p
+
+  ! Not a pressure: negative on part of the contact.
+  function negative_p(x, user) bind(c) result(p)
+    real(c_double), value :: x
+    type(c_ptr), value :: user
+    real(c_double) :: p
+    p = -1
+    if (x < 0.2_c_double .and. .not. c_associated(user)) p = sqrt(1 - x * x)
+  end function negative_p
+end module test_fortran_pressures
+
+program test_fortran
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_sizeof, c_loc, c_ptr
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+  use halfslip
+  use test_fortran_pressures
+  implicit none
+
+  interface
+    function hstest_header_values(out, n) bind(c, name="hstest_header_values") result(total)
+      import :: c_int
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_int), value :: n
+      integer(c_int) :: total
+    end function hstest_header_values
+    subroutine hstest_struct_sizes(out) bind(c, name="hstest_struct_sizes")
+      import :: c_size_t
+      integer(c_size_t), intent(inout) :: out(5)
+    end subroutine hstest_struct_sizes
+  end interface
+
+  ! Same order as kValues in header_values.c.
+  integer(c_int), parameter :: kConstants(39) = [ &
+    HS_VERSION_MAJOR, HS_VERSION_MINOR, HS_VERSION_PATCH, &
+    HS_OK, HS_ERR_NULL_POINTER, HS_ERR_STRUCT_SIZE, HS_ERR_NOT_FINITE, HS_ERR_BAD_SIZE, &
+    HS_ERR_BAD_FRICTION, HS_ERR_GROSS_SLIDING, HS_ERR_BAD_GEOMETRY, HS_ERR_POINT_OUTSIDE, &
+    HS_ERR_BUFFER_TOO_SMALL, HS_ERR_NO_CONVERGENCE, HS_ERR_BAD_OPTION, HS_ERR_OUT_OF_MEMORY, &
+    HS_ERR_INTERNAL, HS_ERR_OVERFLOW, HS_ERR_BAD_NUMBER, &
+    HS_GEOMETRY_HERTZ, HS_GEOMETRY_FLAT_ROUNDED, HS_GEOMETRY_POWER_LAW, HS_GEOMETRY_SAMPLES, &
+    HS_GEOMETRY_CALLBACK, &
+    HS_REGIME_STUCK, HS_REGIME_SAME_SIGN, HS_REGIME_OPPOSITE_SIGN, &
+    HS_REF_B1, HS_REF_B2, HS_REF_D1, HS_REF_D2, HS_REF_ENERGY1, HS_REF_ENERGY2, HS_REF_A, HS_REF_P0, &
+    HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_WORK, HS_REF_EVAL_PRESSURE]
+
+  real(c_double), parameter :: pi = 3.141592653589793238462643383279503_c_double
+  integer :: passed = 0, failed = 0
+
+  call test_header_agreement()
+  call test_version_and_messages()
+  call test_same_sign()
+  call test_opposite_sign()
+  call test_errors()
+  call test_hertz_loads()
+  call test_geometries()
+  call test_reference()
+
+  write (*, '(a,i0,a,i0,a)') 'fortran: ', passed, ' passed, ', failed, ' failed'
+  if (failed /= 0) error stop 1
+
+contains
+
+  subroutine expect(cond, label)
+    logical, intent(in) :: cond
+    character(len=*), intent(in) :: label
+    if (cond) then
+      passed = passed + 1
+    else
+      failed = failed + 1
+      write (*, '(a)') 'FAILED: ' // label
+    end if
+  end subroutine expect
+
+  subroutine expect_code(got, want, label)
+    integer, intent(in) :: got, want
+    character(len=*), intent(in) :: label
+    if (got == want) then
+      passed = passed + 1
+    else
+      failed = failed + 1
+      write (*, '(a,i0,a,i0,a)') 'FAILED: ' // label // ' (status ', got, ', expected ', want, ')'
+    end if
+  end subroutine expect_code
+
+  subroutine expect_near(got, want, tol, label)
+    real(c_double), intent(in) :: got, want, tol
+    character(len=*), intent(in) :: label
+    if (abs(got - want) <= tol) then
+      passed = passed + 1
+    else
+      failed = failed + 1
+      write (*, '(a,es25.17,a,es25.17,a,es9.2)') 'FAILED: ' // label // ': ', got, ' vs ', want, ', tol ', tol
+    end if
+  end subroutine expect_near
+
+  type(hs_scene) function scene_qs(q, s) result(sc)
+    real(c_double), intent(in) :: q, s
+    call hs_scene_default(sc)
+    sc%Q_over_fP = q
+    sc%sigma_over_fp0 = s
+  end function scene_qs
+
+  integer function solve_status(sc) result(ierr)
+    type(hs_scene), intent(in) :: sc
+    type(hs_solution_t) :: sol
+    call hs_solve(sc, sol, ierr=ierr)
+    call expect(ierr == HS_OK .eqv. hs_associated(sol), 'handle set iff success')
+    call hs_solution_free(sol)
+  end function solve_status
+
+  ! Every parameter of the module equals the C macro; every bind(c) type has
+  ! the size of its C struct.
+  subroutine test_header_agreement()
+    integer(c_int) :: cvals(size(kConstants)), total
+    integer(c_size_t) :: sizes(5)
+    type(hs_geometry) :: g
+    type(hs_scene) :: sc
+    type(hs_options) :: op
+    type(hs_summary) :: sm
+    type(hs_ref_summary) :: rsm
+    integer :: i
+    cvals = -999
+    total = hstest_header_values(cvals, int(size(cvals), c_int))
+    call expect(total == size(kConstants), 'number of header constants')
+    do i = 1, size(kConstants)
+      if (cvals(i) /= kConstants(i)) then
+        write (*, '(a,i0,a,i0,a,i0)') 'constant #', i, ': Fortran ', kConstants(i), ', C ', cvals(i)
+      end if
+    end do
+    call expect(all(cvals == kConstants), 'Fortran parameters equal the header macros')
+    sizes = 0
+    call hstest_struct_sizes(sizes)
+    call expect(c_sizeof(sc) == sizes(1), 'sizeof(hs_scene)')
+    call expect(c_sizeof(op) == sizes(2), 'sizeof(hs_options)')
+    call expect(c_sizeof(sm) == sizes(3), 'sizeof(hs_summary)')
+    call expect(c_sizeof(rsm) == sizes(4), 'sizeof(hs_ref_summary)')
+    call expect(c_sizeof(g) == sizes(5), 'sizeof(hs_geometry)')
+    call hs_geometry_default(g)
+    call expect(g%struct_size == c_sizeof(g) .and. g%kind == HS_GEOMETRY_HERTZ .and. &
+                g%flat_over_a == 0.5_c_double .and. g%exponent == 2, 'hs_geometry_default')
+    call hs_scene_default(sc)
+    call expect(sc%struct_size == c_sizeof(sc), 'hs_scene_default sets struct_size')
+    call expect(sc%geometry == HS_GEOMETRY_HERTZ .and. sc%a == 1 .and. sc%E_star == 1, 'scene defaults')
+    call expect(sc%Q_over_fP == 0.5_c_double .and. sc%sigma_over_fp0 == 0.5_c_double, 'scene default ratios')
+    call hs_options_default(op)
+    call expect(op%struct_size == c_sizeof(op) .and. op%max_iterations == 100 .and. op%rtol == 0, &
+                'hs_options_default')
+  end subroutine test_header_agreement
+
+  subroutine test_version_and_messages()
+    integer :: ma, mi, pa, ierr
+    character(len=:), allocatable :: msg
+    ma = -1
+    call hs_version(ma, mi, pa, ierr)
+    call expect_code(ierr, HS_OK, 'hs_version status')
+    call expect(ma == HS_VERSION_MAJOR .and. mi == HS_VERSION_MINOR .and. pa == HS_VERSION_PATCH, &
+                'hs_version numbers')
+    call expect(hs_version_string() == '0.2.0', 'hs_version_string')
+    msg = hs_strerror(HS_ERR_GROSS_SLIDING)
+    call expect(index(msg, '|Q| >= fP') > 0, 'hs_strerror(HS_ERR_GROSS_SLIDING): ' // msg)
+    call expect(hs_strerror(HS_OK) == 'success', 'hs_strerror(HS_OK)')
+    call expect(index(hs_strerror(12345), 'unknown') > 0, 'hs_strerror(unknown code)')
+    call expect(hs_strerror(HS_ERR_BAD_FRICTION) /= hs_strerror(HS_ERR_BAD_SIZE), 'distinct messages')
+  end subroutine test_version_and_messages
+
+  ! Same-sign closed form: b1/a = sqrt(1 - Q/fP) + sigma/(4 f p0), b2 with the minus sign.
+  subroutine test_same_sign()
+    type(hs_solution_t) :: sol
+    type(hs_summary) :: sm
+    real(c_double) :: x(4), B(4), h(4), W(4), p(4), E(2)
+    integer :: ierr
+    call expect(.not. hs_associated(sol), 'handle starts null')
+    call hs_solve(scene_qs(0.5_c_double, 0.2_c_double), sol, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'same-sign solve')
+    call expect(hs_associated(sol), 'handle set')
+    call hs_solution_summary(sol, sm, ierr)
+    call expect_code(ierr, HS_OK, 'summary')
+    call expect(sm%regime == HS_REGIME_SAME_SIGN, 'same-sign regime')
+    call expect_near(sm%b1, sqrt(0.5_c_double) + 0.05_c_double, 1e-15_c_double, 'b1 same sign')
+    call expect_near(sm%b2, sqrt(0.5_c_double) - 0.05_c_double, 1e-15_c_double, 'b2 same sign')
+    call expect_near(sm%d1, 1 - sm%b1, 1e-15_c_double, 'd1 = a - b1')
+    call expect(sm%slip_dir1 == 1 .and. sm%slip_dir2 == 1, 'same-sign slip directions')
+    call expect(sm%a == 1 .and. sm%iterations == 0, 'a and closed-form iterations')
+
+    x = [0.0_c_double, 0.99_c_double, -0.99_c_double, 1.0_c_double]
+    call hs_eval_Bx(sol, 4, x, B, ierr)
+    call expect_code(ierr, HS_OK, 'eval Bx')
+    call hs_eval_slip(sol, 4, x, h)
+    call hs_eval_work(sol, 4, x, W)
+    call hs_eval_pressure(sol, 4, x, p)
+    call expect(B(1) == 0 .and. h(1) == 0 .and. W(1) == 0, 'stick zone gives 0')
+    ! eq (21): B = 2 f p0/(a E*) sqrt((x - b1)(x + b2)) in zone 1
+    call expect_near(B(2), 2 * sqrt((0.99_c_double - sm%b1) * (0.99_c_double + sm%b2)), 1e-14_c_double, &
+                     'Bx in zone 1 (eq 21)')
+    call expect(B(3) < 0 .and. h(2) > 0 .and. h(3) > 0 .and. W(2) > 0, 'signs of Bx, h, W')
+    call expect_near(p(2), sqrt(1 - 0.99_c_double**2), 1e-15_c_double, 'Hertz pressure')
+    call expect(p(4) == 0, 'pressure at the edge')
+    call hs_solution_energy(sol, E, ierr)
+    call expect_code(ierr, HS_OK, 'energy')
+    call expect(E(1) > 0 .and. E(2) > E(1), 'energies: zone 2 (longer) dissipates more')
+
+    ! a point outside: HS_ERR_POINT_OUTSIDE and the output untouched
+    B = 42
+    x(4) = 1.5_c_double
+    call hs_eval_Bx(sol, 4, x, B, ierr)
+    call expect_code(ierr, HS_ERR_POINT_OUTSIDE, 'point outside')
+    call expect(all(B == 42), 'output untouched on error')
+    x(4) = ieee_value(x(4), ieee_quiet_nan)
+    call hs_eval_slip(sol, 4, x, B, ierr)
+    call expect_code(ierr, HS_ERR_NOT_FINITE, 'NaN point')
+    call hs_eval_work(sol, 0, x, B, ierr)
+    call expect_code(ierr, HS_OK, 'zero points')
+
+    call hs_solution_free(sol)
+    call expect(.not. hs_associated(sol), 'free resets the handle')
+    call hs_solution_free(sol)   ! null handle: no-op
+    call hs_solution_summary(sol, sm, ierr)
+    call expect_code(ierr, HS_ERR_NULL_POINTER, 'summary of a null handle')
+    call hs_eval_Bx(sol, 1, x, B, ierr)
+    call expect_code(ierr, HS_ERR_NULL_POINTER, 'eval with a null handle')
+  end subroutine test_same_sign
+
+  subroutine test_opposite_sign()
+    type(hs_solution_t) :: sol
+    type(hs_summary) :: sm
+    type(hs_options) :: op
+    real(c_double) :: x(2), h(2)
+    integer :: ierr
+    call hs_options_default(op)
+    op%rtol = 1e-10_c_double
+    call hs_solve(scene_qs(0.3_c_double, 2.0_c_double), sol, op, ierr)
+    call expect_code(ierr, HS_OK, 'opposite-sign solve with options')
+    call hs_solution_summary(sol, sm)
+    call expect(sm%regime == HS_REGIME_OPPOSITE_SIGN, 'opposite-sign regime')
+    call expect_near(sm%b1, 0.749058362968991_c_double, 1e-14_c_double, 'b1 opposite sign')
+    call expect(sm%slip_dir1 == -1 .and. sm%slip_dir2 == 1, 'opposite-sign slip directions')
+    call expect(sm%iterations >= 1, 'Newton iterations counted')
+    x = [0.95_c_double, -0.95_c_double]
+    call hs_eval_slip(sol, 2, x, h)
+    call expect(h(1) < 0 .and. h(2) > 0, 'slip has the sign of the zone direction')
+    call hs_solution_free(sol)
+  end subroutine test_opposite_sign
+
+  subroutine test_errors()
+    type(hs_scene) :: sc
+    type(hs_options) :: op
+    type(hs_solution_t) :: sol
+    integer :: ierr
+    real(c_double) :: nan, inf
+    nan = ieee_value(nan, ieee_quiet_nan)
+    inf = ieee_value(inf, ieee_positive_inf)
+    call expect_code(solve_status(scene_qs(1.0_c_double, 0.0_c_double)), HS_ERR_GROSS_SLIDING, 'Q/fP = 1')
+    call expect_code(solve_status(scene_qs(-1.0_c_double, 0.0_c_double)), HS_ERR_GROSS_SLIDING, 'Q/fP = -1')
+    call expect_code(solve_status(scene_qs(nan, 0.0_c_double)), HS_ERR_NOT_FINITE, 'NaN ratio')
+    call expect_code(solve_status(scene_qs(0.1_c_double, inf)), HS_ERR_NOT_FINITE, 'infinite sigma')
+    sc = scene_qs(0.5_c_double, 0.2_c_double)
+    sc%f = 0
+    call expect_code(solve_status(sc), HS_ERR_BAD_FRICTION, 'f = 0')
+    sc = scene_qs(0.5_c_double, 0.2_c_double)
+    sc%a = -1
+    call expect_code(solve_status(sc), HS_ERR_BAD_SIZE, 'a < 0')
+    sc = scene_qs(0.5_c_double, 0.2_c_double)
+    sc%geometry = 99
+    call expect_code(solve_status(sc), HS_ERR_BAD_GEOMETRY, 'unknown geometry')
+    sc = scene_qs(0.5_c_double, 0.2_c_double)
+    sc%struct_size = 0
+    call expect_code(solve_status(sc), HS_ERR_STRUCT_SIZE, 'struct_size not set')
+    call hs_options_default(op)
+    op%max_iterations = 0
+    call hs_solve(scene_qs(0.5_c_double, 0.2_c_double), sol, op, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'max_iterations = 0')
+    call expect(.not. hs_associated(sol), 'handle untouched on error')
+    call hs_options_default(op)
+    op%rtol = 0.5_c_double
+    call hs_solve(scene_qs(0.5_c_double, 0.2_c_double), sol, op, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'rtol out of range')
+  end subroutine test_errors
+
+  ! Dimensional input: a = sqrt(4PR/(pi E*)), p0 = 2P/(pi a).
+  subroutine test_hertz_loads()
+    type(hs_scene) :: sc
+    integer :: ierr
+    real(c_double), parameter :: P = 1000, R = 0.05_c_double, E = 1.15e11_c_double, f = 0.6_c_double
+    call hs_scene_from_hertz_loads(P, R, E, f, 300.0_c_double, 2e6_c_double, sc, ierr)
+    call expect_code(ierr, HS_OK, 'from_hertz_loads')
+    call expect_near(sc%a, sqrt(4 * P * R / (pi * E)), 1e-15_c_double * sc%a, 'a from loads')
+    call expect_near(sc%p0, 2 * P / (pi * sc%a), 1e-15_c_double * sc%p0, 'p0 from loads')
+    call expect_near(sc%Q_over_fP, 300 / (f * P), 1e-16_c_double, 'Q/fP from loads')
+    sc%a = -7
+    call hs_scene_from_hertz_loads(P, R, E, f, 700.0_c_double, 0.0_c_double, sc, ierr)
+    call expect_code(ierr, HS_ERR_GROSS_SLIDING, 'from_hertz_loads: gross sliding')
+    call expect(sc%a == -7, 'scene untouched on error')
+    call hs_scene_from_hertz_loads(-P, R, E, f, 0.0_c_double, 0.0_c_double, sc, ierr)
+    call expect_code(ierr, HS_ERR_BAD_SIZE, 'from_hertz_loads: P < 0')
+    call hs_scene_from_hertz_loads(P, R, E, 0.0_c_double, 0.0_c_double, 0.0_c_double, sc, ierr)
+    call expect_code(ierr, HS_ERR_BAD_FRICTION, 'from_hertz_loads: f = 0')
+  end subroutine test_hertz_loads
+
+  ! Non-Hertz pressures. The power law with n = 2, the flat punch with a zero
+  ! flat, and the Hertz pressure given as a callback or as samples all
+  ! reproduce the Hertz closed forms.
+  subroutine test_geometries()
+    type(hs_scene) :: sc
+    type(hs_geometry) :: g
+    type(hs_solution_t) :: hz, sol
+    type(hs_summary) :: a, b
+    real(c_double), target :: unit
+    real(c_double) :: xs(41), ps(41), x1(1), B1(1), B2(1)
+    integer :: i, ierr
+    sc = scene_qs(0.3_c_double, 2.0_c_double)
+    call hs_solve(sc, hz)
+    call hs_solution_summary(hz, a)
+    call expect(a%quadrature_order == 0 .and. a%p0 == 1, 'Hertz: closed forms, p0')
+
+    call hs_geometry_default(g)
+    g%kind = HS_GEOMETRY_POWER_LAW
+    g%exponent = 2
+    call hs_solve_geometry(sc, g, sol, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'power law n = 2')
+    call hs_solution_summary(sol, b)
+    call expect(b%regime == a%regime .and. b%quadrature_order > 0, 'power law: regime and quadrature order')
+    call expect_near(b%b1, a%b1, 1e-13_c_double, 'power law n = 2: b1 = Hertz')
+    call expect_near(b%b2, a%b2, 1e-13_c_double, 'power law n = 2: b2 = Hertz')
+    x1 = 0.95_c_double
+    call hs_eval_Bx(sol, 1, x1, B1)
+    call hs_eval_Bx(hz, 1, x1, B2)
+    call expect_near(B1(1), B2(1), 1e-10_c_double, 'power law n = 2: Bx = Hertz')
+    call hs_solution_free(sol)
+
+    g%kind = HS_GEOMETRY_FLAT_ROUNDED
+    g%flat_over_a = 0
+    call hs_solve_geometry(sc, g, sol)
+    call hs_solution_summary(sol, b)
+    call expect_near(b%b1, a%b1, 1e-13_c_double, 'flat punch, no flat: b1 = Hertz')
+    call hs_solution_free(sol)
+    ! a real flat: shear alone gives a centred stick zone beyond the flat
+    g%flat_over_a = 0.6_c_double
+    call hs_solve_geometry(scene_qs(0.5_c_double, 0.0_c_double), g, sol)
+    call hs_solution_summary(sol, b)
+    call expect(b%regime == HS_REGIME_SAME_SIGN .and. abs(b%b1 - b%b2) < 1e-14_c_double .and. &
+                b%b1 > 0.6_c_double .and. b%b1 < 1, 'flat punch 0.6: centred stick zone')
+    call hs_solution_free(sol)
+
+    unit = 1
+    call hs_solve_callback(sc, hertz_p, sol, user=c_loc(unit), ierr=ierr)
+    call expect_code(ierr, HS_OK, 'callback pressure')
+    call hs_solution_summary(sol, b)
+    call expect_near(b%b1, a%b1, 1e-12_c_double, 'callback Hertz: b1')
+    call expect_near(b%b2, a%b2, 1e-12_c_double, 'callback Hertz: b2')
+    call expect_near(b%p0, 1.0_c_double, 1e-13_c_double, 'callback Hertz: p0 from the pressure')
+    call hs_eval_Bx(sol, 1, x1, B1)   ! evaluation calls back into Fortran
+    call expect_near(B1(1), B2(1), 1e-9_c_double, 'callback Hertz: Bx')
+    call hs_solution_free(sol)
+
+    do i = 1, 41
+      xs(i) = -cos(pi * (i - 1) / 40)
+      ps(i) = hertz_p(xs(i), c_loc(unit))
+    end do
+    xs(1) = -1
+    xs(41) = 1
+    call hs_solve_samples(sc, 41, xs, ps, sol, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'sampled pressure')
+    call hs_solution_summary(sol, b)
+    call expect_near(b%b1, a%b1, 1e-10_c_double, 'samples of Hertz: b1')
+    call expect_near(b%b2, a%b2, 1e-10_c_double, 'samples of Hertz: b2')
+    call hs_solution_free(sol)
+
+    ! bad geometries
+    ps(21) = -1
+    call hs_solve_samples(sc, 41, xs, ps, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'negative sample')
+    call hs_solve_samples(sc, 3, xs, ps, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'too few samples')
+    call hs_solve_callback(sc, negative_p, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'negative callback pressure')
+    call expect(.not. hs_associated(sol), 'handle untouched by failed geometry solves')
+    g%kind = HS_GEOMETRY_FLAT_ROUNDED
+    g%flat_over_a = 1
+    call hs_solve_geometry(sc, g, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'flat_over_a = 1')
+    g%kind = HS_GEOMETRY_POWER_LAW
+    g%exponent = 1
+    call hs_solve_geometry(sc, g, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'exponent = 1')
+    g%kind = 42
+    call hs_solve_geometry(sc, g, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'unknown geometry kind')
+    g%struct_size = 0
+    call hs_solve_geometry(sc, g, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_STRUCT_SIZE, 'geometry struct_size')
+    call hs_geometry_default(g)
+    g%kind = HS_GEOMETRY_POWER_LAW
+    g%exponent = 3
+    call hs_solve_geometry(scene_qs(1.0_c_double, 0.0_c_double), g, sol, ierr=ierr)
+    call expect_code(ierr, HS_ERR_GROSS_SLIDING, 'power law: gross sliding')
+    call hs_solution_free(hz)
+  end subroutine test_geometries
+
+  subroutine test_reference()
+    type(hs_ref_scene_t) :: rs, rd
+    type(hs_ref_solution_t) :: rsol, rsol2
+    type(hs_ref_summary) :: rsm
+    type(hs_scene) :: sc
+    type(hs_solution_t) :: sol
+    type(hs_summary) :: sm
+    character(len=:), allocatable :: v, v200, bx
+    integer :: ierr, cd, many
+    real(c_double) :: b1
+    call expect(hs_ref_max_digits() >= 60, 'hs_ref_max_digits')
+    rs%Q_over_fP = '0.3'
+    rs%sigma_over_fp0 = '2'
+    call hs_ref_solve(rs, 30, rsol, ierr)
+    call expect_code(ierr, HS_OK, 'reference solve at 30 digits')
+    call hs_ref_solution_summary(rsol, rsm, ierr)
+    call expect_code(ierr, HS_OK, 'reference summary')
+    call expect(rsm%regime == HS_REGIME_OPPOSITE_SIGN .and. rsm%digits == 30 .and. rsm%working_digits >= 40 &
+                .and. rsm%slip_dir1 == -1, 'reference summary values')
+    cd = -1
+    call hs_ref_value(rsol, HS_REF_B1, v, cd, ierr)
+    call expect_code(ierr, HS_OK, 'reference b1')
+    call expect(index(v, '7.490583629689906330026357657') == 1, 'reference b1 digits: ' // v)
+    call expect(cd == 30, 'reference b1 certified to 30 digits')
+    read (v, *) b1
+    call expect_near(b1, 0.749058362968991_c_double, 1e-15_c_double, 'reference b1 read back')
+    call hs_ref_eval(rsol, HS_REF_EVAL_BX, '0.9', bx, cd, ierr)
+    call expect_code(ierr, HS_OK, 'reference Bx')
+    call expect(bx(1:1) == '-' .and. cd == 30, 'reference Bx in zone 1 is negative')
+    v = 'unchanged'
+    call hs_ref_eval(rsol, HS_REF_EVAL_BX, '1.5', v, cd, ierr)
+    call expect_code(ierr, HS_ERR_POINT_OUTSIDE, 'reference point outside')
+    call expect(v == 'unchanged', 'reference value untouched on error')
+    call hs_ref_eval(rsol, HS_REF_EVAL_BX, '0.9q', v, cd, ierr)
+    call expect_code(ierr, HS_ERR_BAD_NUMBER, 'reference bad number')
+    call hs_ref_value(rsol, 99, v, cd, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'reference unknown quantity')
+    call hs_ref_solution_free(rsol)
+    call expect(.not. hs_associated(rsol), 'reference free resets the handle')
+
+    ! many digits (200, or fewer with a short precision ladder): the string
+    ! outgrows the wrappers' first 64-byte buffer (resize path)
+    many = min(200, hs_ref_max_digits())
+    call hs_ref_solve(rs, many, rsol, ierr)
+    call expect_code(ierr, HS_OK, 'reference solve at many digits')
+    call hs_ref_value(rsol, HS_REF_B1, v200, cd, ierr)
+    call expect_code(ierr, HS_OK, 'reference b1 at many digits')
+    call expect(len(v200) > max(many, 64) .and. v200(1:31) == '7.49058362968990633002635765716' &
+                .and. cd == many, 'reference b1 at many digits extends the 30-digit value')
+    call hs_ref_solution_free(rsol)
+
+    ! bad inputs
+    call hs_ref_solve(rs, 0, rsol, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'reference digits = 0')
+    call hs_ref_solve(rs, hs_ref_max_digits() + 1, rsol, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'reference digits too many')
+    rs%Q_over_fP = 'abc'
+    call hs_ref_solve(rs, 30, rsol, ierr)
+    call expect_code(ierr, HS_ERR_BAD_NUMBER, 'reference unparsable ratio')
+    rs%Q_over_fP = '1'
+    call hs_ref_solve(rs, 30, rsol, ierr)
+    call expect_code(ierr, HS_ERR_GROSS_SLIDING, 'reference gross sliding')
+    rs%Q_over_fP = '0.3'
+    rs%f = '-1'
+    call hs_ref_solve(rs, 30, rsol, ierr)
+    call expect_code(ierr, HS_ERR_BAD_FRICTION, 'reference f < 0')
+    call expect(.not. hs_associated(rsol), 'reference handle untouched on error')
+    rd%P = '1000'
+    call hs_ref_solve(rd, 30, rsol2, ierr)
+    call expect_code(ierr, HS_ERR_NULL_POINTER, 'reference P without R, Q, sigma')
+
+    ! dimensional input agrees with the double solve of the same loads
+    rd%R = '0.05'
+    rd%E_star = '1.15e11'
+    rd%f = '0.6'
+    rd%Q = '300'
+    rd%sigma = '2e6'
+    call hs_ref_solve(rd, 30, rsol2, ierr)
+    call expect_code(ierr, HS_OK, 'reference dimensional solve')
+    call hs_ref_value(rsol2, HS_REF_B1, v, cd, ierr)
+    read (v, *) b1
+    call hs_scene_from_hertz_loads(1000.0_c_double, 0.05_c_double, 1.15e11_c_double, 0.6_c_double, &
+                                   300.0_c_double, 2e6_c_double, sc)
+    call hs_solve(sc, sol)
+    call hs_solution_summary(sol, sm)
+    call expect_near(b1, sm%b1, 4e-16_c_double * sm%a, 'reference and double b1 agree (dimensional)')
+    call hs_solution_free(sol)
+    call hs_ref_solution_free(rsol2)
+  end subroutine test_reference
+
+end program test_fortran

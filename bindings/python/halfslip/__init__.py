@@ -1,0 +1,610 @@
+"""halfslip: half-plane partial-slip contact (Python binding of the C ABI).
+
+Pure Python (ctypes, standard library only). The shared library
+libhalfslip.so.0 is looked for next to this package first (also in the
+library directory recorded by ``cmake --install``), then at the path in the
+environment variable ``HALFSLIP_LIBRARY``, then by the system loader
+(``ctypes.util.find_library``). Its major version must equal this package's.
+
+    >>> import halfslip
+    >>> with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2) as sol:
+    ...     sol.regime_name, round(sol.b1, 12), sol.slip_dir1
+    ('opposite-sign', 0.749058362969, -1)
+    >>> halfslip.solve_reference(30, Q_over_fP="0.3", sigma_over_fp0="2").b1
+    Certified('7.49058362968990633002635765716e-01', certified=30)
+
+Sign conventions: docs/conventions.md. Errors raise HalfslipError, whose
+status is the C status code and whose message is the C library's
+hs_strerror text.
+"""
+
+import array
+import ctypes
+import sys
+from ctypes import byref, c_double, c_int, c_size_t
+
+from . import _clib
+
+__version__ = "0.2.0"
+__all__ = [
+    "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified",
+    "solve", "from_hertz_loads", "solve_reference", "ref_max_digits",
+    "version", "library_version", "library_path", "strerror",
+]
+
+# Major version of the C library this package needs.
+_EXPECTED_MAJOR = int(__version__.split(".")[0])
+
+# ---- constants (values of capi/include/halfslip/halfslip.h, without HS_) ----
+OK = 0
+ERR_NULL_POINTER = 1
+ERR_STRUCT_SIZE = 2
+ERR_NOT_FINITE = 3
+ERR_BAD_SIZE = 4
+ERR_BAD_FRICTION = 5
+ERR_GROSS_SLIDING = 6
+ERR_BAD_GEOMETRY = 7
+ERR_POINT_OUTSIDE = 8
+ERR_BUFFER_TOO_SMALL = 9
+ERR_NO_CONVERGENCE = 10
+ERR_BAD_OPTION = 11
+ERR_OUT_OF_MEMORY = 12
+ERR_INTERNAL = 13
+ERR_OVERFLOW = 14
+ERR_BAD_NUMBER = 15
+
+GEOMETRY_HERTZ = 1
+GEOMETRY_FLAT_ROUNDED = 2
+GEOMETRY_POWER_LAW = 3
+GEOMETRY_SAMPLES = 4
+GEOMETRY_CALLBACK = 5
+
+REGIME_STUCK = 0
+REGIME_SAME_SIGN = 1
+REGIME_OPPOSITE_SIGN = 2
+
+_REGIME_NAMES = {REGIME_STUCK: "stuck", REGIME_SAME_SIGN: "same-sign", REGIME_OPPOSITE_SIGN: "opposite-sign"}
+_GEOMETRY_NAMES = {"hertz": GEOMETRY_HERTZ, "flat-rounded": GEOMETRY_FLAT_ROUNDED, "power-law": GEOMETRY_POWER_LAW,
+                   "samples": GEOMETRY_SAMPLES, "callback": GEOMETRY_CALLBACK}
+_STATUS_NAMES = {v: "HS_" + k for k, v in list(globals().items()) if k == "OK" or k.startswith("ERR_")}
+
+# quantity and evaluation selectors of hs_ref_value / hs_ref_eval
+_REF_QUANTITIES = {"b1": 1, "b2": 2, "d1": 3, "d2": 4, "energy1": 5, "energy2": 6, "a": 7, "p0": 8}
+_REF_EVALS = {"Bx": 1, "slip": 2, "work": 3, "pressure": 4}
+
+
+# ---- the library ----------------------------------------------------------------
+
+def _check_version(lib, path, expected_major=None):
+    """Raise ImportError unless the loaded library's major version is the one
+    this package expects. Returns (major, minor, patch)."""
+    if expected_major is None:
+        expected_major = _EXPECTED_MAJOR
+    ma, mi, pa = c_int(-1), c_int(-1), c_int(-1)
+    st = lib.hs_version(byref(ma), byref(mi), byref(pa))
+    if st != 0:
+        raise ImportError("halfslip: hs_version failed in %s (status %d)" % (path, st))
+    if ma.value != expected_major:
+        raise ImportError(
+            "halfslip: the library %s is version %d.%d.%d, but the Python package halfslip %s needs "
+            "major version %d; install matching versions, or set HALFSLIP_LIBRARY to a compatible "
+            "libhalfslip" % (path, ma.value, mi.value, pa.value, __version__, expected_major))
+    return ma.value, mi.value, pa.value
+
+
+def _load():
+    lib, path = _clib.load_library()
+    _clib.declare(lib, path)
+    _check_version(lib, path)
+    _clib.check_struct_sizes(lib, path)
+    return lib, path
+
+
+_lib, library_path = _load()
+library_version = _lib.hs_version_string().decode("ascii")
+
+
+# ---- errors ------------------------------------------------------------------------
+
+def strerror(status):
+    """The C library's message for a status code."""
+    return _lib.hs_strerror(int(status)).decode("utf-8", "replace")
+
+
+class HalfslipError(RuntimeError):
+    """A halfslip C function returned an error status.
+
+    Attributes: status (the HS_ERR_* code, also exported here as ERR_*),
+    message (hs_strerror's text) and function (the C function's name)."""
+
+    def __init__(self, status, function=None):
+        self.status = int(status)
+        self.message = strerror(self.status)
+        self.function = function
+        name = _STATUS_NAMES.get(self.status, "unknown status")
+        where = "%s: " % function if function else ""
+        super().__init__("%s%s (%s = %d)" % (where, self.message, name, self.status))
+
+    def __reduce__(self):  # picklable (multiprocessing)
+        return (HalfslipError, (self.status, self.function))
+
+
+def _check(status, function):
+    if status != 0:
+        raise HalfslipError(status, function)
+
+
+def version():
+    """Version of the loaded C library as a tuple (major, minor, patch)."""
+    return _check_version(_lib, library_path)
+
+
+# ---- arrays ---------------------------------------------------------------------------
+
+_NATIVE_DOUBLE = {"d", "@d", "=d", ("<d" if sys.byteorder == "little" else ">d")}
+
+
+def _flatten(v):
+    if isinstance(v, list):
+        for item in v:
+            yield from _flatten(item)
+    else:
+        yield v
+
+
+def _points(x):
+    """(ctypes double array or None, n, is_scalar). C-contiguous writable
+    buffers of native doubles (array.array('d'), numpy float64, ...) are
+    passed without a copy; anything else is converted once."""
+    if isinstance(x, (int, float)) and not isinstance(x, bool):
+        return (c_double * 1)(float(x)), 1, True
+    try:
+        mv = memoryview(x)
+    except TypeError:
+        mv = None
+    if mv is not None:
+        if mv.ndim == 0:
+            return (c_double * 1)(float(mv.tolist())), 1, True
+        if mv.format in _NATIVE_DOUBLE and mv.c_contiguous:
+            n = mv.nbytes // ctypes.sizeof(c_double)
+            if n == 0:
+                return None, 0, False
+            if mv.readonly:
+                return (c_double * n).from_buffer_copy(mv), n, False
+            return (c_double * n).from_buffer(mv), n, False
+        values = array.array("d", _flatten(mv.tolist()))
+    else:
+        try:
+            values = array.array("d", x)
+        except TypeError:
+            try:
+                values = array.array("d", (float(v) for v in x))
+            except (TypeError, ValueError) as e:
+                raise TypeError("halfslip: points must be a number or numbers (a sequence, iterable or "
+                                "buffer of numbers): %s" % e) from None
+    n = len(values)
+    if n == 0:
+        return None, 0, False
+    return (c_double * n).from_buffer(values), n, False
+
+
+# ---- double-precision solves ---------------------------------------------------------------
+
+class Scene:
+    """A scene in the dimensionless form of the C ABI (hs_scene): contact
+    half-width a, reference pressure p0, friction f, composite modulus E_star,
+    ratios Q_over_fP (|.| < 1) and sigma_over_fp0. Unset values take the C
+    library's defaults (hs_scene_default)."""
+
+    _FIELDS = ("a", "p0", "f", "E_star", "Q_over_fP", "sigma_over_fp0")
+
+    def __init__(self, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None,
+                 geometry=None):
+        c = _clib.Scene()
+        _check(_lib.hs_scene_default(byref(c)), "hs_scene_default")
+        given = dict(a=a, p0=p0, f=f, E_star=E_star, Q_over_fP=Q_over_fP, sigma_over_fp0=sigma_over_fp0)
+        for k, v in given.items():
+            if v is not None:
+                setattr(c, k, float(v))
+        if geometry is not None:
+            c.geometry = int(geometry)
+        self._c = c
+
+    @classmethod
+    def _from_c(cls, c):
+        self = cls.__new__(cls)
+        self._c = c
+        return self
+
+    a = property(lambda self: self._c.a, doc="contact half-width")
+    p0 = property(lambda self: self._c.p0, doc="reference pressure 2P/(pi a)")
+    f = property(lambda self: self._c.f, doc="coefficient of friction")
+    E_star = property(lambda self: self._c.E_star, doc="composite plane-strain modulus")
+    Q_over_fP = property(lambda self: self._c.Q_over_fP, doc="shear force ratio Q/(fP)")
+    sigma_over_fp0 = property(lambda self: self._c.sigma_over_fp0, doc="bulk tension ratio sigma/(f p0)")
+    geometry = property(lambda self: self._c.geometry, doc="GEOMETRY_HERTZ")
+
+    def __repr__(self):
+        return "Scene(%s)" % ", ".join("%s=%r" % (k, getattr(self, k)) for k in self._FIELDS)
+
+    def solve(self, *, max_iterations=None, rtol=None, geometry=None, flat_over_a=None, exponent=None,
+              samples=None, pressure=None):
+        """Solve this scene; returns a Solution. Without geometry arguments the
+        pressure is Hertz (closed forms). Otherwise (numerical inversion):
+          flat_over_a=b_f/a      flat punch with rounded corners
+          exponent=n             power-law profile g = A|x|^n, n > 1
+          samples=(x, p)         pressure samples (>= 6, x increasing over
+                                 [-a, a], p ~ sqrt at both edges; absolute units)
+          pressure=callable      p(x) -> float on (-a, a), absolute units; kept
+                                 by the Solution (it is called again by the
+                                 evaluations); an exception it raises propagates
+        geometry ("hertz", "flat-rounded", "power-law", "samples", "callback"
+        or a GEOMETRY_* value) may name the kind explicitly; the C defaults
+        fill what is not given (flat_over_a = 0.5, exponent = 2)."""
+        opts = None
+        if max_iterations is not None or rtol is not None:
+            o = _clib.Options()
+            _check(_lib.hs_options_default(byref(o)), "hs_options_default")
+            if max_iterations is not None:
+                o.max_iterations = int(max_iterations)
+            if rtol is not None:
+                o.rtol = float(rtol)
+            opts = byref(o)
+        kind = _geometry_kind(geometry, flat_over_a, exponent, samples, pressure)
+        h = _clib.SolutionP()
+        if kind is None:
+            _check(_lib.hs_solve(byref(self._c), opts, byref(h)), "hs_solve")
+            return Solution(h)
+        g = _clib.Geometry()
+        _check(_lib.hs_geometry_default(byref(g)), "hs_geometry_default")
+        g.kind = kind
+        if flat_over_a is not None:
+            g.flat_over_a = float(flat_over_a)
+        if exponent is not None:
+            g.exponent = float(exponent)
+        arrays = None
+        if samples is not None:
+            try:
+                xs, ps = samples
+            except (TypeError, ValueError):
+                raise TypeError("halfslip: samples must be a pair (x, p) of sequences") from None
+            (xa, nx, _), (pa, np_, _) = _points(xs), _points(ps)
+            if nx != np_:
+                raise ValueError("halfslip: samples: %d abscissae but %d pressures" % (nx, np_))
+            arrays = (xa, pa)   # alive during the call; the library copies them
+            g.n_samples = nx
+            if nx:
+                g.sample_x = ctypes.cast(xa, ctypes.POINTER(c_double))
+                g.sample_p = ctypes.cast(pa, ctypes.POINTER(c_double))
+        callback = None
+        if pressure is not None:
+            callback = _PressureCallback(pressure)
+            g.pressure = callback.cfunc
+        st = _lib.hs_solve_geometry(byref(self._c), byref(g), opts, byref(h))
+        del arrays
+        if st != 0:
+            _raise(st, "hs_solve_geometry", callback)
+        return Solution(h, callback)
+
+
+def _geometry_kind(geometry, flat_over_a, exponent, samples, pressure):
+    implied = [k for k, v in ((GEOMETRY_FLAT_ROUNDED, flat_over_a), (GEOMETRY_POWER_LAW, exponent),
+                              (GEOMETRY_SAMPLES, samples), (GEOMETRY_CALLBACK, pressure)) if v is not None]
+    if geometry is None:
+        if len(implied) > 1:
+            raise TypeError("halfslip: give only one of flat_over_a, exponent, samples, pressure")
+        return implied[0] if implied else None
+    if isinstance(geometry, str):
+        try:
+            kind = _GEOMETRY_NAMES[geometry]
+        except KeyError:
+            raise ValueError("halfslip: unknown geometry %r (one of %s)"
+                             % (geometry, ", ".join(_GEOMETRY_NAMES))) from None
+    else:
+        kind = int(geometry)
+    if any(k != kind for k in implied):
+        raise TypeError("halfslip: the geometry arguments do not match geometry=%r" % (geometry,))
+    return kind
+
+
+class _PressureCallback:
+    """A Python pressure function behind a C function pointer. An exception
+    it raises is kept, NaN is returned to C (which then fails with
+    HS_ERR_NOT_FINITE), and the exception is raised again in Python."""
+
+    def __init__(self, fn):
+        if not callable(fn):
+            raise TypeError("halfslip: pressure must be callable")
+        self.fn = fn
+        self.error = None
+        self.cfunc = _clib.PressureFn(self._call)
+
+    def _call(self, x, user):
+        try:
+            return float(self.fn(x))
+        except BaseException as e:  # noqa: B902 - re-raised in the caller's thread
+            if self.error is None:
+                self.error = e
+            return float("nan")
+
+
+def _raise(status, function, callback=None):
+    if callback is not None and callback.error is not None:
+        err, callback.error = callback.error, None
+        raise err
+    raise HalfslipError(status, function)
+
+
+def from_hertz_loads(P, R, E_star, f, Q, sigma):
+    """Scene of a cylinder (radius of relative curvature R) pressed by the
+    normal load P (per unit length), with shear force Q and bulk tension
+    sigma: a = sqrt(4PR/(pi E*)), p0 = 2P/(pi a). Returns a Scene."""
+    c = _clib.Scene()
+    _check(_lib.hs_scene_from_hertz_loads(float(P), float(R), float(E_star), float(f), float(Q),
+                                          float(sigma), byref(c)), "hs_scene_from_hertz_loads")
+    return Scene._from_c(c)
+
+
+def solve(Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None, scene=None,
+          max_iterations=None, rtol=None, geometry=None, flat_over_a=None, exponent=None, samples=None,
+          pressure=None):
+    """Solve a scene given by its ratios (and optionally a, p0, f, E_star),
+    or an existing Scene (scene=...). Unset values take the C defaults. The
+    pressure is Hertz unless a geometry is given (see Scene.solve). Returns
+    a Solution (a context manager that frees the C handle)."""
+    if scene is None:
+        scene = Scene(Q_over_fP, sigma_over_fp0, a=a, p0=p0, f=f, E_star=E_star)
+    elif any(v is not None for v in (Q_over_fP, sigma_over_fp0, a, p0, f, E_star)):
+        raise TypeError("solve: give either scene or scene values, not both")
+    return scene.solve(max_iterations=max_iterations, rtol=rtol, geometry=geometry, flat_over_a=flat_over_a,
+                       exponent=exponent, samples=samples, pressure=pressure)
+
+
+class Solution:
+    """A solved scene (an immutable C handle; safe to evaluate from several
+    threads). Use as a context manager, or call close(); the handle is also
+    freed when the object is garbage collected. The summary properties stay
+    readable after close()."""
+
+    def __init__(self, handle, callback=None):
+        self._h = handle
+        self._callback = callback   # a pressure callback the C solution calls
+        s = _clib.Summary()
+        s.struct_size = ctypes.sizeof(s)
+        st = _lib.hs_solution_summary(handle, byref(s))
+        if st != 0:
+            self.close()
+            raise HalfslipError(st, "hs_solution_summary")
+        self._s = s
+
+    # summary
+    regime = property(lambda self: self._s.regime, doc="REGIME_STUCK, REGIME_SAME_SIGN or REGIME_OPPOSITE_SIGN")
+    regime_name = property(lambda self: _REGIME_NAMES.get(self._s.regime, "unknown"))
+    a = property(lambda self: self._s.a, doc="contact half-width")
+    b1 = property(lambda self: self._s.b1, doc="the stick zone is (-b2, b1)")
+    b2 = property(lambda self: self._s.b2)
+    d1 = property(lambda self: self._s.d1, doc="a - b1, to full relative accuracy")
+    d2 = property(lambda self: self._s.d2, doc="a - b2")
+    slip_dir1 = property(lambda self: self._s.slip_dir1, doc="+1, -1, or 0 if zone 1 is empty")
+    slip_dir2 = property(lambda self: self._s.slip_dir2)
+    iterations = property(lambda self: self._s.iterations, doc="Newton iterations (0 for closed forms)")
+    p0 = property(lambda self: self._s.p0, doc="reference pressure 2P/(pi a) used")
+    quadrature_order = property(lambda self: self._s.quadrature_order,
+                                doc="Gauss-Legendre order per panel (0: closed forms)")
+
+    def _handle(self):
+        if not self._h:
+            raise ValueError("halfslip: the solution has been closed")
+        return self._h
+
+    def close(self):
+        h, self._h = getattr(self, "_h", None), None
+        if h:
+            _lib.hs_solution_free(h)
+        self._callback = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # interpreter shutdown
+            pass
+
+    def __repr__(self):
+        return "<halfslip.Solution %s b1=%.17g b2=%.17g%s>" % (
+            self.regime_name, self.b1, self.b2, "" if self._h else " (closed)")
+
+    def energy(self):
+        """(E1, E2): energy dissipated in zone 1 (b1, a) and zone 2 (-a, -b2)."""
+        e = (c_double * 2)()
+        st = _lib.hs_solution_energy(self._handle(), e)
+        if st != 0:
+            _raise(st, "hs_solution_energy", self._callback)
+        return e[0], e[1]
+
+    def _eval(self, fn, name, x):
+        h = self._handle()
+        xs, n, scalar = _points(x)
+        out = array.array("d", bytes(n * ctypes.sizeof(c_double)))
+        if n:
+            st = fn(h, n, xs, (c_double * n).from_buffer(out))
+        else:
+            st = fn(h, 0, None, None)
+        if st != 0:
+            _raise(st, name, self._callback)
+        return out[0] if scalar else out
+
+    def Bx(self, x):
+        """Dislocation density B_x = dh/dx at x (a number or a sequence/buffer
+        of numbers, |x| <= a); a float or an array.array('d')."""
+        return self._eval(_lib.hs_eval_Bx, "hs_eval_Bx", x)
+
+    def slip(self, x):
+        """Relative slip h(x), zero at the stick boundaries."""
+        return self._eval(_lib.hs_eval_slip, "hs_eval_slip", x)
+
+    def work(self, x):
+        """Friction work density W(x) = f p(x) |h(x)| for monotonic loading."""
+        return self._eval(_lib.hs_eval_work, "hs_eval_work", x)
+
+    def pressure(self, x):
+        """Contact pressure p(x) of the scene's geometry."""
+        return self._eval(_lib.hs_eval_pressure, "hs_eval_pressure", x)
+
+
+# ---- arbitrary-precision reference backend ---------------------------------------------------
+
+class Certified(str):
+    """A decimal string (scientific notation) with the number of its leading
+    significant digits that are certified, in the attribute `certified`."""
+
+    def __new__(cls, text, certified):
+        self = super().__new__(cls, text)
+        self.certified = certified
+        return self
+
+    def __repr__(self):
+        return "Certified(%s, certified=%d)" % (str.__repr__(self), self.certified)
+
+
+def ref_max_digits():
+    """Largest number of digits solve_reference accepts."""
+    return _lib.hs_ref_max_digits()
+
+
+def _decimal(v):
+    if v is None:
+        return None
+    return (v if isinstance(v, str) else str(v)).encode("ascii")
+
+
+def solve_reference(digits, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None,
+                    P=None, R=None, Q=None, sigma=None, geometry=None):
+    """Solve to `digits` significant digits with the MPFR reference backend.
+    Inputs are decimal strings (exact decimals stay exact; numbers are
+    converted with str()); unset ones take the C defaults. With P given, the
+    dimensional input P, R, Q, sigma (with E_star, f) is used. Returns a
+    ReferenceSolution whose values are Certified strings."""
+    c = _clib.RefScene()
+    _check(_lib.hs_ref_scene_default(byref(c)), "hs_ref_scene_default")
+    keep = {}
+    for k, v in dict(a=a, p0=p0, f=f, E_star=E_star, Q_over_fP=Q_over_fP, sigma_over_fp0=sigma_over_fp0,
+                     P=P, R=R, Q=Q, sigma=sigma).items():
+        if v is not None:
+            keep[k] = _decimal(v)
+            setattr(c, k, keep[k])
+    if geometry is not None:
+        c.geometry = int(geometry)
+    h = _clib.RefSolutionP()
+    _check(_lib.hs_ref_solve(byref(c), int(digits), byref(h)), "hs_ref_solve")
+    return ReferenceSolution(h)
+
+
+def _ref_text(fn, name, args):
+    """Call hs_ref_value / hs_ref_eval, growing the buffer on HS_ERR_BUFFER_TOO_SMALL."""
+    size = 64
+    while True:
+        buf = ctypes.create_string_buffer(size)
+        needed, certified = c_size_t(0), c_int(-1)
+        st = fn(*args, buf, size, byref(needed), byref(certified))
+        if st == ERR_BUFFER_TOO_SMALL and needed.value > size:
+            size = needed.value
+            continue
+        _check(st, name)
+        return Certified(buf.value.decode("ascii"), certified.value)
+
+
+class ReferenceSolution:
+    """A reference (MPFR) solution. Values are Certified strings: b1, b2, d1,
+    d2, a, p0, energy(), and the point evaluations Bx(x), slip(x), work(x),
+    pressure(x) at a decimal point x (or a list of them)."""
+
+    def __init__(self, handle):
+        self._h = handle
+        s = _clib.RefSummary()
+        s.struct_size = ctypes.sizeof(s)
+        st = _lib.hs_ref_solution_summary(handle, byref(s))
+        if st != 0:
+            self.close()
+            raise HalfslipError(st, "hs_ref_solution_summary")
+        self._s = s
+
+    regime = property(lambda self: self._s.regime)
+    regime_name = property(lambda self: _REGIME_NAMES.get(self._s.regime, "unknown"))
+    slip_dir1 = property(lambda self: self._s.slip_dir1)
+    slip_dir2 = property(lambda self: self._s.slip_dir2)
+    iterations = property(lambda self: self._s.iterations)
+    digits = property(lambda self: self._s.digits, doc="requested significant digits")
+    working_digits = property(lambda self: self._s.working_digits, doc="digits of the working precision")
+    check_digits = property(lambda self: self._s.check_digits, doc="digits of the certifying run")
+
+    def _handle(self):
+        if not self._h:
+            raise ValueError("halfslip: the reference solution has been closed")
+        return self._h
+
+    def close(self):
+        h, self._h = getattr(self, "_h", None), None
+        if h:
+            _lib.hs_ref_solution_free(h)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:
+            pass
+
+    def __repr__(self):
+        return "<halfslip.ReferenceSolution %s, %d digits%s>" % (
+            self.regime_name, self.digits, "" if self._h else " (closed)")
+
+    def value(self, quantity):
+        """One of 'b1', 'b2', 'd1', 'd2', 'energy1', 'energy2', 'a', 'p0'."""
+        try:
+            q = _REF_QUANTITIES[quantity]
+        except KeyError:
+            raise ValueError("halfslip: unknown reference quantity %r (one of %s)"
+                             % (quantity, ", ".join(_REF_QUANTITIES))) from None
+        return _ref_text(_lib.hs_ref_value, "hs_ref_value", (self._handle(), q))
+
+    b1 = property(lambda self: self.value("b1"))
+    b2 = property(lambda self: self.value("b2"))
+    d1 = property(lambda self: self.value("d1"))
+    d2 = property(lambda self: self.value("d2"))
+    a = property(lambda self: self.value("a"))
+    p0 = property(lambda self: self.value("p0"))
+
+    def energy(self):
+        return self.value("energy1"), self.value("energy2")
+
+    def _eval(self, what, x):
+        h = self._handle()
+        if isinstance(x, (str, bytes, int, float)):
+            return _ref_text(_lib.hs_ref_eval, "hs_ref_eval",
+                             (h, _REF_EVALS[what], x if isinstance(x, bytes) else _decimal(x)))
+        return [self._eval(what, v) for v in x]
+
+    def Bx(self, x):
+        return self._eval("Bx", x)
+
+    def slip(self, x):
+        return self._eval("slip", x)
+
+    def work(self, x):
+        return self._eval("work", x)
+
+    def pressure(self, x):
+        return self._eval("pressure", x)

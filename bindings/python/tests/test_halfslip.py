@@ -1,0 +1,483 @@
+"""Tests of the Python binding against the C library.
+
+Run with the package on sys.path and HALFSLIP_LIBRARY naming the built
+library (ctest does this):
+    HALFSLIP_LIBRARY=build/libhalfslip.so.0 PYTHONPATH=bindings/python \
+        python3 -m unittest discover -s bindings/python/tests -v
+Optional: HALFSLIP_HEADER (path of halfslip.h, default: found from this file),
+HALFSLIP_EXPECTED_VERSION (the project version the package must carry).
+"""
+
+import array
+import ctypes
+import ctypes.util
+import math
+import os
+import pickle
+import re
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+import threading
+import unittest
+
+import halfslip
+from halfslip import HalfslipError
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PACKAGE_DIR = os.path.dirname(os.path.abspath(halfslip.__file__))
+HEADER = os.environ.get("HALFSLIP_HEADER",
+                        os.path.join(HERE, "..", "..", "..", "capi", "include", "halfslip", "halfslip.h"))
+
+try:
+    import numpy
+except ImportError:
+    numpy = None
+
+
+def run_python(code, env_update, pythonpath):
+    """Run code in a fresh interpreter; returns (returncode, stdout + stderr)."""
+    env = dict(os.environ)
+    env.update(env_update)
+    env["PYTHONPATH"] = pythonpath
+    p = subprocess.run([sys.executable, "-c", code], env=env, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, universal_newlines=True, timeout=60)
+    return p.returncode, p.stdout
+
+
+class TestLibraryAndVersion(unittest.TestCase):
+    def test_constants_match_header(self):
+        with open(HEADER) as fh:
+            macros = dict(re.findall(r"^#define\s+(HS_\w+)\s+(-?\d+)", fh.read(), re.M))
+        checked = 0
+        for name, value in macros.items():
+            short = name[3:]
+            if short.startswith(("OK", "ERR_", "REGIME_", "GEOMETRY_")):
+                self.assertEqual(getattr(halfslip, short), int(value), name)
+                checked += 1
+        self.assertGreaterEqual(checked, 20)
+        for name in dir(halfslip):
+            if re.match(r"^(OK|ERR_\w+|REGIME_\w+|GEOMETRY_\w+)$", name):
+                self.assertIn("HS_" + name, macros, "constant %s is not in the header" % name)
+
+    def test_version(self):
+        major, minor, patch = halfslip.version()
+        self.assertEqual(major, int(halfslip.__version__.split(".")[0]))
+        self.assertEqual(halfslip.library_version, "%d.%d.%d" % (major, minor, patch))
+        expected = os.environ.get("HALFSLIP_EXPECTED_VERSION")
+        if expected:
+            self.assertEqual(halfslip.__version__, expected)
+            self.assertEqual(halfslip.library_version, expected)
+
+    def test_version_mismatch_raises_import_error(self):
+        with self.assertRaises(ImportError) as cm:
+            halfslip._check_version(halfslip._lib, "libhalfslip-test", expected_major=99)
+        msg = str(cm.exception)
+        self.assertIn("needs major version 99", msg)
+        self.assertIn("libhalfslip-test", msg)
+        self.assertIn("HALFSLIP_LIBRARY", msg)
+
+    def test_struct_layouts(self):
+        # halfslip.h on LP64: size_t, int (+pad), doubles / pointers
+        self.assertEqual(ctypes.sizeof(halfslip._clib.Scene), 2 * 8 + 6 * 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.Summary), 8 + 4 * 4 + 6 * 8 + 4 + 4)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.Geometry), 8 + 4 + 4 + 2 * 8 + 8 + 4 * 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.RefScene), 2 * 8 + 10 * ctypes.sizeof(ctypes.c_void_p))
+        # a drifted layout is caught at load time: a copy of the package whose
+        # hs_scene has one field too many does not import
+        with tempfile.TemporaryDirectory() as tmp:
+            pkg = os.path.join(tmp, "halfslip")
+            shutil.copytree(PACKAGE_DIR, pkg, ignore=shutil.ignore_patterns("__pycache__", "_install.py"))
+            clib = os.path.join(pkg, "_clib.py")
+            with open(clib) as fh:
+                text = fh.read()
+            drifted = text.replace('("sigma_over_fp0", c_double),\n    ]',
+                                   '("sigma_over_fp0", c_double),\n        ("extra", c_double),\n    ]', 1)
+            self.assertNotEqual(drifted, text)
+            with open(clib, "w") as fh:
+                fh.write(drifted)
+            code, out = run_python("import halfslip", {"HALFSLIP_LIBRARY": halfslip.library_path}, tmp)
+            self.assertNotEqual(code, 0)
+            self.assertIn("struct hs_scene of the Python binding has size 72, the library", out)
+
+    def test_bad_library_paths(self):
+        parent = os.path.dirname(PACKAGE_DIR)
+        code, out = run_python("import halfslip", {"HALFSLIP_LIBRARY": "/nonexistent/libhalfslip.so.0"}, parent)
+        self.assertNotEqual(code, 0)
+        self.assertIn("ImportError", out)
+        self.assertIn("HALFSLIP_LIBRARY=/nonexistent/libhalfslip.so.0", out)
+        libm = ctypes.util.find_library("m")
+        if libm:
+            code, out = run_python("import halfslip", {"HALFSLIP_LIBRARY": libm}, parent)
+            self.assertNotEqual(code, 0)
+            self.assertIn("not a compatible halfslip library (no symbol hs_version)", out)
+
+    def test_library_next_to_package_comes_first(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            pkg = os.path.join(tmp, "halfslip")
+            shutil.copytree(PACKAGE_DIR, pkg, ignore=shutil.ignore_patterns("__pycache__", "_install.py"))
+            shutil.copy(halfslip.library_path, os.path.join(pkg, "libhalfslip.so.0"))
+            code, out = run_python("import halfslip; print(halfslip.library_path); print(halfslip.solve().b1)",
+                                   {"HALFSLIP_LIBRARY": "/nonexistent/libhalfslip.so.0"}, tmp)
+            self.assertEqual(code, 0, out)
+            lines = out.split()
+            self.assertEqual(lines[0], os.path.join(pkg, "libhalfslip.so.0"))
+            self.assertAlmostEqual(float(lines[1]), math.sqrt(0.5) + 0.125, delta=1e-15)
+
+
+class TestSolve(unittest.TestCase):
+    def test_same_sign_closed_form(self):
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.2, a=1, p0=1, f=1, E_star=1) as sol:
+            self.assertEqual(sol.regime, halfslip.REGIME_SAME_SIGN)
+            self.assertEqual(sol.regime_name, "same-sign")
+            self.assertAlmostEqual(sol.b1, math.sqrt(0.5) + 0.05, delta=1e-15)
+            self.assertAlmostEqual(sol.b2, math.sqrt(0.5) - 0.05, delta=1e-15)
+            self.assertAlmostEqual(sol.d1, 1 - sol.b1, delta=1e-15)
+            self.assertAlmostEqual(sol.d2, 1 - sol.b2, delta=1e-15)
+            self.assertEqual((sol.slip_dir1, sol.slip_dir2, sol.iterations, sol.a), (1, 1, 0, 1.0))
+            B = sol.Bx([0.0, 0.99, -0.99])
+            self.assertIsInstance(B, array.array)
+            self.assertEqual(B.typecode, "d")
+            self.assertEqual(B[0], 0.0)
+            # eq (21): B = 2 f p0/(a E*) sqrt((x - b1)(x + b2)) in zone 1
+            self.assertAlmostEqual(B[1], 2 * math.sqrt((0.99 - sol.b1) * (0.99 + sol.b2)), delta=1e-14)
+            self.assertLess(B[2], 0)
+            h = sol.slip([0.99, -0.99])
+            W = sol.work([0.99, -0.99])
+            self.assertTrue(h[0] > 0 and h[1] > 0 and W[0] > 0 and W[1] > 0)
+            self.assertAlmostEqual(sol.pressure(0.6), 0.8, delta=1e-15)
+            E1, E2 = sol.energy()
+            self.assertTrue(0 < E1 < E2)
+
+    def test_dimensions_scale(self):
+        # b scales with a; B_x with f p0/E*
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.2, a=2, p0=3, f=0.5, E_star=7) as sol:
+            self.assertAlmostEqual(sol.b1, 2 * (math.sqrt(0.5) + 0.05), delta=4e-15)
+            self.assertAlmostEqual(sol.Bx(1.98), 0.5 * 3 / 7 * 2 * math.sqrt((0.99 - sol.b1 / 2) * (0.99 + sol.b2 / 2)),
+                                   delta=1e-14)
+
+    def test_opposite_sign(self):
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2) as sol:
+            self.assertEqual(sol.regime, halfslip.REGIME_OPPOSITE_SIGN)
+            self.assertAlmostEqual(sol.b1, 0.749058362968991, delta=1e-14)
+            self.assertEqual((sol.slip_dir1, sol.slip_dir2), (-1, 1))
+            self.assertGreaterEqual(sol.iterations, 1)
+            h = sol.slip([0.95, -0.95])
+            self.assertTrue(h[0] < 0 < h[1])
+
+    def test_stuck(self):
+        with halfslip.solve(Q_over_fP=0, sigma_over_fp0=0) as sol:
+            self.assertEqual(sol.regime, halfslip.REGIME_STUCK)
+            self.assertEqual((sol.b1, sol.b2), (1.0, 1.0))
+
+    def test_options(self):
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, rtol=1e-6, max_iterations=50) as sol:
+            self.assertAlmostEqual(sol.b1, 0.749058362968991, delta=1e-14)
+
+    def test_from_hertz_loads(self):
+        P, R, E, f = 1000.0, 0.05, 1.15e11, 0.6
+        sc = halfslip.from_hertz_loads(P, R, E, f, 300, 2e6)
+        self.assertAlmostEqual(sc.a, math.sqrt(4 * P * R / (math.pi * E)), delta=1e-15 * sc.a)
+        self.assertAlmostEqual(sc.p0, 2 * P / (math.pi * sc.a), delta=1e-15 * sc.p0)
+        self.assertAlmostEqual(sc.Q_over_fP, 300 / (f * P), delta=1e-16)
+        self.assertEqual(sc.geometry, halfslip.GEOMETRY_HERTZ)
+        with sc.solve() as sol, halfslip.solve(scene=sc) as sol2:
+            self.assertEqual(sol.b1, sol2.b1)
+            self.assertEqual(sol.a, sc.a)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.from_hertz_loads(P, R, E, f, 700, 0)
+        self.assertEqual(cm.exception.status, halfslip.ERR_GROSS_SLIDING)
+        with self.assertRaises(TypeError):
+            halfslip.solve(0.3, scene=sc)
+
+    def test_context_manager_frees(self):
+        with halfslip.solve() as sol:
+            pass
+        self.assertIsNone(sol._h)
+        self.assertGreater(sol.b1, 0)  # summary still readable
+        with self.assertRaises(ValueError):
+            sol.Bx(0.9)
+        sol.close()  # twice: no-op
+        self.assertIn("closed", repr(sol))
+
+    def test_threads_share_a_solution(self):
+        xs = [-1 + 2 * i / 999 for i in range(1000)]
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2) as sol:
+            serial = sol.slip(xs)
+            results = [None] * 4
+
+            def work(i):
+                results[i] = sol.slip(xs)
+            threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+            for t in threads:
+                t.start()
+            for t in threads:
+                t.join()
+        for r in results:
+            self.assertEqual(r, serial)
+
+
+def hertz_pressure(x):
+    return math.sqrt((1 - x) * (1 + x)) if abs(x) < 1 else 0.0
+
+
+class TestGeometries(unittest.TestCase):
+    """Non-Hertz pressures; the Hertz pressure given as a power law (n = 2), a
+    flat punch without flat, a callback or samples reproduces the closed forms."""
+
+    def setUp(self):
+        self.hz = halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2)
+
+    def tearDown(self):
+        self.hz.close()
+
+    def assertHertz(self, sol, tol):
+        self.assertEqual(sol.regime, self.hz.regime)
+        self.assertAlmostEqual(sol.b1, self.hz.b1, delta=tol)
+        self.assertAlmostEqual(sol.b2, self.hz.b2, delta=tol)
+        self.assertGreater(sol.quadrature_order, 0)
+
+    def test_power_law_and_flat_rounded(self):
+        self.assertEqual(self.hz.quadrature_order, 0)
+        self.assertEqual(self.hz.p0, 1.0)
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, exponent=2) as sol:
+            self.assertHertz(sol, 1e-13)
+            self.assertAlmostEqual(sol.Bx(0.95), self.hz.Bx(0.95), delta=1e-10)
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, geometry="flat-rounded", flat_over_a=0) as sol:
+            self.assertHertz(sol, 1e-13)
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0, flat_over_a=0.6) as sol:
+            self.assertEqual(sol.regime, halfslip.REGIME_SAME_SIGN)
+            self.assertAlmostEqual(sol.b1, sol.b2, delta=1e-14)
+            self.assertTrue(0.6 < sol.b1 < 1)
+        # the geometry's default exponent (2) when only the kind is named
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, geometry=halfslip.GEOMETRY_POWER_LAW) as sol:
+            self.assertHertz(sol, 1e-13)
+
+    def test_callback(self):
+        calls = []
+
+        def p(x):
+            calls.append(x)
+            return hertz_pressure(x)
+        sol = halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, pressure=p)
+        self.assertHertz(sol, 1e-12)
+        self.assertAlmostEqual(sol.p0, 1.0, delta=1e-13)
+        self.assertGreater(len(calls), 10)
+        del p
+        import gc
+        gc.collect()
+        # the solution keeps the callback alive for the evaluations
+        self.assertAlmostEqual(sol.Bx(0.95), self.hz.Bx(0.95), delta=1e-9)
+        sol.close()
+
+    def test_callback_exception_propagates(self):
+        def bad(x):
+            if x > 0.5:
+                raise ZeroDivisionError("boom at %g" % x)
+            return hertz_pressure(x)
+        with self.assertRaises(ZeroDivisionError):
+            halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, pressure=bad)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, pressure=lambda x: -1.0 if x > 0.2 else 1.0)
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_GEOMETRY)
+        with self.assertRaises(TypeError):
+            halfslip.solve(pressure=3.0)
+
+    def test_samples(self):
+        xs = [-math.cos(math.pi * i / 40) for i in range(41)]
+        xs[0], xs[40] = -1.0, 1.0
+        ps = [hertz_pressure(x) for x in xs]
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, samples=(xs, array.array("d", ps))) as sol:
+            self.assertHertz(sol, 1e-10)
+        ps[20] = -1
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, samples=(xs, ps))
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_GEOMETRY)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve(samples=(xs[:3], ps[:3]))
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_GEOMETRY)
+        with self.assertRaises(ValueError):
+            halfslip.solve(samples=(xs, ps[:-1]))
+
+    def test_bad_geometries(self):
+        for kw, status in ((dict(flat_over_a=1.0), halfslip.ERR_BAD_GEOMETRY),
+                           (dict(flat_over_a=float("nan")), halfslip.ERR_NOT_FINITE),
+                           (dict(exponent=1.0), halfslip.ERR_BAD_GEOMETRY),
+                           (dict(geometry=42), halfslip.ERR_BAD_GEOMETRY),
+                           (dict(exponent=3, Q_over_fP=1.0), halfslip.ERR_GROSS_SLIDING)):
+            with self.assertRaises(HalfslipError) as cm:
+                halfslip.solve(**kw)
+            self.assertEqual(cm.exception.status, status, kw)
+            self.assertEqual(cm.exception.function, "hs_solve_geometry")
+        with self.assertRaises(TypeError):
+            halfslip.solve(exponent=3, flat_over_a=0.5)
+        with self.assertRaises(TypeError):
+            halfslip.solve(geometry="power-law", flat_over_a=0.5)
+        with self.assertRaises(ValueError):
+            halfslip.solve(geometry="cube")
+
+
+class TestInputs(unittest.TestCase):
+    X = [0.0, 0.5, 0.9, -0.9, 1.0]
+
+    def setUp(self):
+        self.sol = halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2)
+        self.ref = self.sol.Bx(self.X)
+
+    def tearDown(self):
+        self.sol.close()
+
+    def test_sequences(self):
+        self.assertEqual(self.sol.Bx(tuple(self.X)), self.ref)
+        self.assertEqual(self.sol.Bx(x for x in self.X), self.ref)
+        self.assertEqual(self.sol.Bx([0, 1]), self.sol.Bx([0.0, 1.0]))  # ints
+
+    def test_array_double_zero_copy(self):
+        x = array.array("d", self.X)
+        out = self.sol.Bx(x)
+        self.assertEqual(out, self.ref)
+        self.assertEqual(x, array.array("d", self.X))   # input untouched
+        x.append(0.1)                                    # and no buffer export left behind
+
+    def test_buffer_protocol(self):
+        raw = struct.pack("%dd" % len(self.X), *self.X)
+        self.assertEqual(self.sol.Bx(memoryview(raw).cast("d")), self.ref)              # read-only
+        self.assertEqual(self.sol.Bx(memoryview(bytearray(raw)).cast("d")), self.ref)   # writable
+        self.assertEqual(self.sol.Bx(array.array("f", [0.5, -0.5])),                   # converted
+                         self.sol.Bx([float(array.array("f", [0.5])[0]), float(array.array("f", [-0.5])[0])]))
+        m2 = memoryview(bytearray(struct.pack("4d", 0.1, 0.2, 0.3, 0.4))).cast("B").cast("d", (2, 2))
+        self.assertEqual(self.sol.slip(m2), self.sol.slip([0.1, 0.2, 0.3, 0.4]))     # 2-D, flattened
+
+    def test_scalars_and_empty(self):
+        v = self.sol.Bx(0.9)
+        self.assertIsInstance(v, float)
+        self.assertEqual(v, self.ref[2])
+        empty = self.sol.Bx([])
+        self.assertEqual(len(empty), 0)
+        self.assertIsInstance(empty, array.array)
+
+    @unittest.skipIf(numpy is None, "numpy not installed (optional)")
+    def test_numpy(self):
+        x = numpy.array(self.X)
+        self.assertEqual(self.sol.Bx(x), self.ref)
+        self.assertEqual(self.sol.Bx(x[::2]), self.sol.Bx(self.X[::2]))   # strided: converted
+
+    def test_bad_inputs(self):
+        with self.assertRaises(TypeError):
+            self.sol.Bx(["a"])
+        with self.assertRaises(TypeError):
+            self.sol.Bx(None)
+
+
+class TestErrors(unittest.TestCase):
+    def assertStatus(self, status, fn, *args, **kw):
+        with self.assertRaises(HalfslipError) as cm:
+            fn(*args, **kw)
+        e = cm.exception
+        self.assertEqual(e.status, status)
+        self.assertEqual(e.message, halfslip.strerror(status))
+        return e
+
+    def test_exception_type_and_text(self):
+        e = self.assertStatus(halfslip.ERR_GROSS_SLIDING, halfslip.solve, Q_over_fP=1.0)
+        self.assertIsInstance(e, RuntimeError)
+        self.assertEqual(e.function, "hs_solve")
+        self.assertIn("|Q| >= fP", str(e))
+        self.assertIn("HS_ERR_GROSS_SLIDING = 6", str(e))
+        # the message comes from the C library's one table
+        self.assertEqual(e.message, halfslip._lib.hs_strerror(6).decode())
+        self.assertIn("unknown", halfslip.strerror(12345))
+        e2 = pickle.loads(pickle.dumps(e))
+        self.assertEqual((e2.status, e2.function, str(e2)), (e.status, e.function, str(e)))
+
+    def test_bad_scenes(self):
+        self.assertStatus(halfslip.ERR_GROSS_SLIDING, halfslip.solve, Q_over_fP=-1.0)
+        self.assertStatus(halfslip.ERR_NOT_FINITE, halfslip.solve, Q_over_fP=float("nan"))
+        self.assertStatus(halfslip.ERR_NOT_FINITE, halfslip.solve, sigma_over_fp0=float("inf"))
+        self.assertStatus(halfslip.ERR_BAD_FRICTION, halfslip.solve, f=0)
+        self.assertStatus(halfslip.ERR_BAD_SIZE, halfslip.solve, a=-1)
+        self.assertStatus(halfslip.ERR_BAD_SIZE, halfslip.solve, E_star=0)
+        self.assertStatus(halfslip.ERR_BAD_GEOMETRY, halfslip.Scene(geometry=99).solve)
+        self.assertStatus(halfslip.ERR_BAD_OPTION, halfslip.solve, max_iterations=0)
+        self.assertStatus(halfslip.ERR_BAD_OPTION, halfslip.solve, rtol=0.5)
+
+    def test_bad_points(self):
+        with halfslip.solve() as sol:
+            e = self.assertStatus(halfslip.ERR_POINT_OUTSIDE, sol.Bx, [0.5, 1.5])
+            self.assertEqual(e.function, "hs_eval_Bx")
+            self.assertStatus(halfslip.ERR_NOT_FINITE, sol.slip, [float("nan")])
+            self.assertStatus(halfslip.ERR_POINT_OUTSIDE, sol.pressure, -1.0000001)
+
+
+class TestReference(unittest.TestCase):
+    def test_opposite_sign_30_digits(self):
+        with halfslip.solve_reference(30, Q_over_fP="0.3", sigma_over_fp0="2") as r:
+            self.assertEqual(r.regime, halfslip.REGIME_OPPOSITE_SIGN)
+            self.assertEqual((r.digits, r.slip_dir1, r.slip_dir2), (30, -1, 1))
+            self.assertGreaterEqual(r.working_digits, 40)
+            self.assertGreater(r.check_digits, r.working_digits)
+            b1 = r.b1
+            self.assertIsInstance(b1, str)
+            self.assertTrue(b1.startswith("7.490583629689906330026357657"), b1)
+            self.assertEqual(b1.certified, 30)
+            self.assertAlmostEqual(float(b1), 0.749058362968991, delta=1e-15)
+            self.assertEqual(float(r.d1), 1 - float(b1))
+            self.assertEqual(r.a.certified, 30)
+            E1, E2 = r.energy()
+            with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2) as sol:
+                e1, e2 = sol.energy()
+                self.assertAlmostEqual(float(E1), e1, delta=1e-14 * e1)
+                self.assertAlmostEqual(float(r.Bx("0.9")), sol.Bx(0.9), delta=1e-13)
+            bx = r.Bx(["0.9", "-0.9"])
+            self.assertTrue(bx[0].startswith("-") and bx[0].certified == 30)
+            self.assertEqual(len(bx), 2)
+
+    def test_resizes_the_buffer(self):
+        # 200 digits (fewer with a short precision ladder): longer than the first 64-byte buffer
+        many = min(200, halfslip.ref_max_digits())
+        with halfslip.solve_reference(many, Q_over_fP="0.3", sigma_over_fp0="2") as r:
+            b1 = r.b1
+            self.assertGreater(len(b1), max(many, 64))
+            self.assertTrue(b1.startswith("7.49058362968990633002635765716"))
+            self.assertEqual(b1.certified, many)
+
+    def test_dimensional_input_matches_double(self):
+        with halfslip.solve_reference(30, P="1000", R="0.05", E_star="1.15e11", f="0.6", Q="300",
+                                      sigma="2e6") as r, \
+                halfslip.from_hertz_loads(1000, 0.05, 1.15e11, 0.6, 300, 2e6).solve() as sol:
+            self.assertAlmostEqual(float(r.b1), sol.b1, delta=4e-16 * sol.a)
+            self.assertAlmostEqual(float(r.a), sol.a, delta=2e-16 * sol.a)
+
+    def test_errors(self):
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve_reference(30, Q_over_fP="abc")
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_NUMBER)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve_reference(30, Q_over_fP="1")
+        self.assertEqual(cm.exception.status, halfslip.ERR_GROSS_SLIDING)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve_reference(0)
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve_reference(halfslip.ref_max_digits() + 1)
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve_reference(30, P="1000")
+        self.assertEqual(cm.exception.status, halfslip.ERR_NULL_POINTER)
+        with halfslip.solve_reference(20) as r:
+            with self.assertRaises(HalfslipError) as cm:
+                r.Bx("1.5")
+            self.assertEqual(cm.exception.status, halfslip.ERR_POINT_OUTSIDE)
+            with self.assertRaises(HalfslipError) as cm:
+                r.slip("0.9q")
+            self.assertEqual(cm.exception.status, halfslip.ERR_BAD_NUMBER)
+            with self.assertRaises(ValueError):
+                r.value("b3")
+        with self.assertRaises(ValueError):
+            r.b1   # closed
+
+
+if __name__ == "__main__":
+    unittest.main()

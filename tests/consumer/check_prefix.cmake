@@ -1,0 +1,10 @@
+# The package must come from the prefix installed by the test (not a build tree).
+if(DEFINED HS_EXPECTED_PREFIX)
+  get_filename_component(_found "${halfslip_DIR}" REALPATH)
+  get_filename_component(_want "${HS_EXPECTED_PREFIX}" REALPATH)
+  string(FIND "${_found}" "${_want}/" _pos)
+  if(NOT _pos EQUAL 0)
+    message(FATAL_ERROR "halfslip found in ${halfslip_DIR}, not under ${HS_EXPECTED_PREFIX}")
+  endif()
+endif()
+message(STATUS "halfslip ${halfslip_VERSION} from ${halfslip_DIR}")
