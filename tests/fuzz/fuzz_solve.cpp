@@ -83,5 +83,30 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (es == HS_OK) require(e[0] >= 0 && e[1] >= 0);
   }
   hs_solution_free(sol);
+  // the general-pressure path on the same scene: flat punch or power law with
+  // a fuzzed parameter (bounded loads keep one input's cost in milliseconds)
+  const uint8_t g = r.byte();
+  if ((g & 1) && std::fabs(sc.sigma_over_fp0) < 50 && std::fabs(sc.Q_over_fP) < 0.999) {
+    hs_geometry geo;
+    hs_geometry_default(&geo);
+    geo.kind = (g & 2) ? HS_GEOMETRY_POWER_LAW : HS_GEOMETRY_FLAT_ROUNDED;
+    const double par = r.real();
+    if (geo.kind == HS_GEOMETRY_POWER_LAW) geo.exponent = par;
+    else geo.flat_over_a = par;
+    hs_solution *gs = nullptr;
+    const int gst = hs_solve_geometry(&sc, &geo, nullptr, &gs);
+    require(known(gst));
+    if (gst != HS_OK) {
+      require(gs == nullptr);
+      return 0;
+    }
+    hs_summary gm;
+    gm.struct_size = sizeof gm;
+    require(hs_solution_summary(gs, &gm) == HS_OK);
+    require(std::isfinite(gm.b1) && std::isfinite(gm.b2) && gm.d1 >= 0 && gm.d2 >= 0 && gm.quadrature_order > 0);
+    double gx[1] = {0.999 * gm.a}, gout[1];
+    require(hs_eval_Bx(gs, 1, gx, gout) == HS_OK && std::isfinite(gout[0]));
+    hs_solution_free(gs);
+  }
   return 0;
 }
