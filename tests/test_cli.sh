@@ -58,6 +58,12 @@ for bad in "--geometry flat-rounded --flat-over-a 1" "--geometry power-law --exp
   if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ]; then ok; else ko "bad geometry input '$bad' (rc=$rc): $err"; fi
 done
 
+# asymptotic edge model
+js=$("$cli" asymptotic-error --loading shear --b-over-a 0.9 --json) && echo "$js" | python3 -c 'import json,sys; e=json.load(sys.stdin)["fractional_error"]; assert -0.11 < e < -0.08, e' && ok || ko "asymptotic-error shear"
+js=$("$cli" asymptotic-error --loading bulk --b-over-a 0.9 --json) && echo "$js" | python3 -c 'import json,sys; e=json.load(sys.stdin)["fractional_error"]; assert 0.06 < e < 0.1, e' && ok || ko "asymptotic-error bulk"
+"$cli" asymptotic-error --loading twist --b-over-a 0.9 >/dev/null 2>&1 && ko "bad loading accepted" || ok
+"$cli" asymptotic-error --loading shear --b-over-a 1 >/dev/null 2>&1 && ko "b/a = 1 accepted" || ok
+
 # bitwise reproducible run to run (separate processes)
 r1=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json); r2=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json)
 [ "$r1" = "$r2" ] && ok || ko "run-to-run reproducibility"

@@ -42,7 +42,11 @@ const char *kUsage =
     "  High-precision benchmark table over the grid LIST x LIST (reference backend).\n"
     "  LIST is v1,v2,... or start:step:count (exact decimal arithmetic).\n"
     "  --shard K/N writes the K-th of N contiguous blocks of rows; the N outputs\n"
-    "  concatenated in order equal the unsharded output (CSV header in shard 1 only).\n";
+    "  concatenated in order equal the unsharded output (CSV header in shard 1 only).\n"
+    "\n"
+    "usage: halfslip asymptotic-error --loading shear|bulk --b-over-a X [--json]\n"
+    "  Energy dissipated in one slip zone: asymptotic edge model vs full Hertz solution\n"
+    "  at the same load (the load that gives slip zone b/a in the full solution).\n";
 
 [[noreturn]] void die(const std::string &msg) {
   std::fprintf(stderr, "halfslip: %s\n", msg.c_str());
@@ -548,6 +552,35 @@ int cmd_table(int argc, char **argv) {
   return 0;
 }
 
+// ---------------------------------------------------------------- asymptotic-error
+int cmd_asymptotic_error(int argc, char **argv) {
+  const Args args = parse_args(argc, argv, 2, {"--loading", "--b-over-a"}, {"--json"});
+  if (!args.count("--loading") || !args.count("--b-over-a")) die("asymptotic-error needs --loading shear|bulk and --b-over-a X");
+  const std::string l = args.at("--loading");
+  if (l != "shear" && l != "bulk") die("bad value for --loading: '" + l + "' (shear or bulk)");
+  const double b = parse_number("--b-over-a", args.at("--b-over-a").c_str());
+  if (!(b > 0 && b < 1)) die("bad value for --b-over-a: need 0 < b/a < 1");
+  hs_asymptotic_comparison c;
+  c.struct_size = sizeof c;
+  check(hs_asymptotic_error(l == "shear" ? HS_LOADING_SHEAR : HS_LOADING_BULK, b, &c), "asymptotic-error");
+  if (args.count("--json")) {
+    std::printf("{\"loading\": \"%s\", \"b_over_a\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, "
+                "\"d_full\": %s, \"d_asymptotic\": %s, \"energy_full\": %s, \"energy_asymptotic\": %s, "
+                "\"fractional_error\": %s}\n",
+                l.c_str(), num(b).c_str(), num(c.Q_over_fP).c_str(), num(c.sigma_over_fp0).c_str(), num(c.d_full).c_str(),
+                num(c.d_asymptotic).c_str(), num(c.energy_full).c_str(), num(c.energy_asymptotic).c_str(),
+                num(c.fractional_error).c_str());
+  } else {
+    std::printf("asymptotic edge model vs full Hertz solution, %s loading, b/a = %.10g (a = p0 = f = E* = 1)\n",
+                l.c_str(), b);
+    std::printf("  load: Q/fP = %.10g, sigma/(f p0) = %.10g (held equal)\n", c.Q_over_fP, c.sigma_over_fp0);
+    std::printf("  slip zone: full d/a = %.10g, asymptotic d/a = %.10g\n", c.d_full, c.d_asymptotic);
+    std::printf("  energy per zone: full %.10g, asymptotic %.10g\n", c.energy_full, c.energy_asymptotic);
+    std::printf("  fractional error (asymptotic - full)/full = %.6g\n", c.fractional_error);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -561,5 +594,6 @@ int main(int argc, char **argv) {
   }
   if (std::strcmp(argv[1], "solve") == 0) return cmd_solve(argc, argv);
   if (std::strcmp(argv[1], "table") == 0) return cmd_table(argc, argv);
-  die(std::string("unknown command '") + argv[1] + "' (solve or table; see halfslip --help)");
+  if (std::strcmp(argv[1], "asymptotic-error") == 0) return cmd_asymptotic_error(argc, argv);
+  die(std::string("unknown command '") + argv[1] + "' (solve, table or asymptotic-error; see halfslip --help)");
 }

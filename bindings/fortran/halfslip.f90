@@ -56,6 +56,9 @@ module halfslip
   integer(c_int), parameter, public :: HS_GEOMETRY_SAMPLES      = 4
   integer(c_int), parameter, public :: HS_GEOMETRY_CALLBACK     = 5
 
+  integer(c_int), parameter, public :: HS_LOADING_SHEAR = 1
+  integer(c_int), parameter, public :: HS_LOADING_BULK  = 2
+
   integer(c_int), parameter, public :: HS_REGIME_STUCK         = 0
   integer(c_int), parameter, public :: HS_REGIME_SAME_SIGN     = 1
   integer(c_int), parameter, public :: HS_REGIME_OPPOSITE_SIGN = 2

@@ -10,6 +10,7 @@
 #include <new>
 #include <vector>
 
+#include "halfslip/core/asymptotic.hpp"
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/reference/backend.hpp"
@@ -364,6 +365,29 @@ int hs_eval_work(const hs_solution *sol, size_t n, const double *x, double *out)
 }
 int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out) {
   return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.pressure(v)); });
+}
+
+int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_comparison *out) {
+  return guard([&] {
+    require(out != nullptr, core::status::null_pointer, "output is NULL");
+    require(out->struct_size == sizeof(hs_asymptotic_comparison), core::status::struct_size, "struct_size");
+    require(loading == HS_LOADING_SHEAR || loading == HS_LOADING_BULK, core::status::bad_option,
+            "loading must be HS_LOADING_SHEAR or HS_LOADING_BULK");
+    require(std::isfinite(b_over_a), core::status::not_finite, "b/a is not finite");
+    require(b_over_a > 0 && b_over_a < 1, core::status::bad_option, "b/a must lie in (0, 1)");
+    const auto c = core::compare_asymptotic<double>(loading == HS_LOADING_SHEAR ? +1 : -1, b_over_a);
+    hs_asymptotic_comparison r;
+    std::memset(&r, 0, sizeof r);
+    r.struct_size = sizeof r;
+    r.Q_over_fP = c.scene.q;
+    r.sigma_over_fp0 = c.scene.s;
+    r.d_full = c.d_full;
+    r.d_asymptotic = c.d_asym;
+    r.energy_full = c.energy_full;
+    r.energy_asymptotic = c.energy_asym;
+    r.fractional_error = c.fractional_error();
+    *out = r;
+  });
 }
 
 int hs_ref_scene_default(hs_ref_scene *scene) {

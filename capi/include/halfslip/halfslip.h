@@ -196,6 +196,27 @@ HS_EXPORT int hs_eval_work(const hs_solution *sol, size_t n, const double *x, do
 /* Contact pressure p(x) of the scene's geometry at n points. */
 HS_EXPORT int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out);
 
+/* ---- asymptotic single-edge model (paper section 5) ------------------------------
+ * Hertz, a = p0 = f = E* = 1. For the load that gives a slip zone b/a under
+ * pure shear (HS_LOADING_SHEAR) or pure bulk tension (HS_LOADING_BULK), the
+ * energy dissipated in one slip zone by the full solution and by the
+ * asymptotic edge model at the same load (docs/asymptotic.md). */
+#define HS_LOADING_SHEAR 1
+#define HS_LOADING_BULK  2
+
+typedef struct hs_asymptotic_comparison {
+  size_t struct_size;       /* caller sets = sizeof(hs_asymptotic_comparison) */
+  double Q_over_fP;         /* the load */
+  double sigma_over_fp0;
+  double d_full;            /* slip zone length of the full solution (= 1 - b/a) */
+  double d_asymptotic;      /* slip zone length of the edge model, 2 K_T/(f K_N) */
+  double energy_full;       /* energy dissipated in the zone, units f^2 p0^2 a^2 / E* */
+  double energy_asymptotic;
+  double fractional_error;  /* (asymptotic - full) / full */
+} hs_asymptotic_comparison;
+
+HS_EXPORT int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_comparison *out);
+
 /* ---- arbitrary-precision reference backend ---------------------------------
  * The same algorithms on MPFR, for benchmark tables to 30-390 digits. Inputs
  * are decimal strings (exact decimals stay exact); outputs are decimal
