@@ -170,7 +170,8 @@ zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, c
     const T t = side > 0 ? (s2 < T(0.5) ? 1 - d + ds : 1 - dc) : (s2 < T(0.5) ? d - 1 - ds : dc - 1);
     const T dm = side > 0 ? 2 - dc : dc;  // 1 + t
     const T dp = side > 0 ? dc : 2 - dc;  // 1 - t
-    const T ph = pm.phi(t, dm, dp);
+    T dph = 0;
+    const T ph = jac ? pm.phi_dphi(t, dm, dp, dph) : pm.phi(t, dm, dp);
     const T far = side > 0 ? dm : dp;     // distance to the far contact edge
     const T sf = sqrt(far);
     const T psi = sf * ph;                 // p_hat / sqrt(distance to the near edge)
@@ -179,7 +180,6 @@ zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, c
     r.I1 += w * base;
     r.I2 += w * base * t;
     if (!jac) return;
-    const T dph = pm.dphi(t, dm, dp);
     // psi' = d psi / dt
     const T dpsi = side > 0 ? ph / (2 * sf) + sf * dph : -ph / (2 * sf) + sf * dph;
     // d/d(g) of base: -base/(2g)
@@ -452,11 +452,11 @@ template <class T> T residual_norm(const general_eval<T> &r) {
 // Newton from a start at fixed order n; true on convergence.
 template <class T>
 bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n, const T &tol_step,
-            int max_it, int &iterations) {
+            int max_it, int &iterations, const general_eval<T> *r0 = nullptr) {
   using std::abs; using std::exp; using std::max;
   const T tiny = boost::math::tools::min_value<T>() / eps<T>();
   const T noise_floor = 64 * eps<T>() * pi<T>() * (1 + s);
-  general_eval<T> r = general_residual(pm, q, s, st, n, true);
+  general_eval<T> r = r0 ? *r0 : general_residual(pm, q, s, st, n, true);
   T norm = residual_norm(r);
   T prev_step = -1;
   for (int it = 1; it <= max_it; ++it) {
@@ -470,6 +470,13 @@ bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T
       return abs((f.F1 * a22 - f.F2 * a12) / det) + abs((a11 * f.F2 - a21 * f.F1) / det);
     };
     const T level0 = abs(dx) + abs(dy);
+    // a full step below the step tolerance after a converging one: take it
+    // without evaluating the residual there (it would only confirm the step)
+    if (prev_step >= 0 && max(abs(dx), abs(dy)) <= tol_step && max(abs(dx), abs(dy)) <= prev_step) {
+      st.x1 += dx;
+      st.e *= exp(dy);
+      return true;
+    }
     const T cap = 4;
     if (abs(dy) > cap) { dx *= cap / abs(dy); dy = dy > 0 ? cap : -cap; }
     if (abs(dx) > 1) { dy /= abs(dx); dx = dx > 0 ? T(1) : T(-1); }
@@ -626,6 +633,19 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
     const auto h = solve_hertz(hs);
     st.x1 = h.reg == regime::opposite_sign ? -h.delta1 : h.delta1;
     st.e = h.width;
+    // for a model with a known shear-only stick half-width c, scale the Hertz
+    // stick zone about its centre by c / sqrt(1 - q) (exact at sigma = 0)
+    T c;
+    if (P.shear_only_half_width(q, c) && c > 0 && c <= 1) {
+      using std::sqrt;
+      const T cH = sqrt(1 - q);
+      const T m = (h.delta2 - h.delta1) / 2, w = h.width / 2 * (c / cH);
+      const T nb1 = m + w, nb2 = w - m;
+      if (nb1 < 1 && nb2 < 1 && w > 0) {
+        st.x1 = h.reg == regime::opposite_sign ? -(1 - nb1) : 1 - nb1;
+        st.e = 2 * w;
+      }
+    }
   }
   int its = 0;
   general_state<T> trial = st;
@@ -661,7 +681,8 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
     n *= 2;
     if (2 * n > opt.max_order)
       throw error(status::no_convergence, "general solver: quadrature order limit reached");
-    if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its))
+    // Newton at the doubled order from the residual just evaluated there
+    if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its, &r2))
       throw error(status::no_convergence, "general solver: Newton iteration did not converge");
   }
   sol.iterations = its;

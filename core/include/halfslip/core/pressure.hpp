@@ -122,7 +122,17 @@ template <class T> class pressure_model {
     const T h = cbrt(eps<T>()) * min(min(dm, dp), T(1)) / 2;
     return (phi(x + h, dm + h, dp - h) - phi(x - h, dm - h, dp + h)) / (2 * h);
   }
+  // phi and (in d) phi' together; models that share work between the two
+  // (the flat punch: the same logarithms) override this.
+  virtual T phi_dphi(const T &x, const T &dm, const T &dp, T &d) const {
+    d = dphi(x, dm, dp);
+    return phi(x, dm, dp);
+  }
   virtual std::vector<breakpoint<T>> breakpoints() const { return {}; }
+  // Stick half-width c (units of a) of the symmetric shear-only problem
+  // (sigma = 0) at q = Q/fP in [0, 1), if known in closed form or cheaply
+  // (a start for the solver); false otherwise.
+  virtual bool shear_only_half_width(const T &, T &) const { return false; }
   // p(-x) = p(x): the mirror x -> -x is then a symmetry of the problem.
   virtual bool symmetric() const { return false; }
   // Integral of p_hat from the edge on `side` (+1: x = 1, -1: x = -1) over a
@@ -176,7 +186,16 @@ template <class T> class hertz_pressure final : public pressure_model<T> {
  public:
   T phi(const T &, const T &, const T &) const override { return T(1); }
   T dphi(const T &, const T &, const T &) const override { return T(0); }
+  T phi_dphi(const T &, const T &, const T &, T &d) const override {
+    d = 0;
+    return T(1);
+  }
   bool symmetric() const override { return true; }
+  bool shear_only_half_width(const T &q, T &c) const override {
+    using std::sqrt;
+    c = sqrt(1 - q);
+    return true;
+  }
   T tail(int, const T &c) const override { return pressure_tail(c); }
 };
 
@@ -201,6 +220,10 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     c0_ = sqrt((1 - beta) * (1 + beta));
     t0_ = beta / c0_;
     g_ = load_factor(beta);
+    {
+      using std::cbrt;
+      kthr_ = cbrt(eps<T>());
+    }
   }
   // g(beta) = pi - 2 asin(beta) - sin(2 asin beta) = 2ep - sin(2ep), ep = acos(beta)
   static T load_factor(const T &beta) {
@@ -238,39 +261,84 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     return beta / solve_ratio(target);
   }
 
-  T phi(const T &x, const T &dm, const T &dp) const override {
-    using std::abs; using std::asin; using std::atanh; using std::cos; using std::log;
-    using std::sin; using std::sqrt; using std::min;
-    const T ax = abs(x);
-    const T dist = min(dm, dp);               // distance to the nearer edge
-    const T c = sqrt(dist * (2 - dist));      // sqrt(1 - x^2), cos(phi)
-    const T pi_ = pi<T>();
-    const T s0 = beta_;
-    if (s0 == 0) return T(1);
-    if (ax > s0 && 2 * c <= c0_) {
-      // near the edges: bracket/c = (pi - 2phi0) + 2 t0 [atanh(z1)/z1 - atanh(z2)/z2]
-      const T z1 = t0_ * c / ax, z2 = c / c0_;
-      return (pi_ - 2 * phi0_ + 2 * t0_ * (atanh_ratio(z1) - atanh_ratio(z2))) / g_;
-    }
-    // kink-safe form: with A = sin(phi+phi0), D = sin(phi-phi0),
-    // |x| L1 + s0 L2 = |x| ln A - (|x| - s0) ln|D| + s0 ln(sin((phi+phi0)/2)/cos(delta/2)) - s0 ln(c0 + c)
-    const T ph = asin(ax);
-    const T delta = ph - phi0_;
-    const T A = ax * c0_ + s0 * c;
-    const T D = ax * c0_ - s0 * c;
-    T br = (pi_ - 2 * phi0_) * c + ax * log(A) + s0 * log(sin((ph + phi0_) / 2) / cos(delta / 2)) -
-           s0 * log(c0_ + c);
-    if (D != 0) br -= (ax - s0) * log(abs(D));
-    return br / (c * g_);
+  T phi(const T &x, const T &dm, const T &dp) const override { return eval(x, dm, dp, nullptr); }
+  T dphi(const T &x, const T &dm, const T &dp) const override {
+    T d;
+    eval(x, dm, dp, &d);
+    return d;
   }
+  T phi_dphi(const T &x, const T &dm, const T &dp, T &d) const override { return eval(x, dm, dp, &d); }
   std::vector<breakpoint<T>> breakpoints() const override {
     if (beta_ == 0) return {};
     return {{-beta_, true}, {beta_, true}};
   }
   bool symmetric() const override { return true; }
+  // Ciavarella-Jager: the contact half-width of the same punch under (1 - q) P
+  bool shear_only_half_width(const T &q, T &c) const override {
+    if (!(q >= 0) || !(q < 1)) return false;
+    c = reduced_load_half_width(beta_, q);
+    return true;
+  }
   T beta() const { return beta_; }
 
  private:
+  // phi and (if d) phi' = d phi / dx (analytic).
+  T eval(const T &x, const T &dm, const T &dp, T *d) const {
+    using std::abs; using std::log; using std::sqrt; using std::min;
+    const T ax = abs(x);
+    const T dist = min(dm, dp);               // distance to the nearer edge
+    const T c = sqrt(dist * (2 - dist));      // sqrt(1 - x^2), cos(phi)
+    const T s0 = beta_;
+    if (s0 == 0) {
+      if (d) *d = 0;
+      return T(1);
+    }
+    const T pf = pi<T>() - 2 * phi0_;
+    if (ax > s0 && 2 * c <= c0_) {
+      // near the edges: bracket/c = (pi - 2phi0) + 2 t0 [h(z1) - h(z2)], h(z) = atanh(z)/z,
+      // z1 = t0 c/|x|, z2 = c/c0 (both <= 1/2 here). With h'(z) = z k(z):
+      // d/d|x| [h(z1) - h(z2)] = -t0^2 k(z1)/|x|^3 + |x| k(z2)/c0^2.
+      const T z1 = t0_ * c / ax, z2 = c / c0_;
+      const T h1 = atanh_ratio(z1), h2 = atanh_ratio(z2);
+      if (d) {
+        const T dd = 2 * t0_ * (-t0_ * t0_ * k_ratio(z1, h1) / (ax * ax * ax) + ax * k_ratio(z2, h2) / (c0_ * c0_)) / g_;
+        *d = x < 0 ? -dd : dd;
+      }
+      return (pf + 2 * t0_ * (h1 - h2)) / g_;
+    }
+    // kink-safe form: with A = sin(phi+phi0), D = sin(phi-phi0),
+    // bracket = (pi - 2phi0) c + |x| ln A - (|x| - s0) ln|D| + s0 ln(sin((phi+phi0)/2)/cos(delta/2)) - s0 ln(c0 + c),
+    // where sin((phi+phi0)/2)/cos((phi-phi0)/2) = (|x| + s0)/(1 + c c0 + |x| s0) (all terms positive).
+    // d bracket/d|x| = -(pi - 2phi0) |x|/c + ln|A/D| (the remaining terms cancel).
+    const T A = ax * c0_ + s0 * c;
+    const T D = ax * c0_ - s0 * c;
+    const T lA = log(A);
+    const T lD = D != 0 ? T(log(abs(D))) : T(0);
+    const T br = pf * c + ax * lA + s0 * log((ax + s0) / ((1 + c * c0_ + ax * s0) * (c0_ + c))) - (ax - s0) * lD;
+    const T ph = br / (c * g_);
+    if (d) {
+      // phi = br/(c g): phi' = br'/(c g) + |x| phi / c^2 (c >= c0/2 here)
+      const T dbr = -pf * ax / c + lA - lD;
+      const T dd = dbr / (c * g_) + ax * ph / (c * c);
+      *d = x < 0 ? -dd : dd;
+    }
+    return ph;
+  }
+  // k(z) = h'(z)/z = sum_{j>=1} 2j/(2j+1) z^(2j-2) for 0 <= z <= 1/2, h = h(z) = atanh(z)/z.
+  // Only for Jacobians: the closed form is used down to z^2 = cbrt(eps) (it loses
+  // at most a factor 1/z^2 to cancellation: still eps^(2/3) accurate), the series below.
+  T k_ratio(const T &z, const T &h) const {
+    const T z2 = z * z;
+    if (z2 >= kthr_) return (1 / (1 - z2) - h) / z2;
+    T sum = T(2) / 3, term = 1;
+    for (int j = 2; j < 10000; ++j) {
+      term *= z2;
+      const T t = term * T(2 * j) / T(2 * j + 1);
+      sum += t;
+      if (!(t > eps<T>() * sum / 4)) break;
+    }
+    return sum;
+  }
   static T atanh_ratio(const T &z) {
     using std::atanh;
     return z == 0 ? T(1) : atanh(z) / z;
@@ -293,7 +361,7 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     }
     return b;
   }
-  T beta_, phi0_, c0_, t0_, g_;
+  T beta_, phi0_, c0_, t0_, g_, kthr_;
 };
 
 // ---------------------------------------------------------------------------
@@ -572,6 +640,11 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
   explicit mirrored_pressure(const pressure_model<T> &base) : b_(base) {}
   T phi(const T &x, const T &dm, const T &dp) const override { return b_.phi(-x, dp, dm); }
   T dphi(const T &x, const T &dm, const T &dp) const override { return -b_.dphi(-x, dp, dm); }
+  T phi_dphi(const T &x, const T &dm, const T &dp, T &d) const override {
+    const T v = b_.phi_dphi(-x, dp, dm, d);
+    d = -d;
+    return v;
+  }
   std::vector<breakpoint<T>> breakpoints() const override {
     auto v = b_.breakpoints();
     for (auto &b : v) b.x = -b.x;
@@ -579,6 +652,7 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
     return v;
   }
   bool symmetric() const override { return b_.symmetric(); }
+  bool shear_only_half_width(const T &q, T &c) const override { return b_.shear_only_half_width(q, c); }
   T tail(int side, const T &c) const override { return b_.tail(-side, c); }
 
  private:
