@@ -247,29 +247,17 @@ general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const 
 }
 
 // ---------------------------------------------------------------------------
-template <class T> class general_solution {
+template <class T>
+class general_solution : public canonical_solution<general_solution<T>, T, general_scene<T>> {
  public:
-  general_scene<T> scene;
-  regime reg = regime::stuck;
-  bool negate = false, mirror = false;
-  // canonical, dimensionless (units of a)
-  T beta1{1}, beta2{1}, delta1{0}, delta2{0}, width{2};
-  int dirR = 0, dirL = 0;
-  int iterations = 0;       // Newton iterations (all continuation steps)
+  using base = canonical_solution<general_solution<T>, T, general_scene<T>>;
+  using base::reg; using base::beta1; using base::beta2; using base::delta1; using base::delta2;
+  using base::width; using base::rtol; using base::scene; using base::mirror; using base::negate;
+  using base::dirR; using base::dirL; using base::iterations; using base::sign; using base::locate;
   int continuation_steps = 0;
   int order = 0;            // Gauss-Legendre order per panel of the accepted residual
-  T rtol{0};
   std::shared_ptr<const pressure_model<T>> owned;  // mirrored view, if any
   const pressure_model<T> *pm = nullptr;            // canonical pressure (must outlive)
-
-  // ---- user frame ----
-  int sign() const { return negate ? -1 : 1; }
-  T b1() const { return scene.a * (mirror ? beta2 : beta1); }
-  T b2() const { return scene.a * (mirror ? beta1 : beta2); }
-  T d1() const { return scene.a * (mirror ? delta2 : delta1); }
-  T d2() const { return scene.a * (mirror ? delta1 : delta2); }
-  int dir1() const { return sign() * (mirror ? dirL : dirR); }
-  int dir2() const { return sign() * (mirror ? dirR : dirL); }
 
   T quad_tol() const {
     using std::cbrt;
@@ -406,39 +394,10 @@ template <class T> class general_solution {
     return abs(sum);
   }
 
-  int locate(const T &x, T &dl) const {
-    const T xi = (mirror ? -x : x) / scene.a;
-    if (delta1 > 0 && xi >= beta1) { dl = xi - beta1; return +1; }
-    if (delta2 > 0 && xi <= -beta2) { dl = -beta2 - xi; return -1; }
-    dl = T(0);
-    return 0;
-  }
-  T Bx(const T &x) const {
-    T dl;
-    const int z = locate(x, dl);
-    if (z == 0) return T(0);
-    const T v = scene.f * scene.p0 / scene.Estar * bhat(z, dl);
-    return (mirror ? -sign() : sign()) * v;
-  }
-  T slip(const T &x) const {
-    T dl;
-    const int z = locate(x, dl);
-    if (z == 0) return T(0);
-    return sign() * scene.f * scene.p0 * scene.a / scene.Estar * hhat(z, dl);
-  }
   T pressure(const T &x) const {
     const T xi = (mirror ? -x : x) / scene.a;
     if (!(xi > -1 && xi < 1)) return T(0);
     return scene.p0 * pm->p(xi);
-  }
-  T work(const T &x) const {
-    using std::abs;
-    return scene.f * pressure(x) * abs(slip(x));
-  }
-  T energy(int i) const {
-    const int z = ((i == 1) != mirror) ? +1 : -1;
-    const T scale = scene.f * scene.f * scene.p0 * scene.p0 * scene.a * scene.a / scene.Estar;
-    return scale * energy_hat(z);
   }
 };
 

@@ -13,13 +13,12 @@
 #include <cmath>
 #include <limits>
 
+#include "frame.hpp"
 #include "hertz_opposite.hpp"
 #include "numerics.hpp"
 #include "status.hpp"
 
 namespace hs { namespace core {
-
-enum class regime : int { stuck = 0, same_sign = 1, opposite_sign = 2 };
 
 template <class T> struct hertz_scene {
   T a{1}, p0{1}, f{1}, Estar{1};
@@ -45,27 +44,11 @@ template <class T> void validate(const hertz_scene<T> &sc) {
   if (!(abs(sc.q) < 1)) throw error(status::gross_sliding, "|Q| >= fP: gross sliding, no stick zone");
 }
 
-template <class T> struct hertz_solution {
-  hertz_scene<T> scene;
-  regime reg = regime::stuck;
-  bool negate = false;  // canonical q,s = -Q/fP, -sigma/fp0
-  bool mirror = false;  // canonical x = -x (edges swapped)
-  // canonical, dimensionless: right zone (beta1, 1), left zone (-1, -beta2)
-  T beta1{1}, beta2{1}, delta1{0}, delta2{0};
-  T width{2};  // beta1 + beta2 (stick-zone length / a), accurate when tiny
-  int dirR = 0, dirL = 0;  // canonical slip directions
-  int iterations = 0;
-  T rtol{0};
-
-  // ---- user frame (see docs/conventions.md) ----
-  int sign() const { return negate ? -1 : 1; }
-  T b1() const { return scene.a * (mirror ? beta2 : beta1); }
-  T b2() const { return scene.a * (mirror ? beta1 : beta2); }
-  T d1() const { return scene.a * (mirror ? delta2 : delta1); }
-  T d2() const { return scene.a * (mirror ? delta1 : delta2); }
-  int dir1() const { return sign() * (mirror ? dirL : dirR); }
-  int dir2() const { return sign() * (mirror ? dirR : dirL); }
-  T half_width() const { return width / 2; }  // stick half-width / a
+template <class T>
+struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>> {
+  using base = canonical_solution<hertz_solution<T>, T, hertz_scene<T>>;
+  using base::reg; using base::beta1; using base::beta2; using base::delta1; using base::delta2;
+  using base::width; using base::rtol; using base::scene; using base::half_width;
 
   // Quadrature tolerance for the numerically integrated outputs.
   T quad_tol() const {
@@ -123,50 +106,11 @@ template <class T> struct hertz_solution {
     return abs(I);
   }
 
-  // ---- dimensional point evaluations in the user frame ----
-  // Locate x: returns zone (+1 right, -1 left, 0 stick) in canonical frame
-  // and the distance dl from the stick boundary (units of a).
-  int locate(const T &x, T &dl) const {
-    const T xi = (mirror ? -x : x) / scene.a;
-    if (delta1 > 0 && xi >= beta1) {
-      dl = xi - beta1;
-      return +1;
-    }
-    if (delta2 > 0 && xi <= -beta2) {
-      dl = -beta2 - xi;
-      return -1;
-    }
-    dl = T(0);
-    return 0;
-  }
-  T Bx(const T &x) const {
-    T dl;
-    const int z = locate(x, dl);
-    if (z == 0) return T(0);
-    const T v = scene.f * scene.p0 / scene.Estar * bhat(z, dl);
-    return (mirror ? -sign() : sign()) * v;
-  }
-  T slip(const T &x) const {
-    T dl;
-    const int z = locate(x, dl);
-    if (z == 0) return T(0);
-    return sign() * scene.f * scene.p0 * scene.a / scene.Estar * hhat(z, dl);
-  }
   T pressure(const T &x) const {
     using std::sqrt;
     const T xi = x / scene.a;
     const T r = (1 - xi) * (1 + xi);
     return r > 0 ? scene.p0 * sqrt(r) : T(0);
-  }
-  T work(const T &x) const {
-    using std::abs;
-    return scene.f * pressure(x) * abs(slip(x));
-  }
-  // Energy dissipated in user zone i (1: (b1, a), 2: (-a, -b2)).
-  T energy(int i) const {
-    const int z = ((i == 1) != mirror) ? +1 : -1;
-    const T scale = scene.f * scene.f * scene.p0 * scene.p0 * scene.a * scene.a / scene.Estar;
-    return scale * energy_hat(z);
   }
 };
 

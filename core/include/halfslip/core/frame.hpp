@@ -1,0 +1,83 @@
+// halfslip core: the canonical-to-user frame mapping shared by every solution
+// type (Hertz closed forms, general pressures).
+//
+// A solver works on the canonical scene q = Q/fP >= 0, s = sigma/(f p0) >= 0
+// (docs/conventions.md): negation (Q, sigma) -> (-Q, -sigma) flips every slip,
+// the mirror x -> -x swaps the edges. Derived supplies the canonical,
+// dimensionless bhat(zone, dl), hhat(zone, dl) and energy_hat(zone), zone +1
+// being (beta1, 1) and -1 being (-1, -beta2), dl the distance from the stick
+// boundary in units of a, and pressure(x) in the user frame.
+#pragma once
+#include <cmath>
+
+namespace hs { namespace core {
+
+enum class regime : int { stuck = 0, same_sign = 1, opposite_sign = 2 };
+
+template <class Derived, class T, class Scene> struct canonical_solution {
+  Scene scene;
+  regime reg = regime::stuck;
+  bool negate = false;  // canonical q, s = -Q/fP, -sigma/fp0
+  bool mirror = false;  // canonical x = -x (edges swapped)
+  // canonical, dimensionless: right zone (beta1, 1), left zone (-1, -beta2)
+  T beta1{1}, beta2{1}, delta1{0}, delta2{0};
+  T width{2};  // beta1 + beta2 (stick-zone length / a), accurate when tiny
+  int dirR = 0, dirL = 0;  // canonical slip directions
+  int iterations = 0;
+  T rtol{0};
+
+  // ---- user frame ----
+  int sign() const { return negate ? -1 : 1; }
+  T b1() const { return scene.a * (mirror ? beta2 : beta1); }
+  T b2() const { return scene.a * (mirror ? beta1 : beta2); }
+  T d1() const { return scene.a * (mirror ? delta2 : delta1); }
+  T d2() const { return scene.a * (mirror ? delta1 : delta2); }
+  int dir1() const { return sign() * (mirror ? dirL : dirR); }
+  int dir2() const { return sign() * (mirror ? dirR : dirL); }
+  T half_width() const { return width / 2; }  // stick half-width / a
+
+  // Locate x: canonical zone (+1 right, -1 left, 0 stick) and the distance dl
+  // from the stick boundary (units of a).
+  int locate(const T &x, T &dl) const {
+    const T xi = (mirror ? -x : x) / scene.a;
+    if (delta1 > 0 && xi >= beta1) {
+      dl = xi - beta1;
+      return +1;
+    }
+    if (delta2 > 0 && xi <= -beta2) {
+      dl = -beta2 - xi;
+      return -1;
+    }
+    dl = T(0);
+    return 0;
+  }
+  // B_x = (f p0/E*) bhat, h = (f p0 a/E*) hhat, energy = (f^2 p0^2 a^2/E*) energy_hat
+  T Bx(const T &x) const {
+    T dl;
+    const int z = locate(x, dl);
+    if (z == 0) return T(0);
+    const T v = scene.f * scene.p0 / scene.Estar * self().bhat(z, dl);
+    return (mirror ? -sign() : sign()) * v;
+  }
+  T slip(const T &x) const {
+    T dl;
+    const int z = locate(x, dl);
+    if (z == 0) return T(0);
+    return sign() * scene.f * scene.p0 * scene.a / scene.Estar * self().hhat(z, dl);
+  }
+  T work(const T &x) const {
+    using std::abs;
+    return scene.f * self().pressure(x) * abs(slip(x));
+  }
+  // Energy dissipated in user zone i (1: (b1, a), 2: (-a, -b2)).
+  T energy(int i) const {
+    const int z = ((i == 1) != mirror) ? +1 : -1;
+    const T scale = scene.f * scene.f * scene.p0 * scene.p0 * scene.a * scene.a / scene.Estar;
+    return scale * self().energy_hat(z);
+  }
+
+ private:
+  const Derived &self() const { return static_cast<const Derived &>(*this); }
+};
+
+}}  // namespace hs::core
