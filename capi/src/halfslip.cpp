@@ -67,6 +67,18 @@ void require(bool ok, core::status s, const char *msg) {
   if (!ok) throw core::error(s, msg);
 }
 
+// Validated solver options (NULL: keep the defaults already in the outputs).
+void read_options(const hs_options *opts, int &max_iterations, double &rtol) {
+  if (!opts) return;
+  require(opts->struct_size == sizeof(hs_options), core::status::struct_size, "options struct_size");
+  require(opts->max_iterations >= 1 && opts->max_iterations <= 100000, core::status::bad_option,
+          "max_iterations out of range");
+  require(std::isfinite(opts->rtol) && (opts->rtol == 0 || (opts->rtol >= 1e-15 && opts->rtol <= 1e-2)),
+          core::status::bad_option, "rtol out of range");
+  max_iterations = opts->max_iterations;
+  rtol = opts->rtol;
+}
+
 core::hertz_scene<double> to_core(const hs_scene *sc) {
   require(sc != nullptr, core::status::null_pointer, "scene is NULL");
   require(sc->struct_size == sizeof(hs_scene), core::status::struct_size, "scene struct_size");
@@ -205,15 +217,7 @@ int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
     require(out != nullptr, core::status::null_pointer, "output handle pointer is NULL");
     const auto sc = to_core(scene);
     core::solve_options<double> o;
-    if (opts) {
-      require(opts->struct_size == sizeof(hs_options), core::status::struct_size, "options struct_size");
-      require(opts->max_iterations >= 1 && opts->max_iterations <= 100000, core::status::bad_option,
-              "max_iterations out of range");
-      require(std::isfinite(opts->rtol) && (opts->rtol == 0 || (opts->rtol >= 1e-15 && opts->rtol <= 1e-2)),
-              core::status::bad_option, "rtol out of range");
-      o.max_iterations = opts->max_iterations;
-      o.rtol = opts->rtol;
-    }
+    read_options(opts, o.max_iterations, o.rtol);
     auto h = std::make_unique<hs_solution>();
     h->hertz = std::make_unique<core::hertz_solution<double>>(core::solve_hertz<double>(sc, o));
     *out = h.release();
@@ -298,15 +302,7 @@ int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const 
     require(std::isfinite(sc.a) && sc.a > 0, std::isfinite(sc.a) ? core::status::bad_size : core::status::not_finite,
             "contact half-width a must be finite and > 0");
     core::general_options<double> o;
-    if (opts) {
-      require(opts->struct_size == sizeof(hs_options), core::status::struct_size, "options struct_size");
-      require(opts->max_iterations >= 1 && opts->max_iterations <= 100000, core::status::bad_option,
-              "max_iterations out of range");
-      require(std::isfinite(opts->rtol) && (opts->rtol == 0 || (opts->rtol >= 1e-15 && opts->rtol <= 1e-2)),
-              core::status::bad_option, "rtol out of range");
-      o.max_iterations = opts->max_iterations;
-      o.rtol = opts->rtol;
-    }
+    read_options(opts, o.max_iterations, o.rtol);
     auto h = std::make_unique<hs_solution>();
     switch (geometry->kind) {
       case HS_GEOMETRY_FLAT_ROUNDED:
