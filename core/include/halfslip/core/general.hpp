@@ -295,18 +295,7 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
         const T den = e + dl + d * sn * sn;
         return H(th, thc) / den;
       };
-      cuts.push_back(T(0));
-      cuts.push_back(half_pi);
-      std::sort(cuts.begin(), cuts.end());
-      T sum = 0;
-      for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        const T lo = cuts[i], hi = cuts[i + 1];
-        if (!(hi > lo)) continue;
-        sum += integrate_ts<T>([&](const T &th, const T &xc) {
-          const T thc = xc > 0 && hi == half_pi ? xc : half_pi - th;
-          return f(th, thc);
-        }, lo, hi, tol);
-      }
+      const T sum = integrate_pieces<T>(f, T(0), half_pi, cuts, tol);
       // zone R: t - xi > 0 (xi in zone L); zone L: t - xi < 0 (xi in zone R)
       return zside > 0 ? sum : -sum;
     }
@@ -379,18 +368,9 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
     if (!(d > 0)) return T(0);
     std::vector<T> cuts;
     for (const T &k : kink_distances(z)) cuts.push_back(k);
-    cuts.push_back(T(0));
-    cuts.push_back(d);
-    std::sort(cuts.begin(), cuts.end());
-    T sum = 0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const T lo = cuts[i], hi = cuts[i + 1];
-      if (!(hi > lo)) continue;
-      sum += integrate_ts<T>([&](const T &u, const T &uc) {
-        const T c = (uc > 0 && hi == d) ? uc : d - u;  // distance to the contact edge
-        return pm->tail(z, c) * hgrad(z, u);
-      }, lo, hi, quad_tol());
-    }
+    // c: distance to the contact edge
+    const T sum = integrate_pieces<T>([&](const T &u, const T &c) { return pm->tail(z, c) * hgrad(z, u); }, T(0), d,
+                                      cuts, quad_tol());
     return abs(sum);
   }
 

@@ -2,8 +2,10 @@
 // Every truncation rule derives from std::numeric_limits<T>::epsilon() (or the
 // run-time precision of a multiprecision T), never from a double constant.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -82,6 +84,27 @@ T integrate_ts(const F &f, const T &lo, const T &hi, const T &rtol, T *err = nul
   const T e2 = eps<T>() * eps<T>();
   boost::math::quadrature::tanh_sinh<T> ts(15, e2 * e2);
   return ts.integrate(f, lo, hi, rtol, err, L1);
+}
+
+// Integral over [lo, hi] of f(x, c), with c = hi - x exact near hi, by
+// tanh-sinh on the pieces between the given interior points (kinks).
+template <class T, class F>
+T integrate_pieces(const F &f, const T &lo, const T &hi, std::vector<T> cuts, const T &tol) {
+  cuts.push_back(lo);
+  cuts.push_back(hi);
+  std::sort(cuts.begin(), cuts.end());
+  T sum = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const T a = cuts[i], b = cuts[i + 1];
+    if (!(b > a)) continue;
+    sum += integrate_ts<T>(
+        [&](const T &x, const T &xc) {
+          const T c = (xc > 0 && b == hi) ? xc : hi - x;
+          return f(x, c);
+        },
+        a, b, tol);
+  }
+  return sum;
 }
 
 }}  // namespace hs::core

@@ -150,15 +150,7 @@ template <class T> class pressure_model {
 // Integral of f(w) over [0, 1] by tanh-sinh split at given points (in w).
 template <class T, class F>
 T integrate_split(const F &f, std::vector<T> cuts, const T &tol) {
-  cuts.push_back(T(0));
-  cuts.push_back(T(1));
-  std::sort(cuts.begin(), cuts.end());
-  T sum = 0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    if (!(cuts[i + 1] > cuts[i])) continue;
-    sum += integrate_ts<T>([&](const T &w, const T &) { return f(w); }, cuts[i], cuts[i + 1], tol);
-  }
-  return sum;
+  return integrate_pieces<T>([&](const T &w, const T &) { return f(w); }, T(0), T(1), std::move(cuts), tol);
 }
 
 template <class T> T pressure_model<T>::tail(int side, const T &c) const {
