@@ -146,7 +146,7 @@ typedef struct hs_summary {
   double d2;            /* a - b2 */
   /* since 0.2: (a caller may pass struct_size = offsetof(hs_summary, p0)) */
   double p0;            /* reference pressure 2P/(pi a) actually used */
-  int quadrature_order; /* Gauss-Legendre order per panel (0: closed forms) */
+  int quadrature_order; /* Gauss-Legendre order per panel (0: closed forms, or stuck) */
 } hs_summary;
 
 HS_EXPORT int hs_solution_summary(const hs_solution *sol, hs_summary *out);
