@@ -41,7 +41,8 @@ for t in solve ref; do
   cp tests/fuzz/corpus/$t/* "$work/"
   # crash inputs are written to tests/fuzz/crashes/: copy them into corpus/$t to keep them as regression tests
   log="$(mktemp)"
-  if ! build-fuzz/tests/fuzz/fuzz_$t "$work" -max_total_time="${HS_FUZZ_SECONDS:-20}" -max_len=256 -timeout=20 \
+  # a fixed seed keeps CI reproducible (HS_FUZZ_SEED=0 lets libFuzzer pick one, for longer local hunts)
+  if ! build-fuzz/tests/fuzz/fuzz_$t "$work" -seed="${HS_FUZZ_SEED:-1}" -max_total_time="${HS_FUZZ_SECONDS:-20}" -max_len=256 -timeout=20 \
       -rss_limit_mb=4096 -artifact_prefix=tests/fuzz/crashes/$t- -print_final_stats=1 >"$log" 2>&1; then
     tail -40 "$log"
     echo "fuzz_$t found a failing input in tests/fuzz/crashes/ (add it to tests/fuzz/corpus/$t/)"
