@@ -360,7 +360,29 @@ def solve(Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_sta
                        exponent=exponent, samples=samples, pressure=pressure)
 
 
-class Solution:
+class _Handle:
+    """Owner of one C handle: close() frees it once (subclasses say how, in
+    _release); usable as a context manager; freed at garbage collection."""
+
+    def close(self):
+        h, self._h = getattr(self, "_h", None), None
+        self._release(h)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # interpreter shutdown
+            pass
+
+
+class Solution(_Handle):
     """A solved scene (an immutable C handle; safe to evaluate from several
     threads). Use as a context manager, or call close(); the handle is also
     freed when the object is garbage collected. The summary properties stay
@@ -397,24 +419,10 @@ class Solution:
             raise ValueError("halfslip: the solution has been closed")
         return self._h
 
-    def close(self):
-        h, self._h = getattr(self, "_h", None), None
+    def _release(self, h):
         if h:
             _lib.hs_solution_free(h)
         self._callback = None
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:  # interpreter shutdown
-            pass
 
     def __repr__(self):
         return "<halfslip.Solution %s b1=%.17g b2=%.17g%s>" % (
@@ -520,7 +528,7 @@ def _ref_text(fn, name, args):
         return Certified(buf.value.decode("ascii"), certified.value)
 
 
-class ReferenceSolution:
+class ReferenceSolution(_Handle):
     """A reference (MPFR) solution. Values are Certified strings: b1, b2, d1,
     d2, a, p0, energy(), and the point evaluations Bx(x), slip(x), work(x),
     pressure(x) at a decimal point x (or a list of them)."""
@@ -549,23 +557,9 @@ class ReferenceSolution:
             raise ValueError("halfslip: the reference solution has been closed")
         return self._h
 
-    def close(self):
-        h, self._h = getattr(self, "_h", None), None
+    def _release(self, h):
         if h:
             _lib.hs_ref_solution_free(h)
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:
-            pass
 
     def __repr__(self):
         return "<halfslip.ReferenceSolution %s, %d digits%s>" % (
