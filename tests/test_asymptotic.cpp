@@ -71,3 +71,54 @@ TEST_CASE("fractional energy error: under-estimate under shear, over-estimate un
   CHECK(e9 > 0.03);
   CHECK(e9 < 0.3);
 }
+
+TEST_CASE("K_N from a pressure model: edge_phi equals eq 27's (1/pi) sqrt(2/a) dP/da for every model") {
+  // flat punch: P = a^2 g(b_f/a)/(2AR), p0 = a g/(pi A R), so eq 27 gives
+  // K_N/(p0 sqrt(2/a)) = 1 + 2 beta sqrt(1-beta^2)/g(beta); power law P ~ a^n gives n/2
+  for (double beta : {0.0, 0.3, 0.6, 0.9}) {
+    core::flat_rounded_pressure<double> pm(beta);
+    const double g = core::flat_rounded_pressure<double>::load_factor(beta);
+    const double expect = 1 + 2 * beta * std::sqrt(1 - beta * beta) / g;
+    CAPTURE(beta);
+    CHECK(pm.edge_phi(+1) == doctest::Approx(expect).epsilon(1e-12));
+    CHECK(pm.edge_phi(-1) == doctest::Approx(expect).epsilon(1e-12));
+    // the default (Richardson) rule agrees with the model's own edge value
+    CHECK(pm.pressure_model<double>::edge_phi(+1) == doctest::Approx(expect).epsilon(1e-9));
+  }
+  for (double n : {1.5, 2.0, 3.0, 4.5}) {
+    core::power_law_pressure<double> pm(n);
+    CAPTURE(n);
+    CHECK(pm.edge_phi(+1) == doctest::Approx(n / 2).epsilon(1e-15));
+    CHECK(pm.pressure_model<double>::edge_phi(-1) == doctest::Approx(n / 2).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("edge_solution: zone lengths, slip directions and signs of B_x, h agree with the full solution as d -> 0") {
+  // every sign combination of (Q, sigma), both regimes; the model's error is O(d/a)
+  core::hertz_pressure<double> pm;
+  for (double q : {2e-4, -2e-4})
+    for (double s : {0.0, 1e-4, -1e-4, 3e-3, -3e-3}) {
+      core::general_scene<double> sc;
+      sc.a = 2.0; sc.p0 = 1.5; sc.f = 0.4; sc.Estar = 3.0; sc.q = q; sc.s = s;
+      core::hertz_scene<double> hsc;
+      hsc.a = sc.a; hsc.p0 = sc.p0; hsc.f = sc.f; hsc.Estar = sc.Estar; hsc.q = q; hsc.s = s;
+      const auto full = core::solve_hertz(hsc);
+      const core::edge_solution<double> m(pm, sc);
+      CAPTURE(q); CAPTURE(s);
+      CHECK(int(m.reg) == int(full.reg));
+      CHECK(m.dir1() == full.dir1());
+      CHECK(m.dir2() == full.dir2());
+      CHECK(m.d1() == doctest::Approx(full.d1()).epsilon(1e-2));
+      CHECK(m.d2() == doctest::Approx(full.d2()).epsilon(1e-2));
+      for (double t : {0.3, 0.7}) {
+        const double x1 = sc.a - t * full.d1(), x2 = -sc.a + t * full.d2();
+        CHECK(m.Bx(x1) == doctest::Approx(full.Bx(x1)).epsilon(2e-2));
+        CHECK(m.Bx(x2) == doctest::Approx(full.Bx(x2)).epsilon(2e-2));
+        CHECK(m.slip(x1) == doctest::Approx(full.slip(x1)).epsilon(3e-2));
+        CHECK(m.slip(x2) == doctest::Approx(full.slip(x2)).epsilon(3e-2));
+        CHECK(m.work(x1) == doctest::Approx(full.work(x1)).epsilon(3e-2));
+      }
+      CHECK(m.energy(1) == doctest::Approx(full.energy(1)).epsilon(3e-2));
+      CHECK(m.energy(2) == doctest::Approx(full.energy(2)).epsilon(3e-2));
+    }
+}

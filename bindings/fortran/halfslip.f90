@@ -49,6 +49,14 @@ module halfslip
   integer(c_int), parameter, public :: HS_ERR_INTERNAL         = 13
   integer(c_int), parameter, public :: HS_ERR_OVERFLOW         = 14
   integer(c_int), parameter, public :: HS_ERR_BAD_NUMBER       = 15
+  integer(c_int), parameter, public :: HS_ERR_TOLERANCE        = 16
+
+  integer(c_int), parameter, public :: HS_MODEL_DEFAULT     = 0
+  integer(c_int), parameter, public :: HS_MODEL_AUTO        = 1
+  integer(c_int), parameter, public :: HS_MODEL_ASYMPTOTIC  = 2
+  integer(c_int), parameter, public :: HS_MODEL_CLOSED_FORM = 3
+  integer(c_int), parameter, public :: HS_MODEL_QUADRATURE  = 4
+  integer(c_int), parameter, public :: HS_MODEL_REFERENCE   = 5
 
   integer(c_int), parameter, public :: HS_GEOMETRY_HERTZ        = 1
   integer(c_int), parameter, public :: HS_GEOMETRY_FLAT_ROUNDED = 2
@@ -90,6 +98,7 @@ module halfslip
     integer(c_size_t) :: struct_size = 0
     integer(c_int)    :: max_iterations = 0
     real(c_double)    :: rtol = 0
+    integer(c_int)    :: model = 0              ! HS_MODEL_* (since 0.3)
   end type hs_options
 
   ! Outputs: the wrappers set struct_size themselves.
@@ -99,6 +108,8 @@ module halfslip
     real(c_double)    :: a = 0, b1 = 0, b2 = 0, d1 = 0, d2 = 0
     real(c_double)    :: p0 = 0                 ! reference pressure 2P/(pi a) used
     integer(c_int)    :: quadrature_order = 0   ! Gauss-Legendre order per panel (0: closed forms)
+    integer(c_int)    :: model = 0              ! HS_MODEL_* used (since 0.3)
+    real(c_double)    :: error_estimate = 0     ! estimated largest relative error of d1, d2, E1, E2
   end type hs_summary
 
   ! Pressure of a non-Hertz geometry (hs_solve_geometry). Fill it with

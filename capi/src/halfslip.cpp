@@ -14,6 +14,7 @@
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/reference/backend.hpp"
+#include "solution.hpp"
 
 namespace core = hs::core;
 
@@ -33,15 +34,7 @@ static_assert(HS_ERR_OUT_OF_MEMORY == int(core::status::out_of_memory), "status 
 static_assert(HS_ERR_INTERNAL == int(core::status::internal), "status table");
 static_assert(HS_ERR_OVERFLOW == int(core::status::overflow), "status table");
 static_assert(HS_ERR_BAD_NUMBER == int(core::status::bad_number), "status table");
-
-struct hs_solution {
-  // exactly one of hertz / general is set; the general solution refers to
-  // the pressure model, which the handle owns
-  std::unique_ptr<core::hertz_solution<double>> hertz;
-  std::shared_ptr<const core::pressure_model<double>> model;
-  std::unique_ptr<core::general_solution<double>> general;
-  template <class F> auto visit(F &&f) const { return hertz ? f(*hertz) : f(*general); }
-};
+static_assert(HS_ERR_TOLERANCE == int(core::status::tolerance), "status table");
 
 struct hs_ref_solution {
   hs::reference::solution sol;
@@ -67,16 +60,41 @@ void require(bool ok, core::status s, const char *msg) {
   if (!ok) throw core::error(s, msg);
 }
 
-// Validated solver options (NULL: keep the defaults already in the outputs).
-void read_options(const hs_options *opts, int &max_iterations, double &rtol) {
-  if (!opts) return;
-  require(opts->struct_size == sizeof(hs_options), core::status::struct_size, "options struct_size");
+// Validated solver options (NULL: the defaults). A 0.2 caller passes the
+// size without the model field and gets HS_MODEL_DEFAULT.
+hs::capi::request read_options(const hs_options *opts) {
+  hs::capi::request r;
+  if (!opts) return r;
+  const size_t n = opts->struct_size;
+  require(n == sizeof(hs_options) || n == offsetof(hs_options, model), core::status::struct_size,
+          "options struct_size");
   require(opts->max_iterations >= 1 && opts->max_iterations <= 100000, core::status::bad_option,
           "max_iterations out of range");
-  require(std::isfinite(opts->rtol) && (opts->rtol == 0 || (opts->rtol >= 1e-15 && opts->rtol <= 1e-2)),
-          core::status::bad_option, "rtol out of range");
-  max_iterations = opts->max_iterations;
-  rtol = opts->rtol;
+  r.model = n == sizeof(hs_options) ? opts->model : HS_MODEL_DEFAULT;
+  require(r.model >= HS_MODEL_DEFAULT && r.model <= HS_MODEL_REFERENCE, core::status::bad_option, "unknown model");
+  const double t = opts->rtol;
+  if (r.model == HS_MODEL_AUTO)
+    require(std::isfinite(t) && (t == 0 || (t >= std::ldexp(1.0, -53) && t <= 0.5)), core::status::bad_option,
+            "rtol out of range");
+  else
+    require(std::isfinite(t) && (t == 0 || (t >= 1e-15 && t <= 1e-2)), core::status::bad_option,
+            "rtol out of range");
+  r.max_iterations = opts->max_iterations;
+  r.rtol = t;
+  return r;
+}
+
+// The scene as the reference backend reads it (exact decimals of the doubles).
+hs::capi::reference_input reference_of(const core::general_scene<double> &sc) {
+  hs::capi::reference_input in;
+  in.available = true;
+  in.text.a = hs::capi::exact_decimal(sc.a);
+  in.text.p0 = hs::capi::exact_decimal(sc.p0);
+  in.text.f = hs::capi::exact_decimal(sc.f);
+  in.text.Estar = hs::capi::exact_decimal(sc.Estar);
+  in.text.q = hs::capi::exact_decimal(sc.q);
+  in.text.s = hs::capi::exact_decimal(sc.s);
+  return in;
 }
 
 core::hertz_scene<double> to_core(const hs_scene *sc) {
@@ -152,6 +170,7 @@ const char *hs_strerror(int status) {
     case HS_ERR_INTERNAL: return "internal error in halfslip (please report)";
     case HS_ERR_OVERFLOW: return "a result is not representable in double precision (overflow)";
     case HS_ERR_BAD_NUMBER: return "a decimal number string could not be parsed";
+    case HS_ERR_TOLERANCE: return "no model meets the requested tolerance in double precision (use the reference backend, hs_ref_solve)";
     default: return "unknown halfslip status code";
   }
 }
@@ -215,11 +234,24 @@ int hs_options_default(hs_options *opts) {
 int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
   return guard([&] {
     require(out != nullptr, core::status::null_pointer, "output handle pointer is NULL");
-    const auto sc = to_core(scene);
-    core::solve_options<double> o;
-    read_options(opts, o.max_iterations, o.rtol);
+    const auto c = to_core(scene);
+    const auto r = read_options(opts);
+    core::general_scene<double> sc;
+    sc.a = c.a; sc.p0 = c.p0; sc.f = c.f; sc.Estar = c.Estar; sc.q = c.q; sc.s = c.s;
     auto h = std::make_unique<hs_solution>();
-    h->hertz = std::make_unique<core::hertz_solution<double>>(core::solve_hertz<double>(sc, o));
+    if (r.model == HS_MODEL_DEFAULT) {  // the fast path: no model machinery
+      core::solve_options<double> o;
+      o.max_iterations = r.max_iterations;
+      o.rtol = r.rtol;
+      h->hertz = std::make_unique<core::hertz_solution<double>>(core::solve_hertz<double>(c, o));
+      h->model_used = HS_MODEL_CLOSED_FORM;
+      const auto e = core::closed_form_estimate(h->hertz->d1() / c.a, h->hertz->d2() / c.a).value();
+      h->error_estimate = 16 * r.rtol > e ? 16 * r.rtol : e;
+    } else {
+      hs::capi::reference_input ref;
+      if (r.model == HS_MODEL_AUTO || r.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
+      hs::capi::solve_models(*h, true, sc, r, ref);
+    }
     *out = h.release();
   });
 }
@@ -232,8 +264,8 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
     // structs grow at the end: a caller built against the 0.1 header (before
     // p0 and quadrature_order) passes the shorter size and gets those fields
     const size_t n = out->struct_size;
-    require(n == sizeof(hs_summary) || n == offsetof(hs_summary, p0), core::status::struct_size,
-            "summary struct_size");
+    require(n == sizeof(hs_summary) || n == offsetof(hs_summary, model) || n == offsetof(hs_summary, p0),
+            core::status::struct_size, "summary struct_size");
     hs_summary r;
     std::memset(&r, 0, sizeof r);
     r.struct_size = sizeof(hs_summary);
@@ -251,6 +283,8 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
       return 0;
     });
     r.quadrature_order = sol->general ? sol->general->order : 0;
+    r.model = sol->model_used;
+    r.error_estimate = sol->error_estimate;
     r.struct_size = n;
     std::memcpy(out, &r, n);
   });
@@ -301,9 +335,9 @@ int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const 
     sc.s = scene->sigma_over_fp0;
     require(std::isfinite(sc.a) && sc.a > 0, std::isfinite(sc.a) ? core::status::bad_size : core::status::not_finite,
             "contact half-width a must be finite and > 0");
-    core::general_options<double> o;
-    read_options(opts, o.max_iterations, o.rtol);
+    const auto req = read_options(opts);
     auto h = std::make_unique<hs_solution>();
+    hs::capi::reference_input ref;
     switch (geometry->kind) {
       case HS_GEOMETRY_FLAT_ROUNDED:
         require(std::isfinite(geometry->flat_over_a), core::status::not_finite, "flat_over_a is not finite");
@@ -345,7 +379,7 @@ int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const 
       default:
         throw core::error(core::status::bad_geometry, "unknown geometry");
     }
-    h->general = std::make_unique<core::general_solution<double>>(core::solve_general<double>(*h->model, sc, o));
+    hs::capi::solve_models(*h, false, sc, req, ref);
     *out = h.release();
   });
 }

@@ -52,6 +52,16 @@ ERR_OUT_OF_MEMORY = 12
 ERR_INTERNAL = 13
 ERR_OVERFLOW = 14
 ERR_BAD_NUMBER = 15
+ERR_TOLERANCE = 16
+
+MODEL_DEFAULT = 0
+MODEL_AUTO = 1
+MODEL_ASYMPTOTIC = 2
+MODEL_CLOSED_FORM = 3
+MODEL_QUADRATURE = 4
+MODEL_REFERENCE = 5
+_MODEL_NAMES = {"default": MODEL_DEFAULT, "auto": MODEL_AUTO, "asymptotic": MODEL_ASYMPTOTIC,
+                "closed-form": MODEL_CLOSED_FORM, "quadrature": MODEL_QUADRATURE, "reference": MODEL_REFERENCE}
 
 GEOMETRY_HERTZ = 1
 GEOMETRY_FLAT_ROUNDED = 2
@@ -228,7 +238,7 @@ class Scene:
         return "Scene(%s)" % ", ".join("%s=%r" % (k, getattr(self, k)) for k in self._FIELDS)
 
     def solve(self, *, max_iterations=None, rtol=None, geometry=None, flat_over_a=None, exponent=None,
-              samples=None, pressure=None):
+              samples=None, pressure=None, model=None):
         """Solve this scene; returns a Solution. Without geometry arguments the
         pressure is Hertz (closed forms). Otherwise (numerical inversion):
           flat_over_a=b_f/a      flat punch with rounded corners
@@ -240,15 +250,20 @@ class Scene:
                                  evaluations); an exception it raises propagates
         geometry ("hertz", "flat-rounded", "power-law", "samples", "callback"
         or a GEOMETRY_* value) may name the kind explicitly; the C defaults
-        fill what is not given (flat_over_a = 0.5, exponent = 2)."""
+        fill what is not given (flat_over_a = 0.5, exponent = 2).
+        model ("default", "auto", "asymptotic", "closed-form", "quadrature",
+        "reference" or a MODEL_* value): with "auto", the cheapest model whose
+        error estimate meets rtol (docs/models.md)."""
         opts = None
-        if max_iterations is not None or rtol is not None:
+        if max_iterations is not None or rtol is not None or model is not None:
             o = _clib.Options()
             _check(_lib.hs_options_default(byref(o)), "hs_options_default")
             if max_iterations is not None:
                 o.max_iterations = int(max_iterations)
             if rtol is not None:
                 o.rtol = float(rtol)
+            if model is not None:
+                o.model = _MODEL_NAMES[model] if isinstance(model, str) else int(model)
             opts = byref(o)
         kind = _geometry_kind(geometry, flat_over_a, exponent, samples, pressure)
         h = _clib.SolutionP()
@@ -413,6 +428,9 @@ class Solution(_Handle):
     p0 = property(lambda self: self._s.p0, doc="reference pressure 2P/(pi a) used")
     quadrature_order = property(lambda self: self._s.quadrature_order,
                                 doc="Gauss-Legendre order per panel (0: closed forms)")
+    model = property(lambda self: self._s.model, doc="MODEL_* used (ASYMPTOTIC, CLOSED_FORM, QUADRATURE, REFERENCE)")
+    error_estimate = property(lambda self: self._s.error_estimate,
+                              doc="estimated largest relative error of d1, d2 and the zone energies")
 
     def _handle(self):
         if not self._h:

@@ -39,6 +39,7 @@ class Options(ctypes.Structure):
         ("struct_size", c_size_t),
         ("max_iterations", c_int),
         ("rtol", c_double),
+        ("model", c_int),  # since 0.3
     ]
 
 
@@ -57,6 +58,8 @@ class Summary(ctypes.Structure):
         ("d2", c_double),
         ("p0", c_double),
         ("quadrature_order", c_int),
+        ("model", c_int),  # since 0.3
+        ("error_estimate", c_double),
     ]
 
 

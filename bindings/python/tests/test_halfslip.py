@@ -54,12 +54,12 @@ class TestLibraryAndVersion(unittest.TestCase):
         checked = 0
         for name, value in macros.items():
             short = name[3:]
-            if short.startswith(("OK", "ERR_", "REGIME_", "GEOMETRY_")):
+            if short.startswith(("OK", "ERR_", "REGIME_", "GEOMETRY_", "MODEL_")):
                 self.assertEqual(getattr(halfslip, short), int(value), name)
                 checked += 1
         self.assertGreaterEqual(checked, 20)
         for name in dir(halfslip):
-            if re.match(r"^(OK|ERR_\w+|REGIME_\w+|GEOMETRY_\w+)$", name):
+            if re.match(r"^(OK|ERR_\w+|REGIME_\w+|GEOMETRY_\w+|MODEL_\w+)$", name):
                 self.assertIn("HS_" + name, macros, "constant %s is not in the header" % name)
 
     def test_version(self):
@@ -82,7 +82,8 @@ class TestLibraryAndVersion(unittest.TestCase):
     def test_struct_layouts(self):
         # halfslip.h on LP64: size_t, int (+pad), doubles / pointers
         self.assertEqual(ctypes.sizeof(halfslip._clib.Scene), 2 * 8 + 6 * 8)
-        self.assertEqual(ctypes.sizeof(halfslip._clib.Summary), 8 + 4 * 4 + 6 * 8 + 4 + 4)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.Summary), 8 + 4 * 4 + 6 * 8 + 4 + 4 + 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.Options), 8 + 4 + 4 + 8 + 4 + 4)
         self.assertEqual(ctypes.sizeof(halfslip._clib.Geometry), 8 + 4 + 4 + 2 * 8 + 8 + 4 * 8)
         self.assertEqual(ctypes.sizeof(halfslip._clib.RefScene), 2 * 8 + 10 * ctypes.sizeof(ctypes.c_void_p))
         # a drifted layout is caught at load time: a copy of the package whose

@@ -71,6 +71,7 @@ HS_EXPORT const char *hs_version_string(void);
 #define HS_ERR_INTERNAL          13  /* unexpected internal error (please report) */
 #define HS_ERR_OVERFLOW          14  /* a result is not representable (overflow) */
 #define HS_ERR_BAD_NUMBER        15  /* a decimal string could not be parsed */
+#define HS_ERR_TOLERANCE         16  /* no model meets the requested rtol in double precision */
 
 /* Message for a status code; never NULL. Unknown codes give a generic text. */
 HS_EXPORT const char *hs_strerror(int status);
@@ -114,12 +115,27 @@ HS_EXPORT int hs_scene_from_hertz_loads(double P, double R, double E_star, doubl
                                         double Q, double sigma, hs_scene *scene);
 
 /* ---- options ---------------------------------------------------------------- */
+/* Models (docs/models.md). The error of a solution is the largest relative
+ * error of the slip-zone lengths d1, d2 and the zone energies (nonempty zones);
+ * every model reports an estimate of it (hs_summary.error_estimate). */
+#define HS_MODEL_DEFAULT     0  /* closed forms (Hertz) or quadrature at rtol (other geometries) */
+#define HS_MODEL_AUTO        1  /* the cheapest model whose error estimate is <= rtol, tried in
+                                   the order asymptotic, closed form / quadrature, reference */
+#define HS_MODEL_ASYMPTOTIC  2  /* single-edge asymptotic model (paper section 5), any geometry */
+#define HS_MODEL_CLOSED_FORM 3  /* Hertz closed forms (Hertz only) */
+#define HS_MODEL_QUADRATURE  4  /* numerical Cauchy-kernel inversion, any geometry (Hertz too) */
+#define HS_MODEL_REFERENCE   5  /* MPFR reference backend, certified and rounded to double
+                                   (Hertz, flat-rounded, power law) */
+
 typedef struct hs_options {
   size_t struct_size;   /* = sizeof(hs_options), set by hs_options_default */
   int max_iterations;   /* Newton iteration cap, >= 1 (default 100) */
-  double rtol;          /* relative tolerance asked of quadrature-based outputs
-                           (slip and energy in the opposite-sign regime, energies):
-                           0 (default) = full double precision; else in [1e-15, 1e-2] */
+  double rtol;          /* HS_MODEL_DEFAULT / QUADRATURE: tolerance asked of the quadrature:
+                             0 (default) = full double precision; else in [1e-15, 1e-2];
+                           HS_MODEL_AUTO: the error the chosen model must meet, in
+                             [2^-53, 0.5], or 0 = as accurate as double allows */
+  /* since 0.3 (a caller may pass struct_size = offsetof(hs_options, model): HS_MODEL_DEFAULT) */
+  int model;            /* HS_MODEL_* (default HS_MODEL_DEFAULT) */
 } hs_options;
 
 HS_EXPORT int hs_options_default(hs_options *opts);
@@ -147,6 +163,9 @@ typedef struct hs_summary {
   /* since 0.2: (a caller may pass struct_size = offsetof(hs_summary, p0)) */
   double p0;            /* reference pressure 2P/(pi a) actually used */
   int quadrature_order; /* Gauss-Legendre order per panel (0: closed forms, or stuck) */
+  /* since 0.3 (struct_size = offsetof(hs_summary, model) is accepted too) */
+  int model;            /* HS_MODEL_* actually used (never DEFAULT or AUTO) */
+  double error_estimate;/* estimated largest relative error of d1, d2, E1, E2 */
 } hs_summary;
 
 HS_EXPORT int hs_solution_summary(const hs_solution *sol, hs_summary *out);

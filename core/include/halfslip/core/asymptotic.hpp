@@ -14,6 +14,7 @@
 #pragma once
 #include <cmath>
 
+#include "general.hpp"
 #include "hertz.hpp"
 #include "numerics.hpp"
 
@@ -59,6 +60,95 @@ template <class T> edge_model<T> hertz_edge(const hertz_scene<T> &sc, int side) 
   m.KT = abs(Q / pi<T>() - side * sigma * sc.a / 4) / sqrt(2 * sc.a);
   return m;
 }
+
+// Edge intensities for any pressure model (scene in user frame, p = p0 p_hat(x/a)):
+// p ~ K_N sqrt(z) with K_N = p0 sqrt(2/a) phi(edge) (pressure_model::edge_phi;
+// for a load-controlled family p(x; a) this equals eq 27's (1/pi) sqrt(2/a) dP/da,
+// checked for the flat punch in tests/test_asymptotic.cpp), and
+// q_st = (Q/pi - sigma x/4)/sqrt(a^2-x^2) for every geometry. K_T is signed
+// here: its sign is the slip direction of the zone at that edge.
+template <class T> edge_model<T> general_edge(const pressure_model<T> &pm, const general_scene<T> &sc, int side) {
+  using std::sqrt;
+  edge_model<T> m;
+  m.f = sc.f;
+  m.Estar = sc.Estar;
+  m.KN = sc.p0 * sqrt(2 / sc.a) * pm.edge_phi(side);
+  // Q/pi -+ sigma a/4 = f p0 a (q/2 -+ s/4)
+  m.KT = sc.f * sc.p0 * sc.a * (sc.q / 2 - side * sc.s / 4) / sqrt(2 * sc.a);
+  return m;
+}
+
+// The asymptotic model as a solution (paper section 5): each edge carries an
+// independent edge model; the slip zones are (a - d1, a) and (-a, -a + d2)
+// with d_i = 2 |K_T,i| / (f K_N,i), slipping in the direction sign(K_T,i).
+// Same interface as hertz_solution / general_solution (user frame).
+template <class T> class edge_solution {
+ public:
+  general_scene<T> scene;
+  regime reg = regime::stuck;
+  int iterations = 0, order = 0;
+  edge_model<T> m1, m2;  // edge x = +a (zone 1), edge x = -a (zone 2)
+  const pressure_model<T> *pm = nullptr;
+
+  edge_solution(const pressure_model<T> &p, const general_scene<T> &sc) : scene(sc), pm(&p) {
+    m1 = general_edge(p, sc, +1);
+    m2 = general_edge(p, sc, -1);
+    if (!(m1.KN > 0) || !(m2.KN > 0))
+      throw error(status::bad_geometry, "asymptotic model: the pressure has no sqrt edge coefficient");
+    if (!(d1() + d2() < 2 * sc.a))
+      throw error(status::bad_option, "asymptotic model does not apply: its slip zones cover the contact");
+    const int s1 = dir1(), s2 = dir2();
+    reg = (s1 == 0 && s2 == 0) ? regime::stuck : (s1 * s2 < 0 ? regime::opposite_sign : regime::same_sign);
+  }
+  static int sgn(const T &v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+  T d1() const { using std::abs; return abs(m1.d()); }
+  T d2() const { using std::abs; return abs(m2.d()); }
+  T b1() const { return scene.a - d1(); }
+  T b2() const { return scene.a - d2(); }
+  int dir1() const { return sgn(m1.KT); }
+  int dir2() const { return sgn(m2.KT); }
+  // z: distance from the edge; 0 if x is in the stick zone
+  int locate(const T &x, T &z) const {
+    if (d1() > 0 && x >= b1()) { z = scene.a - x; return 1; }
+    if (d2() > 0 && x <= -b2()) { z = scene.a + x; return 2; }
+    z = 0;
+    return 0;
+  }
+  const edge_model<T> &model(int zone) const { return zone == 1 ? m1 : m2; }
+  edge_model<T> magnitude(int zone) const {
+    using std::abs;
+    edge_model<T> m = model(zone);
+    m.KT = abs(m.KT);
+    return m;
+  }
+  // h = dir |h|; B_x = dh/dx (x = a - z in zone 1, x = -a + z in zone 2)
+  T slip(const T &x) const {
+    T z;
+    const int zone = locate(x, z);
+    if (!zone) return T(0);
+    return (zone == 1 ? dir1() : dir2()) * magnitude(zone).slip(z);
+  }
+  T Bx(const T &x) const {
+    T z;
+    const int zone = locate(x, z);
+    if (!zone) return T(0);
+    return zone == 1 ? dir1() * magnitude(1).Bx(z) : -dir2() * magnitude(2).Bx(z);
+  }
+  // the model's own pressure K_N sqrt(z) (consistent with its energy)
+  T work(const T &x) const {
+    T z;
+    const int zone = locate(x, z);
+    if (!zone) return T(0);
+    return magnitude(zone).work(z);
+  }
+  T energy(int zone) const { return magnitude(zone).energy(); }
+  // the geometry's pressure
+  T pressure(const T &x) const {
+    const T xi = x / scene.a;
+    if (!(xi > -1 && xi < 1)) return T(0);
+    return scene.p0 * pm->p(xi);
+  }
+};
 
 // The comparison of the paper's Figures 5 and 6: at the load that gives a
 // slip zone b/a under pure shear (loading = +1: Q only) or pure bulk tension

@@ -135,6 +135,23 @@ template <class T> class pressure_model {
   virtual bool shear_only_half_width(const T &, T &) const { return false; }
   // p(-x) = p(x): the mirror x -> -x is then a symmetry of the problem.
   virtual bool symmetric() const { return false; }
+  // phi at the edge x = side (+1 or -1): the edge coefficient of the
+  // pressure, p_hat ~ sqrt(2 z) phi(side) at distance z from the edge (so the
+  // asymptotic model's K_N = p0 sqrt(2/a) edge_phi). Default: phi is smooth
+  // up to the edges (its expansion in the distance z is a power series), so
+  // Richardson extrapolation from z = h, 2h, 4h (error O(h^3)) with h chosen
+  // to balance that against rounding amplified by ~10.
+  virtual T edge_phi(int side) const {
+    using std::cbrt; using std::min;
+    const T h = min(T(1) / 64, T(cbrt(eps<T>())) / 4);
+    auto at = [&](const T &z) {
+      const T x = side > 0 ? 1 - z : z - 1;
+      return side > 0 ? phi(x, 2 - z, z) : phi(x, z, 2 - z);
+    };
+    const T f1 = at(h), f2 = at(2 * h), f4 = at(4 * h);
+    // quadratic through (h, f1), (2h, f2), (4h, f4) at z = 0: 8/3 f1 - 2 f2 + 1/3 f4
+    return (8 * f1 - 6 * f2 + f4) / 3;
+  }
   // Integral of p_hat from the edge on `side` (+1: x = 1, -1: x = -1) over a
   // length c in [0, 2]. Default: quadrature (t = edge -+ c w^2 removes the sqrt).
   virtual T tail(int side, const T &c) const;
@@ -183,6 +200,7 @@ template <class T> class hertz_pressure final : public pressure_model<T> {
     return T(1);
   }
   bool symmetric() const override { return true; }
+  T edge_phi(int) const override { return T(1); }
   bool shear_only_half_width(const T &q, T &c) const override {
     using std::sqrt;
     c = sqrt(1 - q);
@@ -399,6 +417,7 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     return {{T(0), true}};
   }
   bool symmetric() const override { return true; }
+  T edge_phi(int) const override { return n_ / 2; }  // F(+-1) = 2F1(..; 0) = 1
 
   T F(const T &x, const T &z) const {
     using std::abs; using std::asinh; using std::cosh; using std::pow; using std::sinh;
@@ -644,6 +663,7 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
     return v;
   }
   bool symmetric() const override { return b_.symmetric(); }
+  T edge_phi(int side) const override { return b_.edge_phi(-side); }
   bool shear_only_half_width(const T &q, T &c) const override { return b_.shear_only_half_width(q, c); }
   T tail(int side, const T &c) const override { return b_.tail(-side, c); }
 

@@ -21,7 +21,8 @@ enum class status : int {
   out_of_memory = 12,
   internal = 13,
   overflow = 14,
-  bad_number = 15
+  bad_number = 15,
+  tolerance = 16
 };
 
 // Thrown by the core on invalid input or failure; carries a status and a

@@ -1,0 +1,191 @@
+// halfslip C ABI: the model driver (docs/models.md). hs_solve and
+// hs_solve_geometry validate their input and call solve_models, which runs
+// the requested model or, for HS_MODEL_AUTO, the cheapest model whose error
+// estimate (core/select.hpp) meets the tolerance.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "halfslip/halfslip.h"
+#include "solution.hpp"
+
+namespace hs { namespace capi {
+
+namespace {
+void require(bool ok, core::status s, const char *msg) {
+  if (!ok) throw core::error(s, msg);
+}
+// digits asked of the reference backend when it stands in for double: 17
+// are needed for a correctly rounded double, the rest is margin so that
+// certification (which compares with a run one tier up) is never the limit
+constexpr int reference_digits = 30;
+}  // namespace
+
+std::string exact_decimal(double v) {
+  // glibc prints the exact binary value; 800 significant digits cover every
+  // double (the longest exact expansion, of the smallest normal, has 715)
+  char buf[1024];
+  std::snprintf(buf, sizeof buf, "%.800e", v);
+  std::string s(buf);
+  const size_t e = s.find('e');
+  std::string mant = s.substr(0, e), ex = s.substr(e);
+  while (!mant.empty() && mant.back() == '0') mant.pop_back();
+  if (!mant.empty() && mant.back() == '.') mant.pop_back();
+  return mant + ex;
+}
+
+reference_double::reference_double(const reference::text_scene &t, const core::general_scene<double> &sc,
+                                   int max_iterations)
+    : scene(sc) {
+  sol_.reset(new reference::solution(t, reference_digits, max_iterations));
+  reg = core::regime(sol_->regime());
+  iterations = sol_->iterations();
+  dir1_ = sol_->dir1();
+  dir2_ = sol_->dir2();
+  using q = reference::quantity;
+  b1_ = take(sol_->value(q::b1));
+  b2_ = take(sol_->value(q::b2));
+  d1_ = take(sol_->value(q::d1));
+  d2_ = take(sol_->value(q::d2));
+  e1_ = take(sol_->value(q::energy1));
+  e2_ = take(sol_->value(q::energy2));
+}
+
+double reference_double::take(const reference::certified &c) const {
+  // a zero is exact; anything else needs 17 certified digits to round correctly
+  const double v = std::strtod(c.text.c_str(), nullptr);
+  require(v == 0 || c.digits >= 17, core::status::no_convergence,
+          "reference result could not be certified to double precision");
+  require(std::isfinite(v), core::status::overflow, "result not representable");
+  return v;
+}
+
+double reference_double::eval(reference::point_eval what, double x) const {
+  return take(sol_->eval(what, exact_decimal(x)));
+}
+
+namespace {
+
+core::hertz_scene<double> hertz_of(const core::general_scene<double> &sc) {
+  core::hertz_scene<double> h;
+  h.a = sc.a; h.p0 = sc.p0; h.f = sc.f; h.Estar = sc.Estar; h.q = sc.q; h.s = sc.s;
+  return h;
+}
+
+const core::pressure_model<double> &pressure_of(hs_solution &h) {
+  if (!h.model) h.model = std::make_shared<core::hertz_pressure<double>>();
+  return *h.model;
+}
+
+void clear(hs_solution &h) {
+  h.hertz.reset();
+  h.general.reset();
+  h.edge.reset();
+  h.ref.reset();
+}
+
+void run_asymptotic(hs_solution &h, const core::general_scene<double> &sc) {
+  const auto &pm = pressure_of(h);
+  clear(h);
+  h.edge.reset(new core::edge_solution<double>(pm, sc));
+  h.model_used = HS_MODEL_ASYMPTOTIC;
+  h.error_estimate = core::asymptotic_estimate(pm, sc).value();
+}
+
+void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, const request &r) {
+  core::solve_options<double> o;
+  o.max_iterations = r.max_iterations;
+  o.rtol = r.rtol;
+  clear(h);
+  h.hertz.reset(new core::hertz_solution<double>(core::solve_hertz<double>(hertz_of(sc), o)));
+  h.model_used = HS_MODEL_CLOSED_FORM;
+  h.error_estimate = core::closed_form_estimate(h.hertz->d1() / sc.a, h.hertz->d2() / sc.a).value();
+  // rtol > 0 relaxes the quadrature of the opposite-sign slip and energies
+  if (16 * r.rtol > h.error_estimate) h.error_estimate = 16 * r.rtol;
+}
+
+void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int max_iterations, double rt) {
+  core::general_options<double> o;
+  o.max_iterations = max_iterations;
+  o.rtol = rt;
+  const auto &pm = pressure_of(h);
+  clear(h);
+  h.general.reset(new core::general_solution<double>(core::solve_general<double>(pm, sc, o)));
+  h.model_used = HS_MODEL_QUADRATURE;
+  h.error_estimate = core::quadrature_estimate(rt, h.general->d1() / sc.a, h.general->d2() / sc.a).value();
+}
+
+void run_reference(hs_solution &h, const core::general_scene<double> &sc, const request &r,
+                   const reference_input &ref) {
+  require(ref.available, core::status::bad_geometry,
+          "the reference backend supports the Hertz, flat-rounded and power-law geometries only");
+  clear(h);
+  h.ref.reset(new reference_double(ref.text, sc, r.max_iterations < 1000 ? 1000 : r.max_iterations));
+  h.model_used = HS_MODEL_REFERENCE;
+  h.error_estimate = std::ldexp(1.0, -53);
+}
+
+// HS_MODEL_AUTO: cheapest first; each model is accepted when its estimate
+// meets the tolerance. rtol = 0: the most accurate double model.
+void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc, const request &r,
+              const reference_input &ref) {
+  const double tol = r.rtol;
+  if (tol > 0 && (sc.q != 0 || sc.s != 0)) {
+    const auto est = core::asymptotic_estimate(pressure_of(h), sc).value();
+    if (est <= tol) {
+      try {
+        run_asymptotic(h, sc);
+        return;
+      } catch (const core::error &e) {
+        if (e.code() != core::status::bad_option) throw;  // zones cover the contact: go on
+      }
+    }
+  }
+  if (hertz) {
+    request cf = r;
+    cf.rtol = 0;
+    run_closed_form(h, sc, cf);
+  } else {
+    // the quadrature tolerance from the estimate's form 16 (eps + rt)(1 + a/d_min),
+    // with d_min guessed by the Hertz closed form of the same loads
+    double rt = 0;
+    if (tol > 0) {
+      const auto g = core::solve_hertz<double>(hertz_of(sc));
+      const double dm = core::smallest_zone(g.d1() / sc.a, g.d2() / sc.a);
+      rt = dm > 0 ? tol / (64 * (1 + 1 / dm)) : 0;
+      if (rt < 1e-15) rt = 0;
+    }
+    run_quadrature(h, sc, r.max_iterations, rt);
+    if (h.error_estimate > tol && rt > 0) run_quadrature(h, sc, r.max_iterations, 0);
+  }
+  if (tol == 0 || h.error_estimate <= tol) return;
+  if (ref.available) {
+    run_reference(h, sc, r, ref);
+    return;
+  }
+  throw core::error(core::status::tolerance, "no model meets the requested tolerance");
+}
+
+}  // namespace
+
+void solve_models(hs_solution &h, bool hertz, const core::general_scene<double> &sc, const request &r,
+                  const reference_input &ref) {
+  switch (r.model) {
+    case HS_MODEL_DEFAULT:
+      if (hertz) run_closed_form(h, sc, r);
+      else run_quadrature(h, sc, r.max_iterations, r.rtol);
+      return;
+    case HS_MODEL_AUTO: run_auto(h, hertz, sc, r, ref); return;
+    case HS_MODEL_ASYMPTOTIC: run_asymptotic(h, sc); return;
+    case HS_MODEL_CLOSED_FORM:
+      require(hertz, core::status::bad_geometry, "closed forms exist for the Hertz geometry only");
+      run_closed_form(h, sc, r);
+      return;
+    case HS_MODEL_QUADRATURE: run_quadrature(h, sc, r.max_iterations, r.rtol); return;
+    case HS_MODEL_REFERENCE: run_reference(h, sc, r, ref); return;
+    default: throw core::error(core::status::bad_option, "unknown model");
+  }
+}
+
+}}  // namespace hs::capi

@@ -1,0 +1,88 @@
+// halfslip C ABI, private: the solution handle and the model driver
+// (model selection by tolerance, docs/models.md). Not installed.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "halfslip/core/asymptotic.hpp"
+#include "halfslip/core/general.hpp"
+#include "halfslip/core/hertz.hpp"
+#include "halfslip/core/select.hpp"
+#include "halfslip/reference/backend.hpp"
+
+namespace hs { namespace capi {
+
+// The reference backend's certified solution rounded to double, with the
+// interface of the core solutions (values certified to >= 17 digits at
+// construction; point evaluations go through decimal strings).
+class reference_double {
+ public:
+  reference_double(const reference::text_scene &t, const core::general_scene<double> &sc, int max_iterations);
+  core::general_scene<double> scene;
+  core::regime reg = core::regime::stuck;
+  int iterations = 0;
+  int dir1() const { return dir1_; }
+  int dir2() const { return dir2_; }
+  double b1() const { return b1_; }
+  double b2() const { return b2_; }
+  double d1() const { return d1_; }
+  double d2() const { return d2_; }
+  double energy(int zone) const { return zone == 1 ? e1_ : e2_; }
+  double Bx(double x) const { return eval(reference::point_eval::Bx, x); }
+  double slip(double x) const { return eval(reference::point_eval::slip, x); }
+  double work(double x) const { return eval(reference::point_eval::work, x); }
+  double pressure(double x) const { return eval(reference::point_eval::pressure, x); }
+
+ private:
+  double take(const reference::certified &c) const;
+  double eval(reference::point_eval what, double x) const;
+  std::unique_ptr<reference::solution> sol_;
+  int dir1_ = 0, dir2_ = 0;
+  double b1_ = 0, b2_ = 0, d1_ = 0, d2_ = 0, e1_ = 0, e2_ = 0;
+};
+
+// The exact decimal expansion of a double (so that the reference sees the
+// very number the caller passed).
+std::string exact_decimal(double v);
+
+}}  // namespace hs::capi
+
+struct hs_solution {
+  // exactly one of hertz / general / edge / ref is set; general and edge
+  // refer to the pressure model, which the handle owns
+  std::unique_ptr<hs::core::hertz_solution<double>> hertz;
+  std::shared_ptr<const hs::core::pressure_model<double>> model;
+  std::unique_ptr<hs::core::general_solution<double>> general;
+  std::unique_ptr<hs::core::edge_solution<double>> edge;
+  std::unique_ptr<hs::capi::reference_double> ref;
+  int model_used = 0;           // HS_MODEL_*
+  double error_estimate = 0;
+  template <class F> auto visit(F &&f) const {
+    if (hertz) return f(*hertz);
+    if (general) return f(*general);
+    if (edge) return f(*edge);
+    return f(*ref);
+  }
+};
+
+namespace hs { namespace capi {
+
+struct request {
+  int max_iterations = 100;
+  double rtol = 0;
+  int model = 0;  // HS_MODEL_*
+};
+
+// What the reference backend needs to re-solve the scene (empty geometry:
+// not available, e.g. sampled or callback pressures).
+struct reference_input {
+  bool available = false;
+  reference::text_scene text;
+};
+
+// Solve into h (h.model set for non-Hertz geometries; hertz = true for the
+// Hertz geometry, whose pressure model is made on demand).
+void solve_models(hs_solution &h, bool hertz, const core::general_scene<double> &sc, const request &r,
+                  const reference_input &ref);
+
+}}  // namespace hs::capi

@@ -1,0 +1,115 @@
+// halfslip core: error estimates of the models, for model selection by
+// tolerance (issue #5, docs/models.md).
+//
+// The error of a solution is measured as the largest relative error of the
+// slip-zone lengths d1, d2 and of the zone energies E1, E2 (nonempty zones
+// only). Each model has an estimate of that error computed from its own
+// output, without the exact solution:
+//
+// * asymptotic edge model (asymptotic.hpp). Per edge i, with phi_e = phi(edge)
+//   the edge coefficient and the two load contributions to the zone length
+//   dQ = |q|/(2 phi_e), dS = |s|/(4 phi_e) (units of a; d_i = |dQ -+ dS|),
+//   D_i = dQ + dS, Dm = max(D_1, D_2), and w_i the largest relative change of
+//   phi over the distances D_i/2, D_i, 2 D_i from the edge (the pressure's
+//   departure from K_N sqrt(z) over the zone):
+//     |d_i,model - d_i| <= C1 Dm^2 + C2 D_i w_i        (absolute, units of a)
+//     rel_d,i = that / d_i,model,   rel_E,i = (1 + rel_d,i)^4 - 1
+//   The Dm^2 term is the finite-contact/other-edge coupling (Hertz, same sign:
+//   exactly |q/(1+sqrt(1-q)) - q/2| ~ q^2/8 = dQ^2/2), the D w term the
+//   pressure shape; the power 4 because E ~ K_N^2 d^3 and one more factor
+//   for the shape of the slip distribution when the model is far off (the cube
+//   alone fell short by 2.2x at rel_d ~ 12). C1 = 2, C2 = 32 are twice
+//   the largest coefficients needed over a sweep of 1800 scenes (Hertz, flat
+//   punch b_f/a = 0.3, 0.6, 0.9, power law n = 1.5, 3, 6; d/a from 1e-7 to 1;
+//   both regimes) against the full solution: measured/estimate <= 0.39 there
+//   (bench/asymptotic_sweep.cpp regenerates it; tests/test_select.cpp checks
+//   true error <= estimate against the reference on an independent sweep).
+// * Hertz closed forms: b is accurate to a few eps a and d_i to
+//   8 eps a + 16 eps d_i (tests/test_reference.cpp), so
+//     rel_d = 32 eps + 16 eps a / d_min,  rel_E = 3 rel_d + 16 eps.
+//   (the a/d term is the conditioning of d = m - s/4 near the regime boundary)
+// * quadrature (general.hpp) at tolerance rt (0: full precision):
+//     rel_d = 16 (eps + rt)(1 + a/d_min),  rel_E = 3 rel_d.
+//   Measured against long double: at rt = 0 at most 1.3 eps (1 + a/d_min) in
+//   d and 4.1 eps (1 + a/d_min) in E; at rt > 0 far below rt (the order
+//   doubles past the tolerance).
+// * reference backend rounded to double: half an ulp, 2^-53 (every value is
+//   certified to >= 17 digits before it is accepted).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "asymptotic.hpp"
+#include "general.hpp"
+
+namespace hs { namespace core {
+
+template <class T> struct error_estimate {
+  T slip_zone{0};  // relative error of d1, d2
+  T energy{0};     // relative error of E1, E2
+  T value() const { using std::max; return max(slip_zone, energy); }
+};
+
+template <class T> T infinite() { return std::numeric_limits<T>::infinity(); }
+
+// Asymptotic model's estimate for the scene (units: the scene's a).
+template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T> &pm, const general_scene<T> &sc) {
+  using std::abs; using std::max; using std::min;
+  error_estimate<T> e;
+  if (sc.q == 0 && sc.s == 0) return e;  // stuck: exact
+  T D[2], d[2], w[2];
+  for (int i = 0; i < 2; ++i) {
+    const int side = i == 0 ? +1 : -1;
+    const T ph = pm.edge_phi(side);
+    if (!(ph > 0)) return {infinite<T>(), infinite<T>()};
+    const T dQ = abs(sc.q) / (2 * ph), dS = abs(sc.s) / (4 * ph);
+    D[i] = dQ + dS;
+    d[i] = abs(sc.q / 2 - side * sc.s / 4) / ph;
+    T om = 0;
+    for (const T &z0 : {D[i] / 2, D[i], 2 * D[i]}) {
+      const T z = min(z0, T(1));
+      const T x = side > 0 ? 1 - z : z - 1;
+      const T v = side > 0 ? pm.phi(x, 2 - z, z) : pm.phi(x, z, 2 - z);
+      om = max(om, T(abs(v / ph - 1)));
+    }
+    w[i] = om;
+  }
+  const T Dm = max(D[0], D[1]);
+  for (int i = 0; i < 2; ++i) {
+    const T ab = 2 * Dm * Dm + 32 * D[i] * w[i];
+    const T rd = d[i] > 0 ? ab / d[i] : infinite<T>();
+    const T r2 = (1 + rd) * (1 + rd), re = r2 * r2 - 1;
+    e.slip_zone = max(e.slip_zone, rd);
+    e.energy = max(e.energy, re);
+  }
+  return e;
+}
+
+// smallest nonempty zone length in units of a (0 if both empty)
+template <class T> T smallest_zone(const T &d1, const T &d2) {
+  using std::min;
+  if (d1 > 0 && d2 > 0) return min(d1, d2);
+  return d1 > 0 ? d1 : d2;
+}
+
+template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &d2) {
+  error_estimate<T> e;
+  const T dm = smallest_zone(d1, d2);
+  if (!(dm > 0)) return e;  // stuck
+  const T ep = eps<T>();
+  e.slip_zone = 32 * ep + 16 * ep / dm;
+  e.energy = 3 * e.slip_zone + 16 * ep;
+  return e;
+}
+
+template <class T> error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2) {
+  error_estimate<T> e;
+  const T dm = smallest_zone(d1, d2);
+  if (!(dm > 0)) return e;
+  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm);
+  e.energy = 3 * e.slip_zone;
+  return e;
+}
+
+}}  // namespace hs::core

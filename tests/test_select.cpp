@@ -1,0 +1,246 @@
+// Model selection by tolerance (issue #5, docs/models.md): every model's
+// error estimate is honest (true error <= estimate) across a sweep, and
+// HS_MODEL_AUTO picks the cheapest model that meets rtol.
+//
+// Error = largest relative error of d1, d2 and the zone energies (nonempty
+// zones). Truth: the MPFR reference backend at 40 digits for Hertz (through
+// the C ABI), the general solver in long double (error ~1e-19 (1 + a/d), far
+// below every double estimate) for the flat punch and the power law. The
+// sweep is independent of the one that fitted the asymptotic constants
+// (other seed, other geometry parameters).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <random>
+#include <cstring>
+#include <string>
+
+#include "halfslip/core/general.hpp"
+#include "halfslip/halfslip.h"
+
+namespace core = hs::core;
+
+namespace {
+
+struct truth {
+  double d1, d2, e1, e2;
+  bool energies;  // false: compare d1, d2 only
+};
+
+truth hertz_truth(const hs_scene &sc) {
+  hs_ref_scene r;
+  hs_ref_scene_default(&r);
+  char a[64], p0[64], f[64], E[64], q[64], s[64];
+  std::snprintf(a, 64, "%.45e", sc.a);
+  std::snprintf(p0, 64, "%.45e", sc.p0);
+  std::snprintf(f, 64, "%.45e", sc.f);
+  std::snprintf(E, 64, "%.45e", sc.E_star);
+  std::snprintf(q, 64, "%.45e", sc.Q_over_fP);
+  std::snprintf(s, 64, "%.45e", sc.sigma_over_fp0);
+  r.a = a; r.p0 = p0; r.f = f; r.E_star = E; r.Q_over_fP = q; r.sigma_over_fp0 = s;
+  hs_ref_solution *sol = nullptr;
+  REQUIRE(hs_ref_solve(&r, 40, &sol) == HS_OK);
+  auto get = [&](int what) {
+    char buf[128];
+    REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, nullptr) == HS_OK);
+    return std::strtod(buf, nullptr);
+  };
+  truth t{get(HS_REF_D1), get(HS_REF_D2), get(HS_REF_ENERGY1), get(HS_REF_ENERGY2), true};
+  hs_ref_solution_free(sol);
+  return t;
+}
+
+truth general_truth(int kind, double par, const hs_scene &sc) {
+  std::unique_ptr<core::pressure_model<long double>> pm;
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED) pm.reset(new core::flat_rounded_pressure<long double>(par));
+  else pm.reset(new core::power_law_pressure<long double>(par));
+  core::general_scene<long double> g;
+  g.a = sc.a; g.p0 = sc.p0; g.f = sc.f; g.Estar = sc.E_star; g.q = sc.Q_over_fP; g.s = sc.sigma_over_fp0;
+  const auto sol = core::solve_general(*pm, g);
+  // The general path's energies are nested quadratures (~1 s in long
+  // double): checked on the Hertz scenes (same estimate formulas) only.
+  return {double(sol.d1()), double(sol.d2()), 0, 0, false};
+}
+
+double rel(double v, double t) { return t == 0 ? std::abs(v) : std::abs(v - t) / std::abs(t); }
+
+// true error of a solution against the truth
+double true_error(const hs_solution *sol, const truth &t) {
+  hs_summary s;
+  s.struct_size = sizeof s;
+  REQUIRE(hs_solution_summary(sol, &s) == HS_OK);
+  double e[2] = {0, 0};
+  if (t.energies) REQUIRE(hs_solution_energy(sol, e) == HS_OK);
+  double err = 0;
+  if (t.d1 > 0) err = std::max({err, rel(s.d1, t.d1), t.energies ? rel(e[0], t.e1) : 0.0});
+  if (t.d2 > 0) err = std::max({err, rel(s.d2, t.d2), t.energies ? rel(e[1], t.e2) : 0.0});
+  return err;
+}
+
+hs_summary summary(const hs_solution *sol) {
+  hs_summary s;
+  s.struct_size = sizeof s;
+  REQUIRE(hs_solution_summary(sol, &s) == HS_OK);
+  return s;
+}
+
+int solve(int kind, double par, const hs_scene &sc, int model, double rtol, hs_solution **out) {
+  hs_options o;
+  hs_options_default(&o);
+  o.model = model;
+  o.rtol = rtol;
+  hs_geometry g;
+  hs_geometry_default(&g);
+  g.kind = kind;
+  g.flat_over_a = par;
+  g.exponent = par;
+  return hs_solve_geometry(&sc, &g, &o, out);
+}
+
+struct scene_case {
+  int kind;
+  double par;
+  hs_scene sc;
+};
+
+// scenes with slip zones from 1e-7 a to ~a, both regimes, all sign combinations
+std::vector<scene_case> sweep(int n_per_geometry) {
+  std::mt19937 rng(20261122);
+  std::uniform_real_distribution<double> U(0, 1);
+  const std::vector<std::pair<int, double>> geos = {{HS_GEOMETRY_HERTZ, 0},         {HS_GEOMETRY_FLAT_ROUNDED, 0.45},
+                                                    {HS_GEOMETRY_FLAT_ROUNDED, 0.75}, {HS_GEOMETRY_POWER_LAW, 2.5},
+                                                    {HS_GEOMETRY_POWER_LAW, 4.0}};
+  std::vector<scene_case> v;
+  for (const auto &g : geos)
+    for (int k = 0; k < n_per_geometry; ++k) {
+      hs_scene sc;
+      hs_scene_default(&sc);
+      sc.a = 0.5 + U(rng);
+      sc.p0 = 0.5 + U(rng);
+      sc.f = 0.2 + U(rng);
+      sc.E_star = 0.5 + 2 * U(rng);
+      const double q = U(rng) < 0.5 ? std::pow(10.0, -7 * U(rng)) : 0.95 * U(rng);
+      const double r = U(rng);
+      double s = r < 0.2 ? 0 : (r < 0.6 ? 4 * q * U(rng) : q * std::pow(10.0, 2 * U(rng) - 1));
+      sc.Q_over_fP = U(rng) < 0.3 ? -q : q;
+      sc.sigma_over_fp0 = U(rng) < 0.5 ? -s : s;
+      v.push_back({g.first, g.second, sc});
+    }
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("every model's error estimate is honest: true error <= estimate across a sweep") {
+  int small_asymptotic = 0, checked = 0;
+  for (const auto &c : sweep(24)) {
+    const truth t = c.kind == HS_GEOMETRY_HERTZ ? hertz_truth(c.sc) : general_truth(c.kind, c.par, c.sc);
+    std::vector<std::pair<int, double>> models = {{HS_MODEL_ASYMPTOTIC, 0}, {HS_MODEL_QUADRATURE, 0},
+                                                  {HS_MODEL_QUADRATURE, 1e-8}};
+    if (c.kind == HS_GEOMETRY_HERTZ) models.push_back({HS_MODEL_CLOSED_FORM, 0});
+    for (const auto &m : models) {
+      hs_solution *sol = nullptr;
+      const int st = solve(c.kind, c.par, c.sc, m.first, m.second, &sol);
+      CAPTURE(c.kind); CAPTURE(c.par); CAPTURE(c.sc.Q_over_fP); CAPTURE(c.sc.sigma_over_fp0);
+      CAPTURE(m.first); CAPTURE(m.second);
+      if (m.first == HS_MODEL_ASYMPTOTIC && st == HS_ERR_BAD_OPTION) continue;  // zones cover the contact
+      REQUIRE(st == HS_OK);
+      const auto s = summary(sol);
+      CHECK(s.model == m.first);
+      const double err = true_error(sol, t);
+      CAPTURE(err); CAPTURE(s.error_estimate);
+      CHECK(err <= s.error_estimate);
+      ++checked;
+      if (m.first == HS_MODEL_ASYMPTOTIC && s.error_estimate < 1e-2) ++small_asymptotic;
+      hs_solution_free(sol);
+    }
+  }
+  // the sweep exercises the regime where the asymptotic model is selected
+  CHECK(small_asymptotic >= 20);
+  CHECK(checked >= 360);  // of 384 solves (5 geometries x 24 scenes x 3 models + 24 closed forms)
+}
+
+TEST_CASE("HS_MODEL_AUTO: the cheapest model that meets rtol, and the result meets it") {
+  for (const auto &c : sweep(8)) {
+    const truth t = c.kind == HS_GEOMETRY_HERTZ ? hertz_truth(c.sc) : general_truth(c.kind, c.par, c.sc);
+    for (double rtol : {0.1, 1e-3, 1e-6, 1e-10, 1e-13, 1e-15}) {
+      hs_solution *sol = nullptr;
+      const int st = solve(c.kind, c.par, c.sc, HS_MODEL_AUTO, rtol, &sol);
+      CAPTURE(c.kind); CAPTURE(c.par); CAPTURE(c.sc.Q_over_fP); CAPTURE(c.sc.sigma_over_fp0); CAPTURE(rtol);
+      if (st == HS_ERR_TOLERANCE) {
+        // only when no double model and no reference covers the geometry
+        CHECK(c.kind != HS_GEOMETRY_HERTZ);
+        continue;
+      }
+      REQUIRE(st == HS_OK);
+      const auto s = summary(sol);
+      CHECK(s.error_estimate <= rtol);
+      const double err = true_error(sol, t);
+      CAPTURE(err); CAPTURE(s.model);
+      // the truth itself is good to ~1e-19 (long double) or 1e-40 (reference)
+      CHECK(err <= std::max(rtol, 1e-17));
+      // cheapest: the asymptotic model is used whenever its estimate meets rtol
+      hs_solution *asy = nullptr;
+      if (solve(c.kind, c.par, c.sc, HS_MODEL_ASYMPTOTIC, 0, &asy) == HS_OK) {
+        if (summary(asy).error_estimate <= rtol) CHECK(s.model == HS_MODEL_ASYMPTOTIC);
+        hs_solution_free(asy);
+      }
+      if (c.kind == HS_GEOMETRY_HERTZ && s.model != HS_MODEL_ASYMPTOTIC)
+        CHECK(s.model == (s.error_estimate > 1e-15 ? HS_MODEL_CLOSED_FORM : HS_MODEL_REFERENCE));
+      hs_solution_free(sol);
+    }
+  }
+}
+
+TEST_CASE("model options: contract") {
+  hs_scene sc;
+  hs_scene_default(&sc);
+  hs_solution *sol = nullptr;
+  // closed forms exist for Hertz only
+  CHECK(solve(HS_GEOMETRY_FLAT_ROUNDED, 0.5, sc, HS_MODEL_CLOSED_FORM, 0, &sol) == HS_ERR_BAD_GEOMETRY);
+  // unknown model; rtol outside [2^-53, 0.5] for AUTO
+  CHECK(solve(HS_GEOMETRY_HERTZ, 0, sc, 6, 0, &sol) == HS_ERR_BAD_OPTION);
+  CHECK(solve(HS_GEOMETRY_HERTZ, 0, sc, -1, 0, &sol) == HS_ERR_BAD_OPTION);
+  CHECK(solve(HS_GEOMETRY_HERTZ, 0, sc, HS_MODEL_AUTO, 1e-17, &sol) == HS_ERR_BAD_OPTION);
+  CHECK(solve(HS_GEOMETRY_HERTZ, 0, sc, HS_MODEL_AUTO, 0.6, &sol) == HS_ERR_BAD_OPTION);
+  CHECK(solve(HS_GEOMETRY_HERTZ, 0, sc, HS_MODEL_AUTO, NAN, &sol) == HS_ERR_BAD_OPTION);
+  CHECK(sol == nullptr);
+  // a pressure the reference backend does not cover cannot go below double's quadrature
+  const double xs[] = {-1, -0.9, -0.5, 0, 0.5, 0.9, 1};
+  double ps[7];
+  for (int i = 0; i < 7; ++i) ps[i] = std::sqrt(1 - xs[i] * xs[i]);
+  hs_geometry g;
+  hs_geometry_default(&g);
+  g.kind = HS_GEOMETRY_SAMPLES;
+  g.n_samples = 7;
+  g.sample_x = xs;
+  g.sample_p = ps;
+  hs_options o;
+  hs_options_default(&o);
+  o.model = HS_MODEL_AUTO;
+  o.rtol = 2e-16;
+  CHECK(hs_solve_geometry(&sc, &g, &o, &sol) == HS_ERR_TOLERANCE);
+  CHECK(sol == nullptr);
+  CHECK(std::string(hs_strerror(HS_ERR_TOLERANCE)).find("tolerance") != std::string::npos);
+  o.model = HS_MODEL_REFERENCE;
+  o.rtol = 0;
+  CHECK(hs_solve_geometry(&sc, &g, &o, &sol) == HS_ERR_BAD_GEOMETRY);
+  // a 0.2 caller (options without the model field) gets the default model
+  hs_options_default(&o);
+  o.struct_size = offsetof(hs_options, model);
+  o.model = 12345;  // beyond the caller's struct: must not be read as a model
+  REQUIRE(hs_solve(&sc, &o, &sol) == HS_OK);
+  CHECK(summary(sol).model == HS_MODEL_CLOSED_FORM);
+  hs_solution_free(sol);
+  // the 0.2 summary size is still served
+  REQUIRE(hs_solve(&sc, nullptr, &sol) == HS_OK);
+  hs_summary s;
+  std::memset(&s, 0x5a, sizeof s);
+  s.struct_size = offsetof(hs_summary, model);
+  REQUIRE(hs_solution_summary(sol, &s) == HS_OK);
+  CHECK(s.model == 0x5a5a5a5a);  // untouched past the caller's size
+  hs_solution_free(sol);
+}
