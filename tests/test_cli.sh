@@ -28,6 +28,16 @@ for bad in "--Q-over-fP 1.0" "--Q-over-fP nan" "--f -1" "--Q-over-fP abc" "--geo
 done
 err=$("$cli" solve --Q-over-fP 1.5 2>&1 >/dev/null); echo "$err" | grep -q "Q-over-fP" && ok || ko "message names the bad value"
 
+# model selection by --rtol: tiny slip zones + loose rtol -> asymptotic; the estimate meets rtol
+js=$("$cli" solve --Q-over-fP 1e-5 --sigma-over-fp0 0 --rtol 1e-3 --json) && echo "$js" | grep -q '"model": "asymptotic"' && ok || ko "--rtol picks the asymptotic model"
+echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert 0 < d["error_estimate"] <= 1e-3' && ok || ko "estimate <= rtol"
+js=$("$cli" solve --Q-over-fP 0.5 --rtol 1e-12 --json) && echo "$js" | grep -q '"model": "closed-form"' && ok || ko "--rtol 1e-12 -> closed form"
+js=$("$cli" solve --geometry power-law --exponent 3 --Q-over-fP 0.5 --rtol 1e-9 --json) && echo "$js" | grep -q '"model": "quadrature"' && ok || ko "--rtol 1e-9 power law -> quadrature"
+out=$("$cli" solve --rtol 1e-30) && echo "$out" | grep -q "\[30 digits certified\]" && ok || ko "--rtol 1e-30 -> reference"
+"$cli" solve --model closed-form --geometry flat-rounded >/dev/null 2>&1 && ko "closed form for a flat punch accepted" || ok
+"$cli" solve --model bogus >/dev/null 2>&1 && ko "--model bogus accepted" || ok
+"$cli" solve --rtol 0.7 >/dev/null 2>&1 && ko "--rtol 0.7 accepted" || ok
+
 # reference backend: --digits, certified digits, JSON strings
 out=$("$cli" solve --digits 35 --Q-over-fP 0.3 --sigma-over-fp0 2) && echo "$out" | grep -q "7.4905836296899063300263576571618318e-01   \[35 digits certified\]" && ok || ko "solve --digits"
 js=$("$cli" solve --digits 25 --json) && echo "$js" | python3 -c 'import json,sys; json.load(sys.stdin)' && echo "$js" | grep -q '"b1": "8.321067811865475244008444e-01", "b1_digits": 25' && ok || ko "solve --digits --json"

@@ -31,6 +31,12 @@ const char *kUsage =
     "options (dimensional Hertz; all six together):\n"
     "  --P P --R R --E-star E --f F --Q Q --sigma S\n"
     "  (flat-rounded: the same with R the corner radius, plus --flat-width b_f)\n"
+    "model (docs/models.md):\n"
+    "  --rtol R                the cheapest model whose error estimate (largest relative error of\n"
+    "                          d1, d2 and the zone energies) is <= R: asymptotic edge model, closed\n"
+    "                          forms or quadrature, reference; R below 1.1e-16 runs the reference\n"
+    "                          backend at -log10(R) digits (as --digits)\n"
+    "  --model M               force a model: default, asymptotic, closed-form, quadrature, reference\n"
     "output:\n"
     "  --points N              also tabulate B_x, slip h and work W at N points per slip zone\n"
     "  --json                  one JSON object, numbers with 17 significant digits\n"
@@ -130,7 +136,8 @@ std::string json_str(const std::string &s) { return "\"" + s + "\""; }
 // ---------------------------------------------------------------- solve
 const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
                                              "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
-                                             "--flat-over-a", "--flat-width", "--exponent", "--pressure-file"};
+                                             "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
+                                             "--rtol", "--model"};
 
 // Pressure samples: two columns x p per line ('#' comments allowed).
 void read_samples(const std::string &path, std::vector<double> &xs, std::vector<double> &ps) {
@@ -243,12 +250,35 @@ int solve_reference(const Args &args, int digits) {
   return 0;
 }
 
+const char *model_name(int m) {
+  switch (m) {
+    case HS_MODEL_ASYMPTOTIC: return "asymptotic";
+    case HS_MODEL_CLOSED_FORM: return "closed-form";
+    case HS_MODEL_QUADRATURE: return "quadrature";
+    case HS_MODEL_REFERENCE: return "reference";
+    default: return "unknown";
+  }
+}
+
 int cmd_solve(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json"});
   auto get = [&](const char *k, double def) {
     return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
   };
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
+  // --rtol below double's rounding: the reference backend at that many digits
+  double rtol = 0;
+  if (args.count("--rtol")) {
+    rtol = get("--rtol", 0);
+    if (!(rtol > 0 && rtol <= 0.5)) die("bad value for --rtol: must lie in (0, 0.5]");
+    if (rtol < std::ldexp(1.0, -53) && !args.count("--digits")) {
+      if (args.count("--model")) die("--rtol below 1.1e-16 needs the reference backend: drop --model");
+      const int digits = int(std::ceil(-std::log10(rtol)));
+      if (digits > hs_ref_max_digits()) die("bad value for --rtol: beyond the reference backend's digits");
+      if (geometry != "hertz") die("--rtol below 1.1e-16: the reference backend supports --geometry hertz only (so far)");
+      return solve_reference(args, digits);
+    }
+  }
   if (args.count("--digits")) {
     if (geometry != "hertz") die("--digits: the reference backend supports --geometry hertz only (so far)");
     return solve_reference(args, parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()));
@@ -337,8 +367,22 @@ int cmd_solve(int argc, char **argv) {
     if (!(scene.E_star > 0)) die("bad value for --E-star: must be > 0");
   }
   const int npts = args.count("--points") ? parse_int("--points", args.at("--points"), 0, 100000) : 0;
+  hs_options opts;
+  hs_options_default(&opts);
+  if (args.count("--model")) {
+    const std::string m = args.at("--model");
+    const char *names[] = {"default", "auto", "asymptotic", "closed-form", "quadrature", "reference"};
+    int k = -1;
+    for (int i = 0; i < 6; ++i)
+      if (m == names[i]) k = i;
+    if (k < 0) die("bad value for --model: default, auto, asymptotic, closed-form, quadrature or reference");
+    opts.model = k;
+  } else if (args.count("--rtol")) {
+    opts.model = HS_MODEL_AUTO;
+  }
+  opts.rtol = rtol;
   hs_solution *sol = nullptr;
-  check(hs_solve_geometry(&scene, &geo, nullptr, &sol), "solve");
+  check(hs_solve_geometry(&scene, &geo, &opts, &sol), "solve");
   hs_summary sm;
   sm.struct_size = sizeof sm;
   check(hs_solution_summary(sol, &sm), "summary");
@@ -373,7 +417,8 @@ int cmd_solve(int argc, char **argv) {
                 num(scene.sigma_over_fp0).c_str(), num(sm.b1).c_str(), num(sm.b2).c_str(), num(sm.d1).c_str(),
                 num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, num(energy[0]).c_str(), num(energy[1]).c_str(),
                 sm.iterations);
-    std::printf(", \"quadrature_order\": %d", sm.quadrature_order);
+    std::printf(", \"quadrature_order\": %d, \"model\": \"%s\", \"error_estimate\": %s", sm.quadrature_order,
+                model_name(sm.model), num(sm.error_estimate).c_str());
     if (!xs.empty()) {
       std::printf(", \"points\": [");
       for (size_t i = 0; i < xs.size(); ++i)
@@ -398,6 +443,8 @@ int cmd_solve(int argc, char **argv) {
     std::printf("  zone 1: %.10g, zone 2: %.10g, total: %.10g\n", energy[0], energy[1], energy[0] + energy[1]);
     if (sm.iterations) std::printf("  (Newton iterations: %d)\n", sm.iterations);
     if (sm.quadrature_order) std::printf("  (quadrature: Gauss-Legendre order %d per panel)\n", sm.quadrature_order);
+    std::printf("model: %s, estimated error %.2g (largest relative error of d1, d2 and the energies)\n",
+                model_name(sm.model), sm.error_estimate);
     if (!xs.empty()) {
       std::printf("%22s %22s %22s %22s\n", "x", "B_x", "h", "W");
       for (size_t i = 0; i < xs.size(); ++i)
