@@ -461,3 +461,33 @@ TEST_CASE("threads: many threads solving different scenes give bitwise the singl
       CHECK(std::memcmp(par[i].data(), serial[i].data(), serial[i].size() * sizeof(double)) == 0);
   }
 }
+
+// Erratum E10: the integrands of (12) as printed are f p(s), identical to
+// (11); from (7) (the first moment, q_c(s) s) they must be s f p(s).
+TEST_CASE("eq (12): the integrands need the factor s (erratum E10)") {
+  for (const auto &qs : {std::pair<double, double>{0.3, 0.2}, {0.6, 0.5}, {0.2, 1.5}, {0.5, 3.0}}) {
+    const double q = qs.first, s = qs.second;
+    const auto sol = solve(q, s);
+    const int sR = sol.dir1(), sL = sol.dir2();
+    const LD b1 = sol.b1(), b2 = sol.b2(), pi = boost::math::constants::pi<LD>();
+    // f = p0 = a = 1: p(t) = sqrt(1 - t^2); m = 0 (printed) or 1 (corrected)
+    auto lhs = [&](int m) {
+      const LD right = ref::integrate_ends<LD>(
+          [&](const LD &t, const LD &u, const LD &v) {
+            return std::sqrt(v * (1 + t)) * (m ? t : LD(1)) / std::sqrt(u * (t + b2));
+          },
+          b1, LD(1));
+      const LD left = ref::integrate_ends<LD>(
+          [&](const LD &t, const LD &u, const LD &v) {
+            return std::sqrt(u * (1 - t)) * (m ? t : LD(1)) / std::sqrt((b1 - t) * v);
+          },
+          LD(-1), -b2);
+      return sL * left - sR * right;
+    };
+    // right-hand side of (12): pi sigma (b1 - b2)/8 - Q, with Q = pi q / 2 here
+    const LD rhs = pi * s * (b1 - b2) / 8 - pi * q / 2;
+    CAPTURE(q); CAPTURE(s);
+    CHECK(std::abs(double(lhs(1) - rhs)) < 1e-13);  // corrected: holds
+    CHECK(std::abs(double(lhs(0) - rhs)) > 1e-2);   // as printed: fails
+  }
+}
