@@ -163,6 +163,33 @@ TEST_CASE("every model's error estimate is honest: true error <= estimate across
   CHECK(checked >= 360);  // of 384 solves (5 geometries x 24 scenes x 3 models + 24 closed forms)
 }
 
+TEST_CASE("closed-form and quadrature estimates near the failure regions: d/a -> 0, the regime boundary, sliding") {
+  // Hertz against the 40-digit reference: tiny zones with and without
+  // cancellation (d1 = m - s/4, m ~ q/2, near s = 4m), and 1 - Q/fP -> 0
+  std::vector<std::pair<double, double>> qs;
+  for (double q : {1e-3, 1e-6, 1e-9, 1e-12}) {
+    const double sb = 4 * q / (1 + std::sqrt(1 - q));  // regime boundary
+    for (double s : {0.0, q, -q, sb * (1 - 1e-3), sb * (1 + 1e-3), sb * (1 - 1e-8), 50 * q}) qs.push_back({q, s});
+  }
+  for (double r : {1e-3, 1e-8, 1e-13}) qs.push_back({1 - r, 0.1});
+  for (const auto &p : qs) {
+    hs_scene sc;
+    hs_scene_default(&sc);
+    sc.Q_over_fP = p.first;
+    sc.sigma_over_fp0 = p.second;
+    const truth t = hertz_truth(sc);
+    for (int model : {HS_MODEL_CLOSED_FORM, HS_MODEL_QUADRATURE}) {
+      hs_solution *sol = nullptr;
+      CAPTURE(p.first); CAPTURE(p.second); CAPTURE(model);
+      REQUIRE(solve(HS_GEOMETRY_HERTZ, 0, sc, model, 0, &sol) == HS_OK);
+      const double err = true_error(sol, t);
+      CAPTURE(err);
+      CHECK(err <= summary(sol).error_estimate);
+      hs_solution_free(sol);
+    }
+  }
+}
+
 TEST_CASE("HS_MODEL_AUTO: the cheapest model that meets rtol, and the result meets it") {
   for (const auto &c : sweep(8)) {
     const truth t = c.kind == HS_GEOMETRY_HERTZ ? hertz_truth(c.sc) : general_truth(c.kind, c.par, c.sc);
@@ -243,4 +270,56 @@ TEST_CASE("model options: contract") {
   REQUIRE(hs_solution_summary(sol, &s) == HS_OK);
   CHECK(s.model == 0x5a5a5a5a);  // untouched past the caller's size
   hs_solution_free(sol);
+}
+
+TEST_CASE("dimensional power-law and flat-punch input") {
+  const double P = 1000, E = 1.15e11, f = 0.6, Q = 300, sg = 2e6, R = 0.05;
+  hs_scene h, p, fl;
+  REQUIRE(hs_scene_from_hertz_loads(P, R, E, f, Q, sg, &h) == HS_OK);
+  // n = 2, A = 1/(2R) is Hertz: a^2 from ~6 roundings (lgamma/exp included),
+  // the square root halves them: 4 eps in a, one more rounding in p0 and s
+  REQUIRE(hs_scene_from_power_law_loads(P, 1 / (2 * R), 2.0, E, f, Q, sg, &p) == HS_OK);
+  const double e4 = 4 * 2.22e-16;
+  CHECK(std::abs(p.a / h.a - 1) < e4);
+  CHECK(std::abs(p.p0 / h.p0 - 1) < 2 * e4);
+  CHECK(std::abs(p.Q_over_fP / h.Q_over_fP - 1) < e4);
+  CHECK(std::abs(p.sigma_over_fp0 / h.sigma_over_fp0 - 1) < 2 * e4);
+  // b_f = 0 is Hertz
+  double beta = -1;
+  REQUIRE(hs_scene_from_flat_rounded_loads(P, R, 0.0, E, f, Q, sg, &fl, &beta) == HS_OK);
+  CHECK(beta == 0);
+  CHECK(std::abs(fl.a / h.a - 1) < e4);
+  // general n: the load recomputed from a by independent quadrature of
+  // P = (E*/2) int x g'(x)/sqrt(a^2-x^2) dx = E* n A a^n int_0^{pi/2} sin^n(t) dt (Simpson)
+  for (double n : {1.3, 2.5, 3.7, 6.0}) {
+    const double A = 2e3;
+    REQUIRE(hs_scene_from_power_law_loads(P, A, n, E, f, Q, sg, &p) == HS_OK);
+    const int m = 20000;
+    double sum = 0;
+    for (int i = 0; i <= m; ++i) {
+      const double t = M_PI / 2 * i / m, w = (i == 0 || i == m) ? 1 : (i % 2 ? 4 : 2);
+      sum += w * std::pow(std::sin(t), n);
+    }
+    const double I = sum * (M_PI / 2 / m) / 3;
+    CAPTURE(n);
+    CHECK(E * n * A * std::pow(p.a, n) * I == doctest::Approx(P).epsilon(1e-10));
+    CHECK(std::abs(p.p0 / (2 * P / (M_PI * p.a)) - 1) < e4);
+  }
+  // flat punch: P = a^2 g(b_f/a) E*/(4R), g(beta) = pi - 2 asin(beta) - sin(2 asin(beta))
+  REQUIRE(hs_scene_from_flat_rounded_loads(P, R, 5e-5, E, f, Q, sg, &fl, &beta) == HS_OK);
+  const double ph = std::asin(beta), g = M_PI - 2 * ph - std::sin(2 * ph);
+  CHECK(fl.a * fl.a * g * E / (4 * R) == doctest::Approx(P).epsilon(1e-13));
+  CHECK(beta * fl.a == doctest::Approx(5e-5).epsilon(1e-14));
+  // contract: specific codes, outputs untouched
+  hs_scene keep = p;
+  CHECK(hs_scene_from_power_law_loads(NAN, 1, 2, E, f, Q, sg, &p) == HS_ERR_NOT_FINITE);
+  CHECK(hs_scene_from_power_law_loads(P, 0, 2, E, f, Q, sg, &p) == HS_ERR_BAD_SIZE);
+  CHECK(hs_scene_from_power_law_loads(P, 1, 1, E, f, Q, sg, &p) == HS_ERR_BAD_GEOMETRY);
+  CHECK(hs_scene_from_power_law_loads(P, 1, 2, E, 0, Q, sg, &p) == HS_ERR_BAD_FRICTION);
+  CHECK(hs_scene_from_power_law_loads(P, 1, 2, E, f, f * P, sg, &p) == HS_ERR_GROSS_SLIDING);
+  CHECK(hs_scene_from_power_law_loads(P, 1, 2, E, f, Q, sg, nullptr) == HS_ERR_NULL_POINTER);
+  CHECK(std::memcmp(&keep, &p, sizeof p) == 0);
+  CHECK(hs_scene_from_flat_rounded_loads(P, R, -1, E, f, Q, sg, &fl, &beta) == HS_ERR_BAD_GEOMETRY);
+  CHECK(hs_scene_from_flat_rounded_loads(P, 0, 1e-5, E, f, Q, sg, &fl, &beta) == HS_ERR_BAD_SIZE);
+  CHECK(hs_scene_from_flat_rounded_loads(P, R, 1e-5, E, f, Q, sg, &fl, nullptr) == HS_ERR_NULL_POINTER);
 }

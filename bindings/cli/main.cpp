@@ -30,7 +30,8 @@ const char *kUsage =
     "  --a A --p0 P0 --f F --E-star E   scales\n"
     "options (dimensional Hertz; all six together):\n"
     "  --P P --R R --E-star E --f F --Q Q --sigma S\n"
-    "  (flat-rounded: the same with R the corner radius, plus --flat-width b_f)\n"
+    "  (flat-rounded: the same with R the corner radius, plus --flat-width b_f;\n"
+    "   power-law: --P --A A --exponent N --E-star E --f F --Q Q --sigma S, profile g = A|x|^N)\n"
     "model (docs/models.md):\n"
     "  --rtol R                the cheapest model whose error estimate (largest relative error of\n"
     "                          d1, d2 and the zone energies) is <= R: asymptotic edge model, closed\n"
@@ -137,7 +138,7 @@ std::string json_str(const std::string &s) { return "\"" + s + "\""; }
 const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
                                              "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
                                              "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
-                                             "--rtol", "--model"};
+                                             "--rtol", "--model", "--A"};
 
 // Pressure samples: two columns x p per line ('#' comments allowed).
 void read_samples(const std::string &path, std::vector<double> &xs, std::vector<double> &ps) {
@@ -163,7 +164,7 @@ void read_samples(const std::string &path, std::vector<double> &xs, std::vector<
 }
 
 bool is_dimensional(const Args &args) {
-  return args.count("--P") || args.count("--R") || args.count("--Q") || args.count("--sigma");
+  return args.count("--P") || args.count("--R") || args.count("--A") || args.count("--Q") || args.count("--sigma");
 }
 
 void check_dimensional(const Args &args) {
@@ -309,50 +310,44 @@ int cmd_solve(int argc, char **argv) {
   if (args.count("--pressure-file") && geometry != "samples") die("--pressure-file needs --geometry samples");
   hs_scene scene;
   hs_scene_default(&scene);
-  if (geometry == "flat-rounded" && is_dimensional(args)) {
-    // dimensional flat punch: P, corner radius R, E*, f, Q, sigma and the flat half-width b_f;
-    // a from a^2 (pi - 2 phi0 - sin 2 phi0) = 2 A R P with A = 2/E*, b_f = a sin(phi0)
-    check_dimensional(args);
-    if (!args.count("--flat-width")) die("dimensional flat-rounded input needs --flat-width (b_f)");
-    if (args.count("--flat-over-a")) die("--flat-over-a cannot be combined with dimensional input (give --flat-width)");
-    const double P = get("--P", 0), R = get("--R", 0), E = get("--E-star", 0), f = get("--f", 0);
-    const double Q = get("--Q", 0), sg = get("--sigma", 0), bf = get("--flat-width", 0);
-    if (!(P > 0)) die("bad value for --P: must be > 0");
-    if (!(R > 0)) die("bad value for --R: must be > 0");
-    if (!(E > 0)) die("bad value for --E-star: must be > 0");
-    if (!(f > 0)) die("bad value for --f: must be > 0");
-    if (!(bf >= 0)) die("bad value for --flat-width: must be >= 0");
-    if (!(std::fabs(Q) < f * P)) die("bad value for --Q: |Q| >= fP means gross sliding");
-    // solve a^2 g(b_f/a) = 4 R P / E*, g(beta) = pi - 2 asin(beta) - sin(2 asin(beta)), by bisection on beta
-    const double target = 4 * R * P / E;
-    auto g = [](double beta) { const double t = std::asin(beta); return M_PI - 2 * t - std::sin(2 * t); };
-    double a = std::sqrt(target / M_PI);  // b_f = 0
-    if (bf > 0) {
-      double lo = 0, hi = 1;  // beta = bf/a; bf^2 g(beta)/beta^2 decreases in beta
-      for (int i = 0; i < 200; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        if (bf * bf * g(mid) / (mid * mid) > target) lo = mid; else hi = mid;
-      }
-      a = bf / (0.5 * (lo + hi));
-    }
-    geo.flat_over_a = bf / a;
-    scene.a = a;
-    scene.p0 = 2 * P / (M_PI * a);
-    scene.f = f;
-    scene.E_star = E;
-    scene.Q_over_fP = Q / (f * P);
-    scene.sigma_over_fp0 = sg / (f * scene.p0);
-  } else if (is_dimensional(args)) {
-    if (geometry != "hertz") die("dimensional input (--P --R ...) is available for hertz and flat-rounded");
-    check_dimensional(args);
-    const double P = get("--P", 0), R = get("--R", 0), E = get("--E-star", 0), f = get("--f", 0);
+  if (is_dimensional(args)) {
+    // dimensional input: P, E*, f, Q, sigma and the geometry's size parameters
+    // (hertz: R; flat-rounded: corner radius R and --flat-width b_f; power-law: --A, --exponent n)
+    const bool pl = geometry == "power-law";
+    if (geometry != "hertz" && geometry != "flat-rounded" && !pl)
+      die("dimensional input (--P ...) is available for hertz, flat-rounded and power-law");
+    for (const char *k : {"--P", "--E-star", "--f", "--Q", "--sigma", pl ? "--A" : "--R"})
+      if (!args.count(k))
+        die(std::string("dimensional input needs ") + k +
+            (pl ? " (give --P --A --exponent --E-star --f --Q --sigma)" : " (give --P --R --E-star --f --Q --sigma)"));
+    for (const char *k : {"--Q-over-fP", "--sigma-over-fp0", "--a", "--p0"})
+      if (args.count(k)) die(std::string(k) + " cannot be combined with dimensional --P/--Q/--sigma");
+    if (pl && args.count("--R")) die("--R is not a power-law parameter (the profile is --A |x|^--exponent)");
+    if (!pl && args.count("--A")) die("--A needs --geometry power-law");
+    const double P = get("--P", 0), E = get("--E-star", 0), f = get("--f", 0);
     const double Q = get("--Q", 0), sg = get("--sigma", 0);
     if (!(P > 0)) die("bad value for --P: must be > 0");
-    if (!(R > 0)) die("bad value for --R: must be > 0");
     if (!(E > 0)) die("bad value for --E-star: must be > 0");
     if (!(f > 0)) die("bad value for --f: must be > 0");
     if (!(std::fabs(Q) < f * P)) die("bad value for --Q: |Q| >= fP means gross sliding");
-    check(hs_scene_from_hertz_loads(P, R, E, f, Q, sg, &scene), "scene");
+    if (pl) {
+      const double A = get("--A", 0);
+      if (!(A > 0)) die("bad value for --A: must be > 0");
+      check(hs_scene_from_power_law_loads(P, A, geo.exponent, E, f, Q, sg, &scene), "scene");
+    } else {
+      const double R = get("--R", 0);
+      if (!(R > 0)) die("bad value for --R: must be > 0");
+      if (geometry == "flat-rounded") {
+        if (!args.count("--flat-width")) die("dimensional flat-rounded input needs --flat-width (b_f)");
+        if (args.count("--flat-over-a"))
+          die("--flat-over-a cannot be combined with dimensional input (give --flat-width)");
+        const double bf = get("--flat-width", 0);
+        if (!(bf >= 0)) die("bad value for --flat-width: must be >= 0");
+        check(hs_scene_from_flat_rounded_loads(P, R, bf, E, f, Q, sg, &scene, &geo.flat_over_a), "scene");
+      } else {
+        check(hs_scene_from_hertz_loads(P, R, E, f, Q, sg, &scene), "scene");
+      }
+    }
   } else {
     scene.Q_over_fP = get("--Q-over-fP", 0.5);
     scene.sigma_over_fp0 = get("--sigma-over-fp0", 0.5);

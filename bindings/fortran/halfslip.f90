@@ -180,6 +180,7 @@ module halfslip
 
   public :: hs_version, hs_version_string, hs_strerror
   public :: hs_scene_default, hs_scene_from_hertz_loads, hs_options_default
+  public :: hs_scene_from_power_law_loads, hs_scene_from_flat_rounded_loads
   public :: hs_solve, hs_solution_free, hs_solution_summary, hs_solution_energy
   public :: hs_geometry_default, hs_solve_geometry, hs_solve_samples, hs_solve_callback
   public :: hs_eval_Bx, hs_eval_slip, hs_eval_work, hs_eval_pressure
@@ -229,6 +230,23 @@ module halfslip
       type(hs_scene), intent(inout) :: scene
       integer(c_int) :: st
     end function c_hs_scene_from_hertz_loads
+
+    function c_hs_scene_from_power_law_loads(P, A, n, E_star, f, Q, sigma, scene) &
+        bind(c, name="hs_scene_from_power_law_loads") result(st)
+      import :: c_int, c_double, hs_scene
+      real(c_double), value :: P, A, n, E_star, f, Q, sigma
+      type(hs_scene), intent(inout) :: scene
+      integer(c_int) :: st
+    end function c_hs_scene_from_power_law_loads
+
+    function c_hs_scene_from_flat_rounded_loads(P, R, flat_width, E_star, f, Q, sigma, scene, flat_over_a) &
+        bind(c, name="hs_scene_from_flat_rounded_loads") result(st)
+      import :: c_int, c_double, hs_scene
+      real(c_double), value :: P, R, flat_width, E_star, f, Q, sigma
+      type(hs_scene), intent(inout) :: scene
+      real(c_double), intent(inout) :: flat_over_a
+      integer(c_int) :: st
+    end function c_hs_scene_from_flat_rounded_loads
 
     function c_hs_options_default(opts) bind(c, name="hs_options_default") result(st)
       import :: c_int, hs_options
@@ -502,6 +520,25 @@ contains
     call check(c_hs_scene_from_hertz_loads(P, R, E_star, f, Q, sigma, scene), &
                'hs_scene_from_hertz_loads', ierr)
   end subroutine hs_scene_from_hertz_loads
+
+  ! Power-law profile g = A|x|^n under the load P (solve with exponent n).
+  subroutine hs_scene_from_power_law_loads(P, A, n, E_star, f, Q, sigma, scene, ierr)
+    real(c_double), intent(in) :: P, A, n, E_star, f, Q, sigma
+    type(hs_scene), intent(inout) :: scene
+    integer, intent(out), optional :: ierr
+    call check(c_hs_scene_from_power_law_loads(P, A, n, E_star, f, Q, sigma, scene), &
+               'hs_scene_from_power_law_loads', ierr)
+  end subroutine hs_scene_from_power_law_loads
+
+  ! Flat punch of half-width flat_width with corner radius R; also returns b_f/a.
+  subroutine hs_scene_from_flat_rounded_loads(P, R, flat_width, E_star, f, Q, sigma, scene, flat_over_a, ierr)
+    real(c_double), intent(in) :: P, R, flat_width, E_star, f, Q, sigma
+    type(hs_scene), intent(inout) :: scene
+    real(c_double), intent(inout) :: flat_over_a
+    integer, intent(out), optional :: ierr
+    call check(c_hs_scene_from_flat_rounded_loads(P, R, flat_width, E_star, f, Q, sigma, scene, flat_over_a), &
+               'hs_scene_from_flat_rounded_loads', ierr)
+  end subroutine hs_scene_from_flat_rounded_loads
 
   subroutine hs_options_default(opts, ierr)
     type(hs_options), intent(inout) :: opts

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstring>
 #include <memory>
+#include <initializer_list>
 #include <new>
 #include <vector>
 
@@ -191,6 +192,73 @@ int hs_scene_default(hs_scene *scene) {
   return HS_OK;
 }
 
+namespace {
+// The scene of a contact of half-width a under the load P (shared by the
+// dimensional constructors); *scene is written only on success.
+void scene_from_loads(double a, double P, double E_star, double f, double Q, double sigma, hs_scene *scene) {
+  const double p0 = 2 * P / (core::pi<double>() * a);
+  require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
+          "contact size not representable");
+  const double q = Q / (f * P);
+  const double s = sigma / (f * p0);
+  require(std::isfinite(q) && std::isfinite(s), core::status::overflow, "load ratio not representable");
+  require(std::fabs(q) < 1, core::status::gross_sliding, "|Q| >= fP");
+  hs_scene out;
+  hs_scene_default(&out);
+  out.a = a;
+  out.p0 = p0;
+  out.f = f;
+  out.E_star = E_star;
+  out.Q_over_fP = q;
+  out.sigma_over_fp0 = s;
+  *scene = out;
+}
+
+void check_loads(std::initializer_list<double> values, double P, double E_star, double f) {
+  for (double v : values) require(std::isfinite(v), core::status::not_finite, "load value is NaN or infinite");
+  require(P > 0 && E_star > 0, core::status::bad_size, "P and E* must be > 0");
+  require(f > 0, core::status::bad_friction, "f must be > 0");
+}
+}  // namespace
+
+int hs_scene_from_power_law_loads(double P, double A, double n, double E_star, double f, double Q, double sigma,
+                                  hs_scene *scene) {
+  return guard([&] {
+    require(scene != nullptr, core::status::null_pointer, "scene is NULL");
+    check_loads({P, A, n, E_star, f, Q, sigma}, P, E_star, f);
+    require(A > 0, core::status::bad_size, "profile coefficient A must be > 0");
+    require(n > 1 && n < 1000, core::status::bad_geometry, "power law: need 1 < n < 1000");
+    // a^n = 2 P Gamma(n/2+1) / (E* n A sqrt(pi) Gamma((n+1)/2)): directly (a few
+    // rounding errors, divided by n in a), or in logarithms if that under/overflows
+    const double ratio = std::exp(std::lgamma(n / 2 + 1) - std::lgamma((n + 1) / 2));
+    const double an = 2 * P / (E_star * n * A * std::sqrt(core::pi<double>())) * ratio;
+    double a;
+    if (std::isnormal(an)) {
+      a = std::pow(an, 1 / n);
+    } else {
+      a = std::exp((std::log(2 * P) + std::lgamma(n / 2 + 1) - std::lgamma((n + 1) / 2) - std::log(E_star) -
+                    std::log(n) - std::log(A) - 0.5 * std::log(core::pi<double>())) / n);
+    }
+    scene_from_loads(a, P, E_star, f, Q, sigma, scene);
+  });
+}
+
+int hs_scene_from_flat_rounded_loads(double P, double R, double flat_width, double E_star, double f, double Q,
+                                     double sigma, hs_scene *scene, double *flat_over_a) {
+  return guard([&] {
+    require(scene != nullptr && flat_over_a != nullptr, core::status::null_pointer, "NULL argument");
+    check_loads({P, R, flat_width, E_star, f, Q, sigma}, P, E_star, f);
+    require(R > 0, core::status::bad_size, "corner radius R must be > 0");
+    require(flat_width >= 0, core::status::bad_geometry, "flat half-width must be >= 0");
+    // a^2 g(b_f/a) = 2 A R P with the plane-strain compliance A = 2/E*
+    const double a = core::flat_rounded_pressure<double>::half_width_from_load(P, 2 / E_star, R, flat_width);
+    hs_scene tmp;
+    scene_from_loads(a, P, E_star, f, Q, sigma, &tmp);
+    *scene = tmp;
+    *flat_over_a = flat_width / a;
+  });
+}
+
 int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, double Q, double sigma,
                               hs_scene *scene) {
   return guard([&] {
@@ -245,7 +313,7 @@ int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
       o.rtol = r.rtol;
       h->hertz = std::make_unique<core::hertz_solution<double>>(core::solve_hertz<double>(c, o));
       h->model_used = HS_MODEL_CLOSED_FORM;
-      const auto e = core::closed_form_estimate(h->hertz->d1() / c.a, h->hertz->d2() / c.a).value();
+      const auto e = core::closed_form_estimate(h->hertz->d1() / c.a, h->hertz->d2() / c.a, c.q, c.s).value();
       h->error_estimate = 16 * r.rtol > e ? 16 * r.rtol : e;
     } else {
       hs::capi::reference_input ref;

@@ -100,7 +100,7 @@ void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, cons
   clear(h);
   h.hertz.reset(new core::hertz_solution<double>(core::solve_hertz<double>(hertz_of(sc), o)));
   h.model_used = HS_MODEL_CLOSED_FORM;
-  h.error_estimate = core::closed_form_estimate(h.hertz->d1() / sc.a, h.hertz->d2() / sc.a).value();
+  h.error_estimate = core::closed_form_estimate(h.hertz->d1() / sc.a, h.hertz->d2() / sc.a, sc.q, sc.s).value();
   // rtol > 0 relaxes the quadrature of the opposite-sign slip and energies
   if (16 * r.rtol > h.error_estimate) h.error_estimate = 16 * r.rtol;
 }
@@ -113,7 +113,8 @@ void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int m
   clear(h);
   h.general.reset(new core::general_solution<double>(core::solve_general<double>(pm, sc, o)));
   h.model_used = HS_MODEL_QUADRATURE;
-  h.error_estimate = core::quadrature_estimate(rt, h.general->d1() / sc.a, h.general->d2() / sc.a).value();
+  h.error_estimate =
+      core::quadrature_estimate(rt, h.general->d1() / sc.a, h.general->d2() / sc.a, h.general->width).value();
 }
 
 void run_reference(hs_solution &h, const core::general_scene<double> &sc, const request &r,

@@ -315,6 +315,22 @@ contains
     call expect_code(ierr, HS_ERR_BAD_SIZE, 'from_hertz_loads: P < 0')
     call hs_scene_from_hertz_loads(P, R, E, 0.0_c_double, 0.0_c_double, 0.0_c_double, sc, ierr)
     call expect_code(ierr, HS_ERR_BAD_FRICTION, 'from_hertz_loads: f = 0')
+    ! power law n = 2, A = 1/(2R) and the flat punch with b_f = 0 are Hertz
+    call hs_scene_from_hertz_loads(P, R, E, f, 300.0_c_double, 2e6_c_double, sc, ierr)
+    block
+      type(hs_scene) :: pl, fl
+      real(c_double) :: beta
+      call hs_scene_from_power_law_loads(P, 1 / (2 * R), 2.0_c_double, E, f, 300.0_c_double, 2e6_c_double, pl, ierr)
+      call expect_code(ierr, HS_OK, 'from_power_law_loads')
+      call expect_near(pl%a, sc%a, 1e-15_c_double * sc%a, 'power law n = 2 is Hertz')
+      beta = -1
+      call hs_scene_from_flat_rounded_loads(P, R, 0.0_c_double, E, f, 300.0_c_double, 2e6_c_double, fl, beta, ierr)
+      call expect_code(ierr, HS_OK, 'from_flat_rounded_loads')
+      call expect_near(fl%a, sc%a, 1e-15_c_double * sc%a, 'flat punch b_f = 0 is Hertz')
+      call expect(beta == 0, 'flat_over_a = 0')
+      call hs_scene_from_power_law_loads(P, 1.0_c_double, 0.5_c_double, E, f, 0.0_c_double, 0.0_c_double, pl, ierr)
+      call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'from_power_law_loads: n <= 1')
+    end block
   end subroutine test_hertz_loads
 
   ! Non-Hertz pressures. The power law with n = 2, the flat punch with a zero

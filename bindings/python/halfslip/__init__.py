@@ -28,7 +28,7 @@ from . import _clib
 __version__ = "0.2.0"
 __all__ = [
     "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified",
-    "solve", "from_hertz_loads", "solve_reference", "ref_max_digits",
+    "solve", "from_hertz_loads", "from_power_law_loads", "from_flat_rounded_loads", "solve_reference", "ref_max_digits",
     "version", "library_version", "library_path", "strerror",
 ]
 
@@ -358,6 +358,28 @@ def from_hertz_loads(P, R, E_star, f, Q, sigma):
     _check(_lib.hs_scene_from_hertz_loads(float(P), float(R), float(E_star), float(f), float(Q),
                                           float(sigma), byref(c)), "hs_scene_from_hertz_loads")
     return Scene._from_c(c)
+
+
+def from_power_law_loads(P, A, n, E_star, f, Q, sigma):
+    """Scene of a power-law profile g = A|x|^n (solve it with exponent=n)
+    under the normal load P: a from P = (E*/2) n A a^n sqrt(pi)
+    Gamma((n+1)/2)/Gamma(n/2+1), p0 = 2P/(pi a). Returns a Scene."""
+    c = _clib.Scene()
+    _check(_lib.hs_scene_from_power_law_loads(float(P), float(A), float(n), float(E_star), float(f), float(Q),
+                                              float(sigma), byref(c)), "hs_scene_from_power_law_loads")
+    return Scene._from_c(c)
+
+
+def from_flat_rounded_loads(P, R, flat_width, E_star, f, Q, sigma):
+    """Scene of a flat punch (half-width flat_width) with corners of radius R
+    under the normal load P. Returns (Scene, flat_over_a); solve the scene
+    with flat_over_a=flat_over_a."""
+    c = _clib.Scene()
+    beta = ctypes.c_double(0.0)
+    _check(_lib.hs_scene_from_flat_rounded_loads(float(P), float(R), float(flat_width), float(E_star), float(f),
+                                                 float(Q), float(sigma), byref(c), byref(beta)),
+           "hs_scene_from_flat_rounded_loads")
+    return Scene._from_c(c), beta.value
 
 
 def solve(Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None, scene=None,

@@ -134,6 +134,8 @@ _SIGNATURES = {
     "hs_strerror": (c_char_p, [c_int]),
     "hs_scene_default": (c_int, [POINTER(Scene)]),
     "hs_scene_from_hertz_loads": (c_int, [c_double] * 6 + [POINTER(Scene)]),
+    "hs_scene_from_power_law_loads": (c_int, [c_double] * 7 + [POINTER(Scene)]),
+    "hs_scene_from_flat_rounded_loads": (c_int, [c_double] * 7 + [POINTER(Scene), POINTER(c_double)]),
     "hs_options_default": (c_int, [POINTER(Options)]),
     "hs_solve": (c_int, [POINTER(Scene), POINTER(Options), POINTER(SolutionP)]),
     "hs_geometry_default": (c_int, [POINTER(Geometry)]),

@@ -177,6 +177,34 @@ class TestSolve(unittest.TestCase):
         with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, rtol=1e-6, max_iterations=50) as sol:
             self.assertAlmostEqual(sol.b1, 0.749058362968991, delta=1e-14)
 
+    def test_from_power_law_and_flat_loads(self):
+        P, R, E, f = 1000.0, 0.05, 1.15e11, 0.6
+        h = halfslip.from_hertz_loads(P, R, E, f, 300, 2e6)
+        p = halfslip.from_power_law_loads(P, 1 / (2 * R), 2.0, E, f, 300, 2e6)  # n = 2: Hertz
+        self.assertAlmostEqual(p.a / h.a, 1.0, delta=1e-15)
+        s, beta = halfslip.from_flat_rounded_loads(P, R, 0.0, E, f, 300, 2e6)  # b_f = 0: Hertz
+        self.assertEqual(beta, 0.0)
+        self.assertAlmostEqual(s.a / h.a, 1.0, delta=1e-15)
+        s, beta = halfslip.from_flat_rounded_loads(P, R, 5e-5, E, f, 300, 2e6)
+        self.assertAlmostEqual(beta * s.a, 5e-5, delta=1e-18)
+        sol = s.solve(flat_over_a=beta)
+        self.assertEqual(sol.regime, halfslip.REGIME_SAME_SIGN)
+        with self.assertRaises(halfslip.HalfslipError) as cm:
+            halfslip.from_power_law_loads(P, 1.0, 0.5, E, f, 300, 2e6)
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_GEOMETRY)
+
+    def test_model_selection(self):
+        sc = halfslip.Scene(Q_over_fP=1e-5, sigma_over_fp0=0.0)
+        sol = sc.solve(model="auto", rtol=1e-3)
+        self.assertEqual(sol.model, halfslip.MODEL_ASYMPTOTIC)
+        self.assertLessEqual(sol.error_estimate, 1e-3)
+        self.assertGreater(sol.error_estimate, 0)
+        sol = sc.solve(model="auto", rtol=1e-12)
+        self.assertEqual(sol.model, halfslip.MODEL_CLOSED_FORM)
+        with self.assertRaises(halfslip.HalfslipError) as cm:
+            sc.solve(model="closed-form", flat_over_a=0.5)
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_GEOMETRY)
+
     def test_from_hertz_loads(self):
         P, R, E, f = 1000.0, 0.05, 1.15e11, 0.6
         sc = halfslip.from_hertz_loads(P, R, E, f, 300, 2e6)

@@ -114,6 +114,20 @@ HS_EXPORT int hs_scene_default(hs_scene *scene);
 HS_EXPORT int hs_scene_from_hertz_loads(double P, double R, double E_star, double f,
                                         double Q, double sigma, hs_scene *scene);
 
+/* Dimensional power-law input (since 0.3), profile g(x) = A |x|^n (n > 1; the
+ * gap between the bodies before loading): a from
+ *   P = (E_star / 2) n A a^n sqrt(pi) Gamma((n+1)/2) / Gamma(n/2 + 1)
+ * (n = 2, A = 1/(2R) is Hertz), p0 = 2P/(pi a) and the ratios. Use with an
+ * hs_geometry of kind HS_GEOMETRY_POWER_LAW and exponent n. */
+HS_EXPORT int hs_scene_from_power_law_loads(double P, double A, double n, double E_star, double f,
+                                            double Q, double sigma, hs_scene *scene);
+
+/* Dimensional flat punch with rounded corners (since 0.3): flat half-width
+ * b_f >= 0, corner radius R; a from a^2 (pi - 2 phi0 - sin 2 phi0) = 4 R P / E_star
+ * with b_f = a sin(phi0). Also writes b_f/a to *flat_over_a (for hs_geometry). */
+HS_EXPORT int hs_scene_from_flat_rounded_loads(double P, double R, double flat_width, double E_star, double f,
+                                               double Q, double sigma, hs_scene *scene, double *flat_over_a);
+
 /* ---- options ---------------------------------------------------------------- */
 /* Models (docs/models.md). The error of a solution is the largest relative
  * error of the slip-zone lengths d1, d2 and the zone energies (nonempty zones);

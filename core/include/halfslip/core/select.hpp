@@ -25,11 +25,15 @@
 //   (bench/asymptotic_sweep.cpp regenerates it; tests/test_select.cpp checks
 //   true error <= estimate against the reference on an independent sweep).
 // * Hertz closed forms: b is accurate to a few eps a and d_i to
-//   8 eps a + 16 eps d_i (tests/test_reference.cpp), so
-//     rel_d = 32 eps + 16 eps a / d_min,  rel_E = 3 rel_d + 16 eps.
+//   8 eps a + 16 eps d_i (tests/test_reference.cpp); the absolute part comes
+//   from d_i = m -+ s/4 (m ~ q/2), so it scales with min(1, |q| + |s|/4):
+//     rel_d = 32 eps + 16 eps min(1, |q| + |s|/4) a / d_min,  rel_E = 3 rel_d + 16 eps.
 //   (the a/d term is the conditioning of d = m - s/4 near the regime boundary)
-// * quadrature (general.hpp) at tolerance rt (0: full precision):
-//     rel_d = 16 (eps + rt)(1 + a/d_min),  rel_E = 3 rel_d.
+// * quadrature (general.hpp) at tolerance rt (0: full precision), with
+//   w = (b1 + b2)/a the stick-zone width:
+//     rel_d = 16 (eps + rt)(1 + a/d_min + 1/w),  rel_E = 3 rel_d.
+//   The 1/w term is the conditioning near sliding (w -> 0): at 1 - Q/fP = 1e-8
+//   (w = 2e-4) the error in d is 1.2e-12 (tests/test_select.cpp).
 //   Measured against long double: at rt = 0 at most 1.3 eps (1 + a/d_min) in
 //   d and 4.1 eps (1 + a/d_min) in E; at rt > 0 far below rt (the order
 //   doubles past the tolerance).
@@ -93,21 +97,25 @@ template <class T> T smallest_zone(const T &d1, const T &d2) {
   return d1 > 0 ? d1 : d2;
 }
 
-template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &d2) {
+template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &d2, const T &q, const T &s) {
+  using std::abs; using std::min;
   error_estimate<T> e;
   const T dm = smallest_zone(d1, d2);
   if (!(dm > 0)) return e;  // stuck
   const T ep = eps<T>();
-  e.slip_zone = 32 * ep + 16 * ep / dm;
+  // d_i = m -+ s/4 (m ~ q/2): rounding of the two terms, relative to d_i
+  const T scale = min(T(1), T(abs(q) + abs(s) / 4));
+  e.slip_zone = 32 * ep + 16 * ep * scale / dm;
   e.energy = 3 * e.slip_zone + 16 * ep;
   return e;
 }
 
-template <class T> error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2) {
+template <class T>
+error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, const T &width) {
   error_estimate<T> e;
   const T dm = smallest_zone(d1, d2);
   if (!(dm > 0)) return e;
-  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm);
+  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / width);
   e.energy = 3 * e.slip_zone;
   return e;
 }
