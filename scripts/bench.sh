@@ -3,6 +3,9 @@
 # bench/results/ and the chart to docs/.
 #   bench/results/hertz.csv      double fast path vs Boost/GSL Carlson and naive quadrature
 #   bench/results/reference.csv  MPFR reference at 30/50/100/300 digits vs mpmath
+#   bench/results/asymptotic_sweep.csv  asymptotic model vs full solution (estimate check)
+#   bench/results/methods.csv, stability.csv  every model: speed, accuracy, stability (issue 5);
+#     charts docs/figures/speed_accuracy.svg, docs/figures/stability.svg (docs/benchmarks.md)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 mkdir -p "$HS_ROOT/bench/results"
@@ -10,3 +13,8 @@ mkdir -p "$HS_ROOT/bench/results"
 python3 "$HS_ROOT/bench/plot.py" "$HS_ROOT/bench/results/hertz.csv" "$HS_ROOT/docs/bench_hertz.svg"
 "$HS_BUILD/bench/bench_reference" "$HS_ROOT/bench/results/reference.csv"
 python3 "$HS_ROOT/bench/mpmath_hertz.py" "$HS_ROOT/bench/results/reference.csv"
+"$HS_BUILD/bench/bench_methods" "$HS_ROOT/bench/results/methods.csv" "$HS_ROOT/bench/results/stability.csv"
+python3 "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$HS_ROOT/bench/results/stability.csv" \
+  "$HS_ROOT/bench/results/reference.csv" "$HS_ROOT/docs/figures"
+# the sweep behind the asymptotic model's error estimate (core/select.hpp, docs/models.md)
+"$HS_BUILD/bench/asymptotic_sweep" "$HS_ROOT/bench/results/asymptotic_sweep.csv" 200

@@ -571,3 +571,77 @@ TEST_CASE("asymmetric sampled pressure: sigma < 0 is the mirror image of sigma >
     CHECK(std::abs(double(r[1])) < 1e-10);
   }
 }
+
+// ---------------------------------------------------------------------------
+// Zone energies and slips by the fixed Gauss-Legendre rules (energy_hat,
+// hhat: outer order M, inner M + 1, doubled until agreement to eps^(3/4))
+// against (a) the Hertz closed forms through hertz_pressure, (b) the nested
+// adaptive tanh-sinh evaluation (energy_hat_adaptive, hhat_adaptive; slow,
+// independent quadrature) for the flat punch b_f/a = 0.45 and a power law,
+// (c) long double and 50-digit MPFR. Observed agreement ~1e-15 (energies) and
+// a few 1e-14 (slips, limited by the adaptive reference's eps^(2/3)
+// termination); bounds 1e-13 and 1e-12.
+TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, long double, MPFR") {
+  core::hertz_pressure<double> hp;
+  for (const auto &c : std::vector<std::pair<double, double>>{
+           {0.3, 0.2}, {0.7, 0.5}, {0.6, 1.5}, {0.3, 0.0}, {0.2, 5.0}, {-0.4, 0.3}, {0.4, -2.0}}) {
+    CAPTURE(c.first);
+    CAPTURE(c.second);
+    const auto g = gsolve<double>(hp, c.first, c.second);
+    const auto h = hsolve(c.first, c.second);
+    for (int i : {1, 2}) {
+      const double Eh = h.energy(i);
+      CHECK(std::abs(g.energy(i) - Eh) <= 1e-13 * Eh);
+    }
+    // (near the stick edge h ~ u^(3/2): the ~1e-16 difference of the stick
+    // edges alone moves h by 1.5e-16/u relative; frac >= 0.05 keeps that small)
+    for (double frac : {0.05, 0.3, 0.97}) {
+      for (double x : {g.b1() + frac * g.d1(), -g.b2() - frac * g.d2()}) {
+        if (!(x > g.b1()) && !(x < -g.b2())) continue;
+        CAPTURE(x);
+        CHECK(std::abs(g.slip(x) - h.slip(x)) <= 1e-13 * std::abs(h.slip(x)));
+      }
+    }
+  }
+  core::flat_rounded_pressure<double> fd(0.45);
+  core::flat_rounded_pressure<LD> fl(0.45L);
+  core::power_law_pressure<double> pd(1.5);
+  core::power_law_pressure<LD> pl(1.5L);
+  struct sc { const core::pressure_model<double> *md; const core::pressure_model<LD> *ml; double q, s; };
+  for (const auto &c : std::vector<sc>{{&fd, &fl, 1e-3, 3e-4}, {&fd, &fl, 0.5, 0.15}, {&fd, &fl, 0.9, 0.27},
+                                       {&fd, &fl, 0.4, 2.0}, {&pd, &pl, 0.6, 0.18}}) {
+    CAPTURE(c.q);
+    CAPTURE(c.s);
+    const auto g = gsolve<double>(*c.md, c.q, c.s);
+    for (int z : {+1, -1}) {
+      CAPTURE(z);
+      const double E = g.energy_hat(z), Ea = g.energy_hat_adaptive(z);
+      CHECK(E > 0);
+      CHECK(std::abs(E - Ea) <= 1e-13 * Ea);
+      for (double frac : {0.02, 0.6}) {
+        const double dl = frac * g.zone_length(z);
+        const double hs = g.hhat_adaptive(z, dl);
+        CHECK(std::abs(g.hhat(z, dl) - hs) <= 1e-12 * std::abs(hs));
+      }
+    }
+    // long double (the solution itself is conditioned to ~1e-15 for q >= 0.1)
+    if (c.q >= 0.1) {
+      const auto gl = gsolve<LD>(*c.ml, LD(c.q), LD(c.s));
+      for (int i : {1, 2}) {
+        const LD El = gl.energy(i);
+        CHECK(std::abs(double((g.energy(i) - El) / El)) <= 1e-13);
+      }
+    }
+  }
+  // 50 digits: the order grows with the precision (flat punch, both regimes)
+  for (const auto &qs : std::vector<std::pair<const char *, const char *>>{{"0.4", "0.12"}, {"0.4", "2"}}) {
+    const mp50 bf("0.45");
+    core::flat_rounded_pressure<mp50> fm(bf);
+    const auto gm = gsolve<mp50>(fm, mp50(qs.first), mp50(qs.second));
+    const auto gl = gsolve<LD>(fl, std::stold(qs.first), std::stold(qs.second));
+    for (int i : {1, 2}) {
+      const mp50 Em = gm.energy(i);
+      CHECK(abs(Em - mp50(gl.energy(i))) / Em < mp50("1e-16"));
+    }
+  }
+}
