@@ -50,6 +50,7 @@ module halfslip
   integer(c_int), parameter, public :: HS_ERR_OVERFLOW         = 14
   integer(c_int), parameter, public :: HS_ERR_BAD_NUMBER       = 15
   integer(c_int), parameter, public :: HS_ERR_TOLERANCE        = 16
+  integer(c_int), parameter, public :: HS_ERR_NOT_APPLICABLE   = 17
 
   integer(c_int), parameter, public :: HS_MODEL_DEFAULT     = 0
   integer(c_int), parameter, public :: HS_MODEL_AUTO        = 1

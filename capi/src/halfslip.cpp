@@ -36,6 +36,7 @@ static_assert(HS_ERR_INTERNAL == int(core::status::internal), "status table");
 static_assert(HS_ERR_OVERFLOW == int(core::status::overflow), "status table");
 static_assert(HS_ERR_BAD_NUMBER == int(core::status::bad_number), "status table");
 static_assert(HS_ERR_TOLERANCE == int(core::status::tolerance), "status table");
+static_assert(HS_ERR_NOT_APPLICABLE == int(core::status::not_applicable), "status table");
 
 struct hs_ref_solution {
   hs::reference::solution sol;
@@ -171,6 +172,7 @@ const char *hs_strerror(int status) {
     case HS_ERR_INTERNAL: return "internal error in halfslip (please report)";
     case HS_ERR_OVERFLOW: return "a result is not representable in double precision (overflow)";
     case HS_ERR_BAD_NUMBER: return "a decimal number string could not be parsed";
+    case HS_ERR_NOT_APPLICABLE: return "the requested model does not apply to this scene (e.g. asymptotic slip zones that cover the contact)";
     case HS_ERR_TOLERANCE: return "no model meets the requested tolerance in double precision (use the reference backend, hs_ref_solve)";
     default: return "unknown halfslip status code";
   }

@@ -139,7 +139,7 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
         run_asymptotic(h, sc);
         return;
       } catch (const core::error &e) {
-        if (e.code() != core::status::bad_option) throw;  // zones cover the contact: go on
+        if (e.code() != core::status::not_applicable) throw;  // zones cover the contact: go on
       }
     }
   }

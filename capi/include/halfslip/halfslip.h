@@ -72,6 +72,7 @@ HS_EXPORT const char *hs_version_string(void);
 #define HS_ERR_OVERFLOW          14  /* a result is not representable (overflow) */
 #define HS_ERR_BAD_NUMBER        15  /* a decimal string could not be parsed */
 #define HS_ERR_TOLERANCE         16  /* no model meets the requested rtol in double precision */
+#define HS_ERR_NOT_APPLICABLE    17  /* the requested model does not apply to this scene */
 
 /* Message for a status code; never NULL. Unknown codes give a generic text. */
 HS_EXPORT const char *hs_strerror(int status);

@@ -96,7 +96,7 @@ template <class T> class edge_solution {
     if (!(m1.KN > 0) || !(m2.KN > 0))
       throw error(status::bad_geometry, "asymptotic model: the pressure has no sqrt edge coefficient");
     if (!(d1() + d2() < 2 * sc.a))
-      throw error(status::bad_option, "asymptotic model does not apply: its slip zones cover the contact");
+      throw error(status::not_applicable, "asymptotic model does not apply: its slip zones cover the contact");
     const int s1 = dir1(), s2 = dir2();
     reg = (s1 == 0 && s2 == 0) ? regime::stuck : (s1 * s2 < 0 ? regime::opposite_sign : regime::same_sign);
   }

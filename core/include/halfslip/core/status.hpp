@@ -22,7 +22,8 @@ enum class status : int {
   internal = 13,
   overflow = 14,
   bad_number = 15,
-  tolerance = 16
+  tolerance = 16,
+  not_applicable = 17
 };
 
 // Thrown by the core on invalid input or failure; carries a status and a
