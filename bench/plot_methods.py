@@ -85,6 +85,12 @@ def speed_accuracy(methods_csv, reference_csv, out):
         errs = [float(r["error"]) for r in rs if r["error"] != "fail"]
         fails = len(rs) - len(errs)
         pts.append((m, g, t, max(errs) if errs else TOP, fails, False, ""))
+    # the same summary as a Markdown table (docs/benchmarks.md quotes it)
+    with open(os.path.join(os.path.dirname(methods_csv), "methods_summary.md"), "w") as md:
+        md.write("| method | geometry | median time / solve | max error (d1, d2) | failures |\n|---|---|---|---|---|\n")
+        for m, g, t, e, fails, _, _ in pts:
+            tt = f"{t:.3g} ns" if t < 1e3 else (f"{t / 1e3:.3g} µs" if t < 1e6 else f"{t / 1e6:.3g} ms")
+            md.write(f"| {m} | {g} | {tt} | {e:.2g} | {fails or ''} |\n")
     if reference_csv and os.path.exists(reference_csv):
         for r in csv.DictReader(open(reference_csv)):
             if r["method"].startswith("mpmath"):
