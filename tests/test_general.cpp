@@ -608,8 +608,9 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
   core::power_law_pressure<double> pd(1.5);
   core::power_law_pressure<LD> pl(1.5L);
   struct sc { const core::pressure_model<double> *md; const core::pressure_model<LD> *ml; double q, s; };
-  for (const auto &c : std::vector<sc>{{&fd, &fl, 1e-3, 3e-4}, {&fd, &fl, 0.5, 0.15}, {&fd, &fl, 0.9, 0.27},
-                                       {&fd, &fl, 0.4, 2.0}, {&pd, &pl, 0.6, 0.18}}) {
+  // (the adaptive references cost ~0.3 s each: four scenes, both regimes, two geometries)
+  for (const auto &c : std::vector<sc>{{&fd, &fl, 1e-3, 3e-4}, {&fd, &fl, 0.5, 0.15}, {&fd, &fl, 0.4, 2.0},
+                                       {&pd, &pl, 0.6, 0.18}}) {
     CAPTURE(c.q);
     CAPTURE(c.s);
     const auto g = gsolve<double>(*c.md, c.q, c.s);
@@ -633,8 +634,9 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
       }
     }
   }
-  // 50 digits: the order grows with the precision (flat punch, both regimes)
-  for (const auto &qs : std::vector<std::pair<const char *, const char *>>{{"0.4", "0.12"}, {"0.4", "2"}}) {
+  // 50 digits: the order grows with the precision (flat punch, same-sign regime; the opposite-sign scene (0.4, 2) takes 18 s: the
+  // graded kink panels converge slowly at this precision, see the closing note of issue 5)
+  for (const auto &qs : std::vector<std::pair<const char *, const char *>>{{"0.4", "0.12"}}) {
     const mp50 bf("0.45");
     core::flat_rounded_pressure<mp50> fm(bf);
     const auto gm = gsolve<mp50>(fm, mp50(qs.first), mp50(qs.second));
