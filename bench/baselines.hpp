@@ -1,5 +1,5 @@
-// Baselines of bench/bench_hertz.cpp (a copy, so that bench_hertz.cpp stays
-// untouched): the Hertz closed forms with Boost / GSL Carlson functions, and
+// The baselines a user would otherwise pick, shared by bench_hertz.cpp and
+// bench_methods.cpp: the Hertz closed forms with Boost / GSL Carlson functions, and
 // Newton on the raw side conditions (11)/(12) with GSL QAWS or Boost tanh-sinh
 // quadrature. a = p0 = f = 1; results are b1, b2. Used by bench_methods.cpp.
 #pragma once

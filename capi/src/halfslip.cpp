@@ -265,28 +265,9 @@ int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, doubl
                               hs_scene *scene) {
   return guard([&] {
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
-    for (double v : {P, R, E_star, f, Q, sigma})
-      require(std::isfinite(v), core::status::not_finite, "load value is NaN or infinite");
-    require(P > 0 && R > 0 && E_star > 0, core::status::bad_size, "P, R, E* must be > 0");
-    require(f > 0, core::status::bad_friction, "f must be > 0");
-    const double pi = core::pi<double>();
-    const double a = std::sqrt(4 * P * R / (pi * E_star));
-    const double p0 = 2 * P / (pi * a);
-    require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
-            "contact size not representable");
-    const double q = Q / (f * P);
-    const double s = sigma / (f * p0);
-    require(std::isfinite(q) && std::isfinite(s), core::status::overflow, "load ratio not representable");
-    require(std::fabs(q) < 1, core::status::gross_sliding, "|Q| >= fP");
-    hs_scene out;
-    hs_scene_default(&out);
-    out.a = a;
-    out.p0 = p0;
-    out.f = f;
-    out.E_star = E_star;
-    out.Q_over_fP = q;
-    out.sigma_over_fp0 = s;
-    *scene = out;
+    check_loads({P, R, E_star, f, Q, sigma}, P, E_star, f);
+    require(R > 0, core::status::bad_size, "R must be > 0");
+    scene_from_loads(std::sqrt(4 * P * R / (core::pi<double>() * E_star)), P, E_star, f, Q, sigma, scene);
   });
 }
 
