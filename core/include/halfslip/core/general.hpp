@@ -36,7 +36,10 @@
 // panels with fixed Gauss-Legendre rules: h' at the nodes of order M from
 // Cauchy sums over the nodes of order M + 1 (interlacing on shared panels),
 // the pressure tail cumulated on the same nodes (Legendre integration
-// matrix); M doubles until two orders agree to max(rtol, eps^(3/4)). The
+// matrix); M doubles until two orders agree to max(rtol, eps^(3/4)).
+// Beyond long double, graded kinks get geometric layers of panels and the
+// own zone's graded panels a high-order inner rule (see make_panels and
+// graded_inner_order). The
 // nested adaptive evaluations remain as energy_hat_adaptive / hhat_adaptive
 // (reference only: ~1000x slower).
 #pragma once
@@ -79,15 +82,44 @@ template <class T> int grading_power() {
   return std::max(4, (d10 * 10 + 47) / 48);
 }
 
+// Geometric layers around graded kinks for the fixed-rule energies and slips
+// (see make_panels); none up to long double, where the map alone suffices
+// (m = 4) and the double-precision cost and results stay as they were.
+template <class T> int kink_layers() {
+  return std::numeric_limits<T>::digits10 > 20 ? 6 : 0;
+}
+
 // Panels on [0, pi/2] in theta for a zone of length d next to a stick zone
 // of length e; kinks: theta values with their grading flag.
+// layers > 0 (fixed-rule energies beyond double): the graded panels at a
+// graded kink are confined to length h 2^-layers (h: the smaller reach, i.e.
+// distance to the zone end or half way to another kink), and ungraded panels
+// doubling in length away from the kink fill each reach. Without them the
+// map theta = k + L u^m (m = 11 at 50 digits) squeezes the analyticity
+// region of the smooth factors by ~m, and the long panel beyond the kink
+// sees the kink at 1/6 of its length: both gave ~1e-30 at order 64.
 template <class T>
-std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<T, bool>> kinks) {
-  using std::asin; using std::sqrt;
+std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<T, bool>> kinks, int layers = 0) {
+  using std::asin; using std::sqrt; using std::min; using std::ldexp;
   const T half_pi = pi<T>() / 2;
   std::vector<std::pair<T, bool>> pts = kinks;
   pts.push_back({T(0), false});
   pts.push_back({half_pi, false});
+  if (layers > 0) {
+    for (const auto &k : kinks) {
+      if (!k.second) continue;
+      // reach on each side: to the zone end or half way to another kink
+      T lo = k.first, hi = half_pi - k.first;
+      for (const auto &o : kinks) {
+        if (o.first < k.first) lo = min(lo, (k.first - o.first) / 2);
+        if (o.first > k.first) hi = min(hi, (o.first - k.first) / 2);
+      }
+      const T h = min(lo, hi);
+      if (!(h > 0)) continue;
+      for (T st = ldexp(h, -layers); st < lo; st *= 2) pts.push_back({k.first - st, false});
+      for (T st = ldexp(h, -layers); st < hi; st *= 2) pts.push_back({k.first + st, false});
+    }
+  }
   // geometric grading towards theta = 0 (singularity at theta ~ i sqrt(e/d))
   const T epsr = sqrt(e / d);
   if (epsr < half_pi / 2) {
@@ -226,12 +258,14 @@ template <class T> struct zone_nodes {
   std::vector<T> s2, c2, w, jac;  // sin^2, cos^2 (each accurate), weight, d theta/d x
   std::vector<T> H;               // Cauchy density per d theta: 2 d c2 sqrt(far) phi / sqrt(e + d s2)
   std::vector<T> p;               // p_hat
+  std::vector<char> graded;       // node on a graded panel
 };
 
-// cut: an extra (ungraded) panel end in (0, pi/2), if any.
+// cut: an extra (ungraded) panel end in (0, pi/2), if any; graded_only: keep
+// only the graded panels (the high-order inner rule of hgrad_nodes).
 template <class T>
 zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d, const T &e, int n,
-                              const T *cut = nullptr) {
+                              const T *cut = nullptr, bool graded_only = false) {
   using std::asin; using std::sin; using std::sqrt;
   zone_nodes<T> z;
   z.n = n;
@@ -243,7 +277,13 @@ zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d,
     if (dist > 0 && dist < d) kinks.push_back({asin(sqrt(dist / d)), bp.graded});
   }
   if (cut && *cut > 0 && *cut < pi<T>() / 2) kinks.push_back({*cut, false});
-  z.panels = make_panels<T>(d, e, kinks);
+  z.panels = make_panels<T>(d, e, kinks, kink_layers<T>());
+  if (graded_only) {
+    std::vector<panel<T>> g;
+    for (const auto &pn : z.panels)
+      if (pn.grade != 0) g.push_back(pn);
+    z.panels.swap(g);
+  }
   const std::size_t N = z.panels.size() * std::size_t(n);
   z.s2.reserve(N); z.c2.reserve(N); z.w.reserve(N); z.jac.reserve(N); z.H.reserve(N); z.p.reserve(N);
   for_nodes_c<T>(z.panels, n, [&](const T &th, const T &thc, const T &w, const T &jac) {
@@ -261,6 +301,7 @@ zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d,
     z.H.push_back(2 * d * c2 * sqrt(far) * ph / sqrt(e + ds));
     z.p.push_back(sqrt(dm * dp) * ph);
   });
+  for (const auto &pn : z.panels) z.graded.insert(z.graded.end(), std::size_t(n), char(pn.grade != 0));
   return z;
 }
 
@@ -499,9 +540,25 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   // sin^2 theta_x) never sees a near-zero denominator; the pressure is
   // evaluated once per node. Cost: O(M^2 panels^2) arithmetic.
 
-  // h' at the first `count` outer nodes O of zone z (inner rules IR, IL).
+  // Order of the inner rule on the graded panels of the own zone (0: none,
+  // the inner rule M + 1 there too). For an outer node theta_j = k - delta
+  // near a graded kink k, the quotient (H(theta) - H_j)/(sin^2 theta -
+  // sin^2 theta_j) on the graded panel across k continues the other side's
+  // log term: poles at u = (delta/L)^(1/m) exp(+-i pi/m) (u the graded
+  // variable there), which the rule of order M + 1 resolves only
+  // algebraically (measured at 50 digits, M = 64, no layers: 7e-26 for the
+  // graded outer nodes; 2e-48 still from the layer next to them; the own
+  // graded panel 6e-35). 6M + 1 (also interlacing) reaches the precision.
+  // Not needed in double (m = 4: the errors stay below 1e-16).
+  static int graded_inner_order(int M) {
+    return std::numeric_limits<T>::digits10 > 20 ? 6 * M + 1 : 0;
+  }
+
+  // h' at the first `count` outer nodes O of zone z (inner rules IR, IL;
+  // G: the high-order rule on the graded panels of zone z, or null).
   std::vector<T> hgrad_nodes(int z, const gdetail::zone_nodes<T> &O, const gdetail::zone_nodes<T> &IR,
-                             const gdetail::zone_nodes<T> &IL, std::size_t count) const {
+                             const gdetail::zone_nodes<T> &IL, std::size_t count,
+                             const gdetail::zone_nodes<T> *G = nullptr) const {
     using std::sqrt;
     const T e = width;
     std::vector<T> g(count, T(0));
@@ -518,11 +575,19 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
         if (Z == z) {
           // t - xi = Z d (sin^2 theta - sin^2 theta_j); PV int_0^{pi/2} dtheta/(sin^2 theta - c) = 0
           const T Hj = O.H[j];
+          const bool hi = G && !G->s2.empty();
           for (std::size_t i = 0; i < n; ++i) {
+            if (hi && I.graded[i]) continue;
             const T den = (I.s2[i] + sj < 1) ? I.s2[i] - sj : cj - I.c2[i];
             // den = 0 only where both nodes have merged into a graded panel
             // end in rounding (high orders): weights there are negligible
             if (den != 0) sum += I.w[i] * (I.H[i] - Hj) / den;
+          }
+          if (hi) {
+            for (std::size_t i = 0; i < G->s2.size(); ++i) {
+              const T den = (G->s2[i] + sj < 1) ? G->s2[i] - sj : cj - G->c2[i];
+              if (den != 0) sum += G->w[i] * (G->H[i] - Hj) / den;
+            }
           }
           sum /= I.d;
         } else {
@@ -547,7 +612,10 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
     const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
     const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1);
     const auto IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1);
-    const std::vector<T> g = hgrad_nodes(z, O, IR, IL, O.s2.size());
+    const int Kg = graded_inner_order(M);
+    gdetail::zone_nodes<T> G;
+    if (Kg > 0) G = gdetail::make_zone_nodes<T>(*pm, z, d, width, Kg, nullptr, true);
+    const std::vector<T> g = hgrad_nodes(z, O, IR, IL, O.s2.size(), Kg > 0 ? &G : nullptr);
     const auto cum = gdetail::gauss_legendre_cumulative<T>(M);
     std::vector<T> f(M);
     T after = 0, E = 0;
@@ -585,7 +653,10 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
     while (np < O.panels.size() && !(O.panels[np].hi > thx)) ++np;
     const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1, z > 0 ? &thx : nullptr);
     const auto IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1, z < 0 ? &thx : nullptr);
-    const std::vector<T> g = hgrad_nodes(z, O, IR, IL, np * M);
+    const int Kg = graded_inner_order(M);
+    gdetail::zone_nodes<T> G;
+    if (Kg > 0) G = gdetail::make_zone_nodes<T>(*pm, z, d, width, Kg, &thx, true);
+    const std::vector<T> g = hgrad_nodes(z, O, IR, IL, np * M, Kg > 0 ? &G : nullptr);
     T h = 0;
     for (std::size_t j = 0; j < np * std::size_t(M); ++j) h += O.w[j] * 2 * d * sqrt(O.s2[j] * O.c2[j]) * g[j];
     return h;
@@ -607,7 +678,7 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   }
 
   // Outer order control: from the smallest power of two >= 2/3 of the
-  // digits of T (as the solver starts), the order doubles until two
+  // digits of T (as the solver starts; 1/2 beyond double), the order doubles until two
   // successive results agree to energy_tol(); the
   // result of the higher order is returned (its error is far below the
   // difference: geometric convergence on the smooth panels, N^(-4m) on the
@@ -624,7 +695,10 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
     {
       using std::log10;
       const T digits = -log10(eps<T>());
-      while (T(M) < digits * 2 / 3) M *= 2;
+      // with the kink layers (beyond double) every panel converges
+      // geometrically; order 32 is already within ~1e-39 at 50 digits
+      const T start = gdetail::kink_layers<T>() > 0 ? digits / 2 : digits * 2 / 3;
+      while (T(M) < start) M *= 2;
     }
     T v = f(M);
     for (; 2 * M <= 1024; M *= 2) {
