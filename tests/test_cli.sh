@@ -68,10 +68,25 @@ for i in range(61):
     x=-math.cos(math.pi*i/60); print(x, math.sqrt(max(0.0,1-x*x)))" > "$tmp"
 js=$("$cli" solve --geometry samples --pressure-file "$tmp" --json) && echo "$js" | grep -q '"b1": 0.83210678' && ok || ko "samples of Hertz"
 rm -f "$tmp"
-for bad in "--geometry flat-rounded --flat-over-a 1" "--geometry power-law --exponent 0.5" "--geometry samples" "--geometry samples --pressure-file /nonexistent" "--exponent 3" "--geometry flat-rounded --digits 30"; do
+for bad in "--geometry flat-rounded --flat-over-a 1" "--geometry power-law --exponent 0.5" "--geometry samples" "--geometry samples --pressure-file /nonexistent" "--exponent 3" "--geometry samples --digits 20" "--geometry flat-rounded --digits 171" "--geometry power-law --exponent 1 --digits 20" "--geometry flat-rounded --digits 20 --P 1000 --R 0.01 --E-star 1 --f 0.5 --Q 1 --sigma 0" "--exponent 3 --digits 20"; do
   err=$("$cli" solve $bad 2>&1 >/dev/null); rc=$?
   if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ]; then ok; else ko "bad geometry input '$bad' (rc=$rc): $err"; fi
 done
+
+# reference backend, non-Hertz geometries: certified digits (value checked against the double solve
+# 0.89398873667117629), Hertz reproduced by n = 2, table grid over b_f/a with shards
+out=$("$cli" solve --digits 30 --geometry flat-rounded --flat-over-a 0.3 --Q-over-fP 0.3 --sigma-over-fp0 0.1) && echo "$out" | grep -q "b1       = 8.93988736671176220572189691154e-01   \[30 digits certified\]" && echo "$out" | grep -q "flat-rounded contact" && ok || ko "solve --digits --geometry flat-rounded"
+js=$("$cli" solve --digits 25 --geometry power-law --exponent 2 --json) && echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["geometry"] == "power-law" and d["inputs"]["exponent"] == "2" and d["b1_digits"] == 25, d' && echo "$js" | grep -q '"b1": "8.321067811865475244008444e-01"' && ok || ko "solve --digits --geometry power-law n = 2 is Hertz"
+full=$("$cli" table --geometry flat-rounded --flat-over-a 0.2:0.3:3 --Q-over-fP 0.3,0.6 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 2) && ok || ko "table flat-rounded"
+[ "$(printf '%s\n' "$full" | wc -l)" -eq 13 ] && ok || ko "table flat-rounded rows"
+printf '%s\n' "$full" | head -1 | grep -q "^flat_over_a,Q_over_fP,sigma_over_fp0,regime,status,b1,b1_digits" && ok || ko "table flat-rounded header"
+printf '%s\n' "$full" | awk -F, 'NR > 1 && ($5 != 0 || $7 != 20 || $13 != 20) { bad = 1 } END { exit bad }' && ok || ko "table flat-rounded: status 0 and 20 certified digits"
+printf '%s\n' "$full" | grep -q "^0.8,0.6,1.5,opposite-sign,0," && ok || ko "table flat-rounded: grid over b_f/a"
+cat_shards=$( for k in 1 2 3; do "$cli" table --geometry flat-rounded --flat-over-a 0.2:0.3:3 --Q-over-fP 0.3,0.6 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 1 --shard $k/3; done )
+[ "$full" = "$cat_shards" ] && ok || ko "flat-rounded shards concatenate to the full table"
+jl=$("$cli" table --geometry power-law --exponent 1.5,3 --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 15 --format jsonl --no-energy) && echo "$jl" | python3 -c 'import json,sys; r=[json.loads(l) for l in sys.stdin]; assert [x["exponent"] for x in r] == ["1.5", "3"] and all(x["b1_digits"] == 15 for x in r), r' && ok || ko "table power-law jsonl"
+"$cli" table --geometry power-law --exponent 2,0.5 --Q-over-fP 0.4 --sigma-over-fp0 0.5 >/dev/null 2>&1 && ko "table: bad exponent accepted" || ok
+"$cli" table --geometry flat-rounded --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 171 >/dev/null 2>&1 && ko "table: digits above the non-Hertz cap accepted" || ok
 
 # asymptotic edge model
 js=$("$cli" asymptotic-error --loading shear --b-over-a 0.9 --json) && echo "$js" | python3 -c 'import json,sys; e=json.load(sys.stdin)["fractional_error"]; assert -0.11 < e < -0.08, e' && ok || ko "asymptotic-error shear"

@@ -1,16 +1,22 @@
 // The MPFR reference backend: agreement with the double fast path, with the
 // raw-integral oracles at 50+ digits, honest digit certification, threads,
-// and genericity of the core (cpp_bin_float archetype).
+// and genericity of the core (cpp_bin_float archetype); the non-Hertz
+// geometries (flat punch, power law) against the double general solver and
+// the Hertz closed forms, and their C ABI fields.
 #include <doctest/doctest.h>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/mpfr.hpp>
+#include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
+#include "halfslip/halfslip.h"
 #include "halfslip/reference/backend.hpp"
 #include "halfslip/reference/oracle.hpp"
 #include "testing.hpp"
@@ -242,4 +248,292 @@ TEST_CASE("stability sweeps towards every failure region: double within its boun
     CHECK(std::abs(dsol.d1() - d1) <= 8 * eps + 16 * eps * d1);
     CHECK(std::abs(dsol.d2() - d2) <= 8 * eps + 16 * eps * d2);
   }
+}
+
+// ---------------------------------------------------------------------------
+// Non-Hertz geometries (flat punch with rounded corners, power law): the
+// general-pressure solver of core/general.hpp on the MPFR tiers.
+
+namespace {
+
+struct geom {
+  int kind;           // ref::geometry_flat_rounded or ref::geometry_power_law
+  const char *param;  // b_f/a or n, exact decimal
+};
+
+const std::vector<geom> &general_geometries() {
+  static const std::vector<geom> g{{ref::geometry_flat_rounded, "0"},   {ref::geometry_flat_rounded, "0.3"},
+                                   {ref::geometry_flat_rounded, "0.5"}, {ref::geometry_flat_rounded, "0.8"},
+                                   {ref::geometry_flat_rounded, "0.95"}, {ref::geometry_power_law, "1.5"},
+                                   {ref::geometry_power_law, "2"},      {ref::geometry_power_law, "3"},
+                                   {ref::geometry_power_law, "4.5"},    {ref::geometry_power_law, "7"}};
+  return g;
+}
+
+ref::text_scene general_text(const geom &g, const char *q, const char *s) {
+  ref::text_scene t;
+  t.geometry = g.kind;
+  (g.kind == ref::geometry_flat_rounded ? t.flat_over_a : t.exponent) = g.param;
+  t.q = q;
+  t.s = s;
+  return t;
+}
+
+std::unique_ptr<core::pressure_model<double>> double_model(const geom &g) {
+  const double v = std::strtod(g.param, nullptr);
+  if (g.kind == ref::geometry_flat_rounded) return std::make_unique<core::flat_rounded_pressure<double>>(v);
+  return std::make_unique<core::power_law_pressure<double>>(v);
+}
+
+// |v - ref| / |ref| in eps (0 when both are zero)
+double rel_err_eps(double v, const std::string &r) {
+  const mp80 x(r);
+  if (x == 0) return v == 0 ? 0 : HUGE_VAL;
+  return double(abs((mp80(v) - x) / x)) / 2.220446049250313e-16;
+}
+
+}  // namespace
+
+TEST_CASE("general pressures: double solve_general against the reference at 40 digits") {
+  // Loads covering both regimes: shear only, small slip zones, near sliding
+  // (Q/fP = 0.99), small and large sigma/fp0, and a negative sigma (mirror).
+  // The reference is the work run of a 40-digit request (the 50-digit tier;
+  // its certification against the next tier is tested below, on fewer scenes:
+  // it triples the cost).
+  struct load { const char *q, *s; };
+  const std::vector<load> loads{{"0.3", "0"}, {"0.05", "0.01"}, {"0.99", "0.5"},
+                                {"0.2", "1"}, {"0.5", "4"},     {"0.4", "-2"}};
+  double worst_b = 0, worst_d = 0, worst_E = 0;
+  int regimes[3] = {0, 0, 0}, n = 0;
+  for (std::size_t gi = 0; gi < general_geometries().size(); ++gi) {
+    const geom &g = general_geometries()[gi];
+    const auto pm = double_model(g);
+    for (std::size_t li = 0; li < loads.size(); ++li) {
+      const load &l = loads[li];
+      const std::string what = std::string(g.kind == ref::geometry_flat_rounded ? "flat b_f/a = " : "power n = ") +
+                               g.param + ", Q/fP = " + l.q + ", sigma/fp0 = " + l.s;
+      CAPTURE(what);
+      core::general_scene<double> sc;
+      sc.q = std::strtod(l.q, nullptr);
+      sc.s = std::strtod(l.s, nullptr);
+      core::general_options<double> opt;
+      opt.rtol = 0;
+      const auto dsol = core::solve_general(*pm, sc, opt);
+      const auto rsol = ref::solve_at(50, general_text(g, l.q, l.s), 1000);
+      REQUIRE(rsol->regime() == int(dsol.reg));
+      ++regimes[rsol->regime()];
+      ++n;
+      CHECK(rsol->dir1() == dsol.dir1());
+      CHECK(rsol->dir2() == dsol.dir2());
+      // the quadrature order stays well inside the tier's limit
+      CHECK(2 * rsol->quadrature_order() <= ref::general_max_order(50));
+      const double eb = std::max(err_eps(dsol.b1(), rsol->value(ref::quantity::b1, 40), 1),
+                                 err_eps(dsol.b2(), rsol->value(ref::quantity::b2, 40), 1));
+      const double ed = std::max(rel_err_eps(dsol.d1(), rsol->value(ref::quantity::d1, 40)),
+                                 rel_err_eps(dsol.d2(), rsol->value(ref::quantity::d2, 40)));
+      double eE = 0;
+      // energies (quadrature over each zone of Cauchy sums: up to 100x a
+      // solve at 50 digits) on four scenes: the smallest zones (b_f/a = 0.95),
+      // shear only, and two opposite-sign scenes (one mirrored)
+      if ((gi == 4 && li == 1) || (gi == 7 && li == 0) || (gi == 5 && li == 5) || (gi == 3 && li == 3)) {
+        if (dsol.d1() > 0) eE = rel_err_eps(dsol.energy(1), rsol->value(ref::quantity::energy1, 40));
+        eE = std::max(eE, rel_err_eps(dsol.energy(2), rsol->value(ref::quantity::energy2, 40)));
+      }
+      INFO(what << ": regime " << rsol->regime() << ", d1 " << dsol.d1() << ", d2 " << dsol.d2() << ", width "
+                << dsol.width << ", order " << rsol->quadrature_order() << "; error in eps: b " << eb << ", d " << ed
+                << ", E " << eE);
+      // Bounds: the largest errors measured on these scenes times 2.5
+      // (`test_reference -tc="general pressures: double*" -s`):
+      // - b: 105 eps a (b_f/a = 0.95, Q/fP = 0.99: stick zone 0.084 a, the
+      //   side conditions' conditioning ~ a/width; 10-51 eps a for the other
+      //   Q/fP = 0.99 scenes, at most 7 eps a elsewhere);
+      // - d, relative: 101 eps (same scene; 15-99 eps for the 0.0015-0.03 a
+      //   slip zones of Q/fP = 0.05, where the error ~ eps a / d);
+      // - energies, relative: 156 eps (b_f/a = 0.95, Q/fP = 0.05: zone energy
+      //   ~ d^3, so 3x the relative error of d; <= 18 eps on the other scenes).
+      CHECK(eb <= 256);
+      CHECK(ed <= 256);
+      CHECK(eE <= 384);
+      worst_b = std::max(worst_b, eb);
+      worst_d = std::max(worst_d, ed);
+      worst_E = std::max(worst_E, eE);
+    }
+  }
+  MESSAGE(n << " scenes (" << regimes[1] << " same sign, " << regimes[2] << " opposite sign): max error in eps: b "
+             << worst_b << ", d (rel) " << worst_d << ", energy (rel) " << worst_E);
+  CHECK(regimes[1] >= 15);
+  CHECK(regimes[2] >= 15);
+}
+
+TEST_CASE("general pressures: power law n = 2 and flat punch b_f = 0 reproduce the Hertz closed forms") {
+  // Both pressures are exactly Hertz: the general solver (Gauss-Legendre
+  // inversion) must meet the closed forms (elliptic integrals) to >= 35 of 40
+  // requested digits, and certify them.
+  struct load { const char *q, *s; bool energies; };
+  for (const load &l : {load{"0.3", "0.5", true}, load{"0.3", "2", false}, load{"0.9", "3.5", false}}) {
+    ref::text_scene th;
+    th.q = l.q;
+    th.s = l.s;
+    const ref::solution hz(th, 40);
+    for (const geom &g : {geom{ref::geometry_power_law, "2"}, geom{ref::geometry_flat_rounded, "0"}}) {
+      CAPTURE(std::string(g.param));
+      CAPTURE(std::string(l.q));
+      CAPTURE(std::string(l.s));
+      const ref::solution gs(general_text(g, l.q, l.s), 40);
+      CHECK(gs.regime() == hz.regime());
+      std::vector<ref::quantity> qs{ref::quantity::b1, ref::quantity::b2, ref::quantity::d1, ref::quantity::d2};
+      if (l.energies) qs.insert(qs.end(), {ref::quantity::energy1, ref::quantity::energy2});
+      for (auto qu : qs) {
+        const auto a = gs.value(qu), b = hz.value(qu);
+        CAPTURE(int(qu));
+        CAPTURE(a.text);
+        CAPTURE(b.text);
+        CHECK(a.digits >= 35);
+        CHECK(ref::agreeing_digits(a.text, b.text, 40) >= 35);
+      }
+    }
+  }
+}
+
+TEST_CASE("general pressures: certification is honest (40 digits against a run at 80)") {
+  // The claimed digits of a 40-digit request (work tier 50, check tier 80)
+  // are compared with the work run of an 80-digit request (tier 120), which
+  // is independent of both.
+  struct sc { geom g; const char *q, *s; bool energies; };
+  // (Energies at 120 digits cost 1.5-8 s per scene: the two cheapest.)
+  for (const sc &c : {sc{{ref::geometry_flat_rounded, "0.95"}, "0.05", "0.01", true},
+                      sc{{ref::geometry_power_law, "7"}, "0.3", "0", true},
+                      sc{{ref::geometry_flat_rounded, "0.8"}, "0.2", "1", false},
+                      sc{{ref::geometry_power_law, "1.5"}, "0.2", "1", false}}) {
+    const ref::text_scene t = general_text(c.g, c.q, c.s);
+    const ref::solution lo(t, 40);
+    const auto hi = ref::solve_at(120, t, 1000);
+    std::vector<ref::quantity> qs{ref::quantity::b1, ref::quantity::b2, ref::quantity::d1, ref::quantity::d2};
+    if (c.energies) qs.insert(qs.end(), {ref::quantity::energy1, ref::quantity::energy2});
+    for (auto qu : qs) {
+      const auto a = lo.value(qu);
+      const std::string b = hi->value(qu, 80);
+      const int agree = ref::agreeing_digits(a.text, b, 40);
+      CHECK_MESSAGE(a.digits <= agree, c.g.param << " q=" << c.q << " s=" << c.s << " quantity " << int(qu)
+                                                 << ": claims " << a.digits << ", agrees to " << agree);
+      CHECK(a.digits >= 35);
+    }
+  }
+}
+
+TEST_CASE("reference C ABI: geometry fields, contract rows") {
+  struct row {
+    int geometry;
+    const char *flat_over_a, *exponent, *P;
+    int digits;
+    size_t size;  // 0: sizeof(hs_ref_scene)
+    int status;
+    const char *what;
+  };
+  const size_t v02 = offsetof(hs_ref_scene, flat_over_a);
+  const int cap = hs_ref_max_digits_geometry(HS_GEOMETRY_FLAT_ROUNDED);
+  const std::vector<row> rows{
+      {HS_GEOMETRY_FLAT_ROUNDED, "0.5x", nullptr, nullptr, 20, 0, HS_ERR_BAD_NUMBER, "b_f/a not a number"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "", nullptr, nullptr, 20, 0, HS_ERR_BAD_NUMBER, "b_f/a empty"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "nan", nullptr, nullptr, 20, 0, HS_ERR_BAD_NUMBER, "b_f/a nan"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "1", nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "b_f/a = 1"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "-0.1", nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "b_f/a < 0"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "0.3", "junk", nullptr, 20, 0, HS_OK, "the other parameter is ignored"},
+      {HS_GEOMETRY_POWER_LAW, nullptr, "2e", nullptr, 20, 0, HS_ERR_BAD_NUMBER, "n not a number"},
+      {HS_GEOMETRY_POWER_LAW, nullptr, "inf", nullptr, 20, 0, HS_ERR_BAD_NUMBER, "n infinite"},
+      {HS_GEOMETRY_POWER_LAW, nullptr, "1", nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "n = 1"},
+      {HS_GEOMETRY_POWER_LAW, nullptr, "0.5", nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "n < 1"},
+      {HS_GEOMETRY_POWER_LAW, nullptr, "1000", nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "n = 1000"},
+      {HS_GEOMETRY_POWER_LAW, "junk", "3", nullptr, 20, 0, HS_OK, "the other parameter is ignored"},
+      {HS_GEOMETRY_POWER_LAW, nullptr, nullptr, nullptr, 20, 0, HS_OK, "default n = 2"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "0.5", nullptr, "1000", 20, 0, HS_ERR_BAD_GEOMETRY, "dimensional input is Hertz only"},
+      {HS_GEOMETRY_SAMPLES, nullptr, nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "samples"},
+      {HS_GEOMETRY_CALLBACK, nullptr, nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "callback"},
+      {0, nullptr, nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "geometry 0"},
+      {99, nullptr, nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "geometry 99"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "0.5", nullptr, nullptr, cap + 1, 0, HS_ERR_BAD_OPTION, "digits above the cap"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "0.5", nullptr, nullptr, 0, 0, HS_ERR_BAD_OPTION, "digits 0"},
+      {HS_GEOMETRY_HERTZ, "junk", "junk", nullptr, 20, v02, HS_OK, "0.2 size: Hertz, new fields not read"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "0.5", nullptr, nullptr, 20, v02, HS_ERR_BAD_GEOMETRY, "0.2 size: Hertz only"},
+      {HS_GEOMETRY_HERTZ, nullptr, nullptr, nullptr, 20, v02 + 1, HS_ERR_STRUCT_SIZE, "unknown size"},
+  };
+  for (const row &r : rows) {
+    CAPTURE(std::string(r.what));
+    hs_ref_scene sc;
+    REQUIRE(hs_ref_scene_default(&sc) == HS_OK);
+    CHECK(sc.flat_over_a == nullptr);
+    CHECK(sc.exponent == nullptr);
+    sc.geometry = r.geometry;
+    sc.flat_over_a = r.flat_over_a;
+    sc.exponent = r.exponent;
+    if (r.P) {
+      sc.P = r.P;
+      sc.R = "0.05";
+      sc.Q = "100";
+      sc.sigma = "1e5";
+    }
+    if (r.size) sc.struct_size = r.size;
+    hs_ref_solution *sol = reinterpret_cast<hs_ref_solution *>(&sc);  // untouched on error
+    const int st = hs_ref_solve(&sc, r.digits, &sol);
+    CHECK(st == r.status);
+    if (st == HS_OK) {
+      hs_ref_summary sm;
+      sm.struct_size = sizeof sm;
+      CHECK(hs_ref_solution_summary(sol, &sm) == HS_OK);
+      CHECK(sm.regime == HS_REGIME_SAME_SIGN);
+      hs_ref_solution_free(sol);
+    } else {
+      CHECK(sol == reinterpret_cast<hs_ref_solution *>(&sc));
+    }
+  }
+  CHECK(hs_ref_max_digits_geometry(HS_GEOMETRY_HERTZ) == hs_ref_max_digits());
+  CHECK(cap == ref::max_digits(ref::geometry_flat_rounded));
+  CHECK(hs_ref_max_digits_geometry(HS_GEOMETRY_POWER_LAW) == cap);
+  CHECK(cap <= hs_ref_max_digits());
+  CHECK(cap >= std::min(100, hs_ref_max_digits()));  // 170 with the default ladder
+  CHECK(hs_ref_max_digits_geometry(HS_GEOMETRY_SAMPLES) == 0);
+  CHECK(hs_ref_max_digits_geometry(-1) == 0);
+}
+
+TEST_CASE("reference C ABI: a flat-punch solution evaluates like the double one") {
+  hs_ref_scene sc;
+  hs_ref_scene_default(&sc);
+  sc.geometry = HS_GEOMETRY_FLAT_ROUNDED;
+  sc.flat_over_a = "0.5";
+  sc.Q_over_fP = "0.6";
+  sc.sigma_over_fp0 = "0.2";
+  hs_ref_solution *rs = nullptr;
+  REQUIRE(hs_ref_solve(&sc, 25, &rs) == HS_OK);
+  hs_scene ds;
+  hs_scene_default(&ds);
+  ds.Q_over_fP = 0.6;
+  ds.sigma_over_fp0 = 0.2;
+  hs_geometry geo;
+  hs_geometry_default(&geo);
+  geo.kind = HS_GEOMETRY_FLAT_ROUNDED;
+  geo.flat_over_a = 0.5;
+  hs_solution *d = nullptr;
+  REQUIRE(hs_solve_geometry(&ds, &geo, nullptr, &d) == HS_OK);
+  char buf[128];
+  int cd = 0;
+  // point values in both slip zones and the pressure at the kink x = b_f
+  for (double x : {0.97, -0.95, 0.5}) {
+    const std::string xs = exact(x);
+    double v[3];
+    CHECK(hs_eval_Bx(d, 1, &x, &v[0]) == HS_OK);
+    CHECK(hs_eval_slip(d, 1, &x, &v[1]) == HS_OK);
+    CHECK(hs_eval_pressure(d, 1, &x, &v[2]) == HS_OK);
+    const int what[3] = {HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_PRESSURE};
+    for (int k = 0; k < 3; ++k) {
+      CAPTURE(x);
+      CAPTURE(k);
+      REQUIRE(hs_ref_eval(rs, what[k], xs.c_str(), buf, sizeof buf, nullptr, &cd) == HS_OK);
+      CHECK(cd >= 20);
+      const double r = to_double(buf);
+      CHECK(std::abs(v[k] - r) <= 1e-12 * (1 + std::abs(r)));
+    }
+  }
+  CHECK(hs_ref_eval(rs, HS_REF_EVAL_BX, "1.5", buf, sizeof buf, nullptr, &cd) == HS_ERR_POINT_OUTSIDE);
+  hs_solution_free(d);
+  hs_ref_solution_free(rs);
 }

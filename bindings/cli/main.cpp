@@ -43,10 +43,13 @@ const char *kUsage =
     "  --json                  one JSON object, numbers with 17 significant digits\n"
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
+    "                          (hertz: N <= 390; flat-rounded, power-law: N <= 170, dimensionless)\n"
     "\n"
     "usage: halfslip table --Q-over-fP LIST --sigma-over-fp0 LIST [--digits N] [--format csv|jsonl]\n"
     "                      [--threads T] [--shard K/N] [--no-energy] [--a A --p0 P0 --f F --E-star E]\n"
-    "  High-precision benchmark table over the grid LIST x LIST (reference backend).\n"
+    "                      [--geometry flat-rounded --flat-over-a LIST | --geometry power-law --exponent LIST]\n"
+    "  High-precision benchmark table over the grid LIST x LIST (reference backend);\n"
+    "  for a non-Hertz geometry also over its parameter (first column, outermost loop).\n"
     "  LIST is v1,v2,... or start:step:count (exact decimal arithmetic).\n"
     "  --shard K/N writes the K-th of N contiguous blocks of rows; the N outputs\n"
     "  concatenated in order equal the unsharded output (CSV header in shard 1 only).\n"
@@ -174,13 +177,57 @@ void check_dimensional(const Args &args) {
     if (args.count(k)) die(std::string(k) + " cannot be combined with dimensional --P/--R/--Q/--sigma");
 }
 
+// Reference-backend geometry: HS_GEOMETRY_* of --geometry (hertz, flat-rounded,
+// power-law), after checking that only its own parameter option is given.
+int ref_geometry_kind(const Args &args, const char *what) {
+  const std::string g = args.count("--geometry") ? args.at("--geometry") : "hertz";
+  if (g == "samples") die(std::string(what) + ": the reference backend supports --geometry hertz, flat-rounded and power-law");
+  if (args.count("--flat-over-a") && g != "flat-rounded") die("--flat-over-a needs --geometry flat-rounded");
+  if (args.count("--exponent") && g != "power-law") die("--exponent needs --geometry power-law");
+  if (args.count("--flat-width") && g != "flat-rounded") die("--flat-width needs --geometry flat-rounded");
+  if (args.count("--pressure-file")) die("--pressure-file needs --geometry samples (not available with --digits)");
+  return g == "flat-rounded" ? HS_GEOMETRY_FLAT_ROUNDED : g == "power-law" ? HS_GEOMETRY_POWER_LAW : HS_GEOMETRY_HERTZ;
+}
+
+// A geometry parameter value (exact decimal text) in its range, else die.
+void check_geometry_param(int kind, const char *flag, const std::string &v) {
+  const double x = parse_number(flag, v.c_str());
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED && !(x >= 0 && x < 1)) die(std::string("bad value for ") + flag + ": need 0 <= b_f/a < 1");
+  if (kind == HS_GEOMETRY_POWER_LAW && !(x > 1 && x < 1000)) die(std::string("bad value for ") + flag + ": need 1 < n < 1000");
+}
+
+void check_ref_digits(int kind, int digits, const std::string &flag) {
+  const int cap = hs_ref_max_digits_geometry(kind);
+  if (digits > cap)
+    die("bad value for " + flag + ": at most " + std::to_string(cap) +
+        " digits for a non-Hertz geometry (its solve costs about D^3; docs/reference.md)");
+}
+
+const char *ref_geometry_name(int kind) {
+  return kind == HS_GEOMETRY_FLAT_ROUNDED ? "flat-rounded" : kind == HS_GEOMETRY_POWER_LAW ? "power-law" : "hertz";
+}
+
 int solve_reference(const Args &args, int digits) {
   if (args.count("--points")) die("--points is not available with --digits (use the C ABI's hs_ref_eval)");
   const bool json = args.count("--json") > 0;
+  const int kind = ref_geometry_kind(args, "--digits");
+  if (kind != HS_GEOMETRY_HERTZ && (is_dimensional(args) || args.count("--flat-width")))
+    die("dimensional input with --digits is available for --geometry hertz only");
+  check_ref_digits(kind, digits, "--digits");
   // exact decimal texts of the inputs
   std::map<std::string, std::string> in;
   hs_ref_scene sc;
   hs_ref_scene_default(&sc);
+  sc.geometry = kind;
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED) {
+    in["flat_over_a"] = decimal_arg(args, "--flat-over-a", "0.5");
+    check_geometry_param(kind, "--flat-over-a", in["flat_over_a"]);
+    sc.flat_over_a = in["flat_over_a"].c_str();
+  } else if (kind == HS_GEOMETRY_POWER_LAW) {
+    in["exponent"] = decimal_arg(args, "--exponent", "2");
+    check_geometry_param(kind, "--exponent", in["exponent"]);
+    sc.exponent = in["exponent"].c_str();
+  }
   in["f"] = decimal_arg(args, "--f", "1");
   in["E_star"] = decimal_arg(args, "--E-star", "1");
   sc.f = in["f"].c_str();
@@ -222,9 +269,9 @@ int solve_reference(const Args &args, int digits) {
   }
   hs_ref_solution_free(sol);
   if (json) {
-    std::printf("{\"geometry\": \"hertz\", \"regime\": \"%s\", \"digits\": %d, \"working_digits\": %d, "
+    std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"digits\": %d, \"working_digits\": %d, "
                 "\"slip_dir1\": %d, \"slip_dir2\": %d",
-                regime_name(sm.regime), digits, sm.working_digits, sm.slip_dir1, sm.slip_dir2);
+                ref_geometry_name(kind), regime_name(sm.regime), digits, sm.working_digits, sm.slip_dir1, sm.slip_dir2);
     std::printf(", \"inputs\": {");
     bool first = true;
     for (const auto &kv : in) {
@@ -238,7 +285,8 @@ int solve_reference(const Args &args, int digits) {
                   vals[i].second);
     std::printf("}\n");
   } else {
-    std::printf("halfslip %s reference backend: Hertz contact, %d significant digits\n", hs_version_string(), digits);
+    std::printf("halfslip %s reference backend: %s contact, %d significant digits\n", hs_version_string(),
+                kind == HS_GEOMETRY_HERTZ ? "Hertz" : ref_geometry_name(kind), digits);
     std::printf("  (working precision %d digits, certified against a %d-digit run)\n", sm.working_digits,
                 sm.check_digits);
     for (const auto &kv : in)
@@ -276,12 +324,10 @@ int cmd_solve(int argc, char **argv) {
       if (args.count("--model")) die("--rtol below 1.1e-16 needs the reference backend: drop --model");
       const int digits = int(std::ceil(-std::log10(rtol)));
       if (digits > hs_ref_max_digits()) die("bad value for --rtol: beyond the reference backend's digits");
-      if (geometry != "hertz") die("--rtol below 1.1e-16: the reference backend supports --geometry hertz only (so far)");
       return solve_reference(args, digits);
     }
   }
   if (args.count("--digits")) {
-    if (geometry != "hertz") die("--digits: the reference backend supports --geometry hertz only (so far)");
     return solve_reference(args, parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()));
   }
   const bool json = args.count("--json") > 0;
@@ -514,13 +560,24 @@ std::vector<std::string> parse_list(const std::string &flag, const std::string &
 int cmd_table(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2,
                                {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--digits", "--format", "--threads",
-                                "--shard", "--a", "--p0", "--f", "--E-star"},
+                                "--shard", "--a", "--p0", "--f", "--E-star", "--flat-over-a", "--exponent"},
                                {"--no-energy"});
   if (!args.count("--Q-over-fP") || !args.count("--sigma-over-fp0"))
     die("table needs --Q-over-fP LIST and --sigma-over-fp0 LIST");
   const auto qs = parse_list("--Q-over-fP", args.at("--Q-over-fP"));
   const auto ss = parse_list("--sigma-over-fp0", args.at("--sigma-over-fp0"));
   const int digits = args.count("--digits") ? parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()) : 40;
+  // geometry parameter: one value or a LIST (outermost loop); a leading column
+  // for a non-Hertz geometry, so that Hertz tables keep their format
+  const int kind = ref_geometry_kind(args, "table");
+  check_ref_digits(kind, digits, "--digits");
+  const char *pflag = kind == HS_GEOMETRY_FLAT_ROUNDED ? "--flat-over-a" : "--exponent";
+  const char *pkey = kind == HS_GEOMETRY_FLAT_ROUNDED ? "flat_over_a" : "exponent";
+  std::vector<std::string> gs{""};
+  if (kind != HS_GEOMETRY_HERTZ) {
+    gs = parse_list(pflag, args.count(pflag) ? args.at(pflag) : (kind == HS_GEOMETRY_FLAT_ROUNDED ? "0.5" : "2"));
+    for (const auto &g : gs) check_geometry_param(kind, pflag, g);
+  }
   const std::string fmt = args.count("--format") ? args.at("--format") : "csv";
   if (fmt != "csv" && fmt != "jsonl" && fmt != "json") die("bad value for --format: '" + fmt + "' (csv or jsonl)");
   const bool jsonl = fmt != "csv";
@@ -537,8 +594,8 @@ int cmd_table(int argc, char **argv) {
   const bool energy = !args.count("--no-energy");
   const std::string a = decimal_arg(args, "--a", "1"), p0 = decimal_arg(args, "--p0", "1"),
                     f = decimal_arg(args, "--f", "1"), E = decimal_arg(args, "--E-star", "1");
-  // rows in order q-major; shard k gets the k-th contiguous block
-  const size_t total = qs.size() * ss.size();
+  // rows in order geometry parameter, then q, then sigma; shard k gets the k-th contiguous block
+  const size_t total = gs.size() * qs.size() * ss.size();
   const size_t lo = total * size_t(shard - 1) / size_t(nshards), hi = total * size_t(shard) / size_t(nshards);
   struct item { const char *key; int id; };
   std::vector<item> items = {{"b1", HS_REF_B1}, {"b2", HS_REF_B2}, {"d1", HS_REF_D1}, {"d2", HS_REF_D2}};
@@ -552,11 +609,15 @@ int cmd_table(int argc, char **argv) {
   std::string first_error;
   auto worker = [&]() {
     for (size_t r = next++; r < hi && !failed; r = next++) {
-      const std::string &q = qs[r / ss.size()], &s = ss[r % ss.size()];
+      const std::string &g = gs[r / (qs.size() * ss.size())], &q = qs[r / ss.size() % qs.size()],
+                        &s = ss[r % ss.size()];
       hs_ref_scene sc;
       hs_ref_scene_default(&sc);
       sc.a = a.c_str(); sc.p0 = p0.c_str(); sc.f = f.c_str(); sc.E_star = E.c_str();
       sc.Q_over_fP = q.c_str(); sc.sigma_over_fp0 = s.c_str();
+      sc.geometry = kind;
+      if (kind == HS_GEOMETRY_FLAT_ROUNDED) sc.flat_over_a = g.c_str();
+      if (kind == HS_GEOMETRY_POWER_LAW) sc.exponent = g.c_str();
       hs_ref_solution *sol = nullptr;
       std::string line;
       const int st = hs_ref_solve(&sc, digits, &sol);
@@ -564,9 +625,11 @@ int cmd_table(int argc, char **argv) {
       sm.struct_size = sizeof sm;
       if (st == HS_OK) hs_ref_solution_summary(sol, &sm);
       const char *reg = st == HS_OK ? regime_name(sm.regime) : (st == HS_ERR_GROSS_SLIDING ? "gross-sliding" : "error");
-      if (jsonl) line = "{\"Q_over_fP\": " + json_str(q) + ", \"sigma_over_fp0\": " + json_str(s) +
+      const std::string gcol = kind == HS_GEOMETRY_HERTZ ? "" : g + ",";
+      const std::string gkey = kind == HS_GEOMETRY_HERTZ ? "" : "\"" + std::string(pkey) + "\": " + json_str(g) + ", ";
+      if (jsonl) line = "{" + gkey + "\"Q_over_fP\": " + json_str(q) + ", \"sigma_over_fp0\": " + json_str(s) +
                         ", \"regime\": " + json_str(reg) + ", \"status\": " + std::to_string(st);
-      else line = q + "," + s + "," + reg + "," + std::to_string(st);
+      else line = gcol + q + "," + s + "," + reg + "," + std::to_string(st);
       std::vector<char> buf(size_t(digits) + 64);
       for (const auto &it : items) {
         int cd = 0;
@@ -585,6 +648,7 @@ int cmd_table(int argc, char **argv) {
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto &t : pool) t.join();
   if (!jsonl && shard == 1) {
+    if (kind != HS_GEOMETRY_HERTZ) std::printf("%s,", pkey);
     std::printf("Q_over_fP,sigma_over_fp0,regime,status");
     for (const auto &it : items) std::printf(",%s,%s_digits", it.key, it.key);
     std::printf("\n");

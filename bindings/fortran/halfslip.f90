@@ -30,7 +30,7 @@ module halfslip
 
   ! ---- constants (same values as halfslip.h) ----------------------------------
   integer(c_int), parameter, public :: HS_VERSION_MAJOR = 0
-  integer(c_int), parameter, public :: HS_VERSION_MINOR = 2
+  integer(c_int), parameter, public :: HS_VERSION_MINOR = 3
   integer(c_int), parameter, public :: HS_VERSION_PATCH = 0
 
   integer(c_int), parameter, public :: HS_OK                   = 0
@@ -158,11 +158,14 @@ module halfslip
   ! Reference-backend scene: decimal strings. An unallocated component means
   ! the C default ("1" for a, p0, f, E_star; "0.5" for the two ratios). When P
   ! is allocated, the dimensional input P, R, Q, sigma (all required) is used
-  ! instead of a, p0 and the ratios.
+  ! instead of a, p0 and the ratios (Hertz only). geometry HS_GEOMETRY_FLAT_ROUNDED
+  ! reads flat_over_a (b_f/a, default "0.5"), HS_GEOMETRY_POWER_LAW reads
+  ! exponent (n, default "2"); at most hs_ref_max_digits_geometry(geometry) digits.
   type, public :: hs_ref_scene_t
     integer(c_int) :: geometry = HS_GEOMETRY_HERTZ
     character(len=:), allocatable :: a, p0, f, E_star, Q_over_fP, sigma_over_fp0
     character(len=:), allocatable :: P, R, Q, sigma
+    character(len=:), allocatable :: flat_over_a, exponent
   end type hs_ref_scene_t
 
   ! The C layout of hs_ref_scene (private: built from hs_ref_scene_t).
@@ -172,6 +175,7 @@ module halfslip
     type(c_ptr)       :: a = c_null_ptr, p0 = c_null_ptr, f = c_null_ptr, E_star = c_null_ptr
     type(c_ptr)       :: Q_over_fP = c_null_ptr, sigma_over_fp0 = c_null_ptr
     type(c_ptr)       :: P = c_null_ptr, R = c_null_ptr, Q = c_null_ptr, sigma = c_null_ptr
+    type(c_ptr)       :: flat_over_a = c_null_ptr, exponent = c_null_ptr  ! since 0.3
   end type c_hs_ref_scene
 
   ! A NUL-terminated copy of a Fortran string, kept alive during a C call.
@@ -185,7 +189,8 @@ module halfslip
   public :: hs_solve, hs_solution_free, hs_solution_summary, hs_solution_energy
   public :: hs_geometry_default, hs_solve_geometry, hs_solve_samples, hs_solve_callback
   public :: hs_eval_Bx, hs_eval_slip, hs_eval_work, hs_eval_pressure
-  public :: hs_ref_max_digits, hs_ref_solve, hs_ref_solution_free, hs_ref_solution_summary
+  public :: hs_ref_max_digits, hs_ref_max_digits_geometry, hs_ref_solve, hs_ref_solution_free
+  public :: hs_ref_solution_summary
   public :: hs_ref_value, hs_ref_eval
   public :: hs_associated
 
@@ -344,6 +349,12 @@ module halfslip
       import :: c_int
       integer(c_int) :: n
     end function c_hs_ref_max_digits
+
+    function c_hs_ref_max_digits_geometry(geometry) bind(c, name="hs_ref_max_digits_geometry") result(n)
+      import :: c_int
+      integer(c_int), value :: geometry
+      integer(c_int) :: n
+    end function c_hs_ref_max_digits_geometry
 
     function c_hs_ref_solve(scene, digits, out) bind(c, name="hs_ref_solve") result(st)
       import :: c_int, c_ptr, c_hs_ref_scene
@@ -710,6 +721,13 @@ contains
     hs_ref_max_digits = int(c_hs_ref_max_digits())
   end function hs_ref_max_digits
 
+  ! Largest digits for a geometry (lower for the flat punch and the power law;
+  ! 0 for a geometry the reference backend does not solve).
+  integer function hs_ref_max_digits_geometry(geometry)
+    integer, intent(in) :: geometry
+    hs_ref_max_digits_geometry = int(c_hs_ref_max_digits_geometry(int(geometry, c_int)))
+  end function hs_ref_max_digits_geometry
+
   ! Solve to `digits` significant digits. sol is overwritten on success.
   subroutine hs_ref_solve(scene, digits, sol, ierr)
     type(hs_ref_scene_t), intent(in) :: scene
@@ -717,7 +735,7 @@ contains
     type(hs_ref_solution_t), intent(inout) :: sol
     integer, intent(out), optional :: ierr
     type(c_hs_ref_scene) :: cs
-    type(c_string), target :: store(10)
+    type(c_string), target :: store(12)
     type(c_ptr) :: h
     integer(c_int) :: st
     st = c_hs_ref_scene_default(cs)
@@ -733,6 +751,8 @@ contains
       call set_c_string(scene%R, store(8), cs%R)
       call set_c_string(scene%Q, store(9), cs%Q)
       call set_c_string(scene%sigma, store(10), cs%sigma)
+      call set_c_string(scene%flat_over_a, store(11), cs%flat_over_a)
+      call set_c_string(scene%exponent, store(12), cs%exponent)
       h = c_null_ptr
       st = c_hs_ref_solve(cs, int(digits, c_int), h)
       if (st == HS_OK) sol%ptr = h

@@ -430,6 +430,13 @@ int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const 
       default:
         throw core::error(core::status::bad_geometry, "unknown geometry");
     }
+    if ((req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) &&
+        (geometry->kind == HS_GEOMETRY_FLAT_ROUNDED || geometry->kind == HS_GEOMETRY_POWER_LAW)) {
+      ref = reference_of(sc);
+      ref.text.geometry = geometry->kind;
+      ref.text.flat_over_a = hs::capi::exact_decimal(geometry->flat_over_a);
+      ref.text.exponent = hs::capi::exact_decimal(geometry->exponent);
+    }
     hs::capi::solve_models(*h, false, sc, req, ref);
     *out = h.release();
   });
@@ -483,15 +490,32 @@ int hs_ref_scene_default(hs_ref_scene *scene) {
 
 int hs_ref_max_digits(void) { return hs::reference::max_digits(); }
 
+int hs_ref_max_digits_geometry(int geometry) {
+  static_assert(HS_GEOMETRY_HERTZ == hs::reference::geometry_hertz &&
+                    HS_GEOMETRY_FLAT_ROUNDED == hs::reference::geometry_flat_rounded &&
+                    HS_GEOMETRY_POWER_LAW == hs::reference::geometry_power_law,
+                "geometry table");
+  return hs::reference::max_digits(geometry);
+}
+
 int hs_ref_solve(const hs_ref_scene *scene, int digits, hs_ref_solution **out) {
   return guard([&] {
     require(scene != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
-    require(scene->struct_size == sizeof(hs_ref_scene), core::status::struct_size, "scene struct_size");
-    require(scene->geometry == HS_GEOMETRY_HERTZ, core::status::bad_geometry, "unknown geometry");
+    // 0.2 callers pass the size without the geometry parameters: Hertz only
+    const bool v02 = scene->struct_size == offsetof(hs_ref_scene, flat_over_a);
+    require(scene->struct_size == sizeof(hs_ref_scene) || v02, core::status::struct_size, "scene struct_size");
+    require(scene->geometry == HS_GEOMETRY_HERTZ || (!v02 && (scene->geometry == HS_GEOMETRY_FLAT_ROUNDED ||
+                                                               scene->geometry == HS_GEOMETRY_POWER_LAW)),
+            core::status::bad_geometry, "unknown geometry");
     hs::reference::text_scene t;
     auto take = [](std::string &dst, const char *src) {
       if (src) dst = src;
     };
+    t.geometry = scene->geometry;
+    if (!v02) {
+      take(t.flat_over_a, scene->flat_over_a);
+      take(t.exponent, scene->exponent);
+    }
     take(t.a, scene->a);
     take(t.p0, scene->p0);
     take(t.f, scene->f);

@@ -48,8 +48,6 @@ reference_double::reference_double(const reference::text_scene &t, const core::g
   b2_ = take(sol_->value(q::b2));
   d1_ = take(sol_->value(q::d1));
   d2_ = take(sol_->value(q::d2));
-  e1_ = take(sol_->value(q::energy1));
-  e2_ = take(sol_->value(q::energy2));
 }
 
 double reference_double::take(const reference::certified &c) const {

@@ -28,6 +28,27 @@ int max_digits() {
   return int(t[t.size() - 2]) - guard_digits;  // the top tier only checks
 }
 
+int max_digits(int geometry) {
+  if (geometry == geometry_hertz) return max_digits();
+  if (geometry != geometry_flat_rounded && geometry != geometry_power_law) return 0;
+  // the largest work tier whose check tier is at most general_max_check_tier
+  const auto &t = tiers();
+  int cap = 0;
+  for (size_t i = 0; i + 1 < t.size(); ++i)
+    if (t[i + 1] <= general_max_check_tier) cap = int(t[i]) - guard_digits;
+  return cap;
+}
+
+int general_max_order(unsigned D) {
+  // Orders accepted by the solver, measured (docs/reference.md): 128-512 at
+  // 50 digits, 256-1024 at 120 (1024 near sliding, Q/fP = 0.99), 512-1024 at
+  // 180 and 270. Allow 16x the digits (at least 1024): one or two doublings
+  // beyond the largest measured.
+  int n = 1024;
+  while (n < 16 * int(D)) n *= 2;
+  return n;
+}
+
 std::unique_ptr<tier_solution> solve_at(unsigned D, const text_scene &sc, int max_iterations) {
 #define HS_TIER(DD) \
   if (D == DD) return make_tier_##DD(sc, max_iterations);
@@ -50,6 +71,11 @@ solution::solution(const text_scene &sc, int digits, int max_iterations) : digit
   release_mpfr_thread_caches on_exit;
   if (digits < 1 || digits > max_digits())
     throw core::error(core::status::bad_option, "digits out of range (1 .. hs_ref_max_digits())");
+  if (sc.geometry != geometry_hertz && digits > max_digits(sc.geometry)) {
+    if (max_digits(sc.geometry) == 0) throw core::error(core::status::bad_geometry, "unknown geometry");
+    throw core::error(core::status::bad_option,
+                      "digits above the limit for non-Hertz geometries (hs_ref_max_digits_geometry())");
+  }
   const auto &t = tiers();
   size_t i = 0;
   while (int(t[i]) < digits + guard_digits) ++i;

@@ -176,7 +176,7 @@ contains
     call expect_code(ierr, HS_OK, 'hs_version status')
     call expect(ma == HS_VERSION_MAJOR .and. mi == HS_VERSION_MINOR .and. pa == HS_VERSION_PATCH, &
                 'hs_version numbers')
-    call expect(hs_version_string() == '0.2.0', 'hs_version_string')
+    call expect(hs_version_string() == '0.3.0', 'hs_version_string')
     msg = hs_strerror(HS_ERR_GROSS_SLIDING)
     call expect(index(msg, '|Q| >= fP') > 0, 'hs_strerror(HS_ERR_GROSS_SLIDING): ' // msg)
     call expect(hs_strerror(HS_OK) == 'success', 'hs_strerror(HS_OK)')
@@ -434,7 +434,7 @@ contains
   end subroutine test_geometries
 
   subroutine test_reference()
-    type(hs_ref_scene_t) :: rs, rd
+    type(hs_ref_scene_t) :: rs, rd, rg
     type(hs_ref_solution_t) :: rsol, rsol2
     type(hs_ref_summary) :: rsm
     type(hs_scene) :: sc
@@ -521,6 +521,39 @@ contains
     call expect_near(b1, sm%b1, 4e-16_c_double * sm%a, 'reference and double b1 agree (dimensional)')
     call hs_solution_free(sol)
     call hs_ref_solution_free(rsol2)
+
+    ! flat punch with rounded corners (value of the double solve: 0.89398873667117629)
+    ! and the power law n = 2, which is Hertz
+    rg%geometry = HS_GEOMETRY_FLAT_ROUNDED
+    rg%flat_over_a = '0.3'
+    rg%Q_over_fP = '0.3'
+    rg%sigma_over_fp0 = '0.1'
+    call hs_ref_solve(rg, 25, rsol, ierr)
+    call expect_code(ierr, HS_OK, 'reference flat punch')
+    call hs_ref_value(rsol, HS_REF_B1, v, cd, ierr)
+    call expect(index(v, '8.9398873667117622057218') == 1 .and. cd == 25, 'reference flat punch b1: ' // v)
+    call hs_ref_solution_free(rsol)
+    rg%geometry = HS_GEOMETRY_POWER_LAW
+    rg%exponent = '2'
+    rg%Q_over_fP = '0.5'
+    rg%sigma_over_fp0 = '0.5'
+    call hs_ref_solve(rg, 25, rsol, ierr)
+    call expect_code(ierr, HS_OK, 'reference power law')
+    call hs_ref_value(rsol, HS_REF_B1, v, cd, ierr)
+    call expect(index(v, '8.321067811865475244008444') == 1, 'reference power law n = 2 is Hertz: ' // v)
+    call hs_ref_solution_free(rsol)
+    rg%exponent = '1'
+    call hs_ref_solve(rg, 25, rsol, ierr)
+    call expect_code(ierr, HS_ERR_BAD_GEOMETRY, 'reference power law n = 1')
+    rg%exponent = '2x'
+    call hs_ref_solve(rg, 25, rsol, ierr)
+    call expect_code(ierr, HS_ERR_BAD_NUMBER, 'reference power law n not a number')
+    rg%exponent = '3'
+    call hs_ref_solve(rg, hs_ref_max_digits_geometry(HS_GEOMETRY_POWER_LAW) + 1, rsol, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'reference power law above its digit cap')
+    call expect(.not. hs_associated(rsol), 'reference handle untouched on error (geometry)')
+    call expect(hs_ref_max_digits_geometry(HS_GEOMETRY_FLAT_ROUNDED) >= min(100, hs_ref_max_digits()) .and. &
+                hs_ref_max_digits_geometry(HS_GEOMETRY_SAMPLES) == 0, 'hs_ref_max_digits_geometry')
   end subroutine test_reference
 
 end program test_fortran

@@ -25,7 +25,7 @@ from ctypes import byref, c_double, c_int, c_size_t
 
 from . import _clib
 
-__version__ = "0.2.0"
+__version__ = "0.3.0"
 __all__ = [
     "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified",
     "solve", "from_hertz_loads", "from_power_law_loads", "from_flat_rounded_loads", "solve_reference", "ref_max_digits",
@@ -522,9 +522,13 @@ class Certified(str):
         return "Certified(%s, certified=%d)" % (str.__repr__(self), self.certified)
 
 
-def ref_max_digits():
-    """Largest number of digits solve_reference accepts."""
-    return _lib.hs_ref_max_digits()
+def ref_max_digits(geometry=None):
+    """Largest number of digits solve_reference accepts: for Hertz, or for the
+    given geometry (a GEOMETRY_* value or name; lower for the flat punch and
+    the power law, 0 for a geometry the reference backend does not solve)."""
+    if geometry is None:
+        return _lib.hs_ref_max_digits()
+    return _lib.hs_ref_max_digits_geometry(_geometry_kind(geometry, None, None, None, None))
 
 
 def _decimal(v):
@@ -534,22 +538,27 @@ def _decimal(v):
 
 
 def solve_reference(digits, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None,
-                    P=None, R=None, Q=None, sigma=None, geometry=None):
+                    P=None, R=None, Q=None, sigma=None, geometry=None, flat_over_a=None, exponent=None):
     """Solve to `digits` significant digits with the MPFR reference backend.
     Inputs are decimal strings (exact decimals stay exact; numbers are
     converted with str()); unset ones take the C defaults. With P given, the
-    dimensional input P, R, Q, sigma (with E_star, f) is used. Returns a
-    ReferenceSolution whose values are Certified strings."""
+    dimensional input P, R, Q, sigma (with E_star, f) is used (Hertz only).
+    flat_over_a=b_f/a (flat punch with rounded corners) or exponent=n (power
+    law) selects that geometry, as does geometry= (a GEOMETRY_* value or
+    name; the parameter then defaults to "0.5" or "2"); at most
+    ref_max_digits(geometry) digits. Returns a ReferenceSolution whose values
+    are Certified strings."""
     c = _clib.RefScene()
     _check(_lib.hs_ref_scene_default(byref(c)), "hs_ref_scene_default")
     keep = {}
     for k, v in dict(a=a, p0=p0, f=f, E_star=E_star, Q_over_fP=Q_over_fP, sigma_over_fp0=sigma_over_fp0,
-                     P=P, R=R, Q=Q, sigma=sigma).items():
+                     P=P, R=R, Q=Q, sigma=sigma, flat_over_a=flat_over_a, exponent=exponent).items():
         if v is not None:
             keep[k] = _decimal(v)
             setattr(c, k, keep[k])
-    if geometry is not None:
-        c.geometry = int(geometry)
+    kind = _geometry_kind(geometry, flat_over_a, exponent, None, None)
+    if kind is not None:
+        c.geometry = kind
     h = _clib.RefSolutionP()
     _check(_lib.hs_ref_solve(byref(c), int(digits), byref(h)), "hs_ref_solve")
     return ReferenceSolution(h)

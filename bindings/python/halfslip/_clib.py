@@ -97,6 +97,8 @@ class RefScene(ctypes.Structure):
         ("R", c_char_p),
         ("Q", c_char_p),
         ("sigma", c_char_p),
+        ("flat_over_a", c_char_p),   # since 0.3
+        ("exponent", c_char_p),      # since 0.3
     ]
 
 
@@ -149,6 +151,7 @@ _SIGNATURES = {
     "hs_eval_pressure": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),
     "hs_ref_scene_default": (c_int, [POINTER(RefScene)]),
     "hs_ref_max_digits": (c_int, []),
+    "hs_ref_max_digits_geometry": (c_int, [c_int]),
     "hs_ref_solve": (c_int, [POINTER(RefScene), c_int, POINTER(RefSolutionP)]),
     "hs_ref_solution_free": (None, [RefSolutionP]),
     "hs_ref_solution_summary": (c_int, [RefSolutionP, POINTER(RefSummary)]),

@@ -85,7 +85,7 @@ class TestLibraryAndVersion(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(halfslip._clib.Summary), 8 + 4 * 4 + 6 * 8 + 4 + 4 + 8)
         self.assertEqual(ctypes.sizeof(halfslip._clib.Options), 8 + 4 + 4 + 8 + 4 + 4)
         self.assertEqual(ctypes.sizeof(halfslip._clib.Geometry), 8 + 4 + 4 + 2 * 8 + 8 + 4 * 8)
-        self.assertEqual(ctypes.sizeof(halfslip._clib.RefScene), 2 * 8 + 10 * ctypes.sizeof(ctypes.c_void_p))
+        self.assertEqual(ctypes.sizeof(halfslip._clib.RefScene), 2 * 8 + 12 * ctypes.sizeof(ctypes.c_void_p))
         # a drifted layout is caught at load time: a copy of the package whose
         # hs_scene has one field too many does not import
         with tempfile.TemporaryDirectory() as tmp:
@@ -478,6 +478,35 @@ class TestReference(unittest.TestCase):
                 halfslip.from_hertz_loads(1000, 0.05, 1.15e11, 0.6, 300, 2e6).solve() as sol:
             self.assertAlmostEqual(float(r.b1), sol.b1, delta=4e-16 * sol.a)
             self.assertAlmostEqual(float(r.a), sol.a, delta=2e-16 * sol.a)
+
+    def test_flat_punch_and_power_law(self):
+        # the flat punch at 25 digits agrees with the double solve; n = 2 is Hertz
+        with halfslip.solve_reference(25, Q_over_fP="0.3", sigma_over_fp0="0.1", flat_over_a="0.3") as r, \
+                halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=0.1, flat_over_a=0.3) as sol:
+            self.assertEqual(r.regime, sol.regime)
+            self.assertTrue(r.b1.startswith("8.9398873667117622057218"), r.b1)
+            self.assertEqual(r.b1.certified, 25)
+            self.assertAlmostEqual(float(r.d2), sol.d2, delta=1e-14 * sol.d2)
+            self.assertAlmostEqual(float(r.pressure("0.3")), sol.pressure(0.3), delta=1e-14)
+        with halfslip.solve_reference(25, geometry="power-law") as r:
+            self.assertTrue(r.b1.startswith("8.321067811865475244008444"), r.b1)
+        cap = halfslip.ref_max_digits(halfslip.GEOMETRY_FLAT_ROUNDED)
+        self.assertEqual(cap, halfslip.ref_max_digits("power-law"))
+        self.assertTrue(min(100, halfslip.ref_max_digits()) <= cap <= halfslip.ref_max_digits())
+        self.assertEqual(halfslip.ref_max_digits("samples"), 0)
+        for kw, status in ((dict(flat_over_a="1"), halfslip.ERR_BAD_GEOMETRY),
+                           (dict(flat_over_a="0.5x"), halfslip.ERR_BAD_NUMBER),
+                           (dict(exponent="1"), halfslip.ERR_BAD_GEOMETRY),
+                           (dict(geometry=halfslip.GEOMETRY_SAMPLES), halfslip.ERR_BAD_GEOMETRY),
+                           (dict(exponent="3", P="1000", R="0.05", Q="300", sigma="0"), halfslip.ERR_BAD_GEOMETRY)):
+            with self.assertRaises(HalfslipError) as cm:
+                halfslip.solve_reference(20, **kw)
+            self.assertEqual(cm.exception.status, status, kw)
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve_reference(cap + 1, exponent="3")
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
+        with self.assertRaises(TypeError):
+            halfslip.solve_reference(20, flat_over_a="0.5", exponent="3")
 
     def test_errors(self):
         with self.assertRaises(HalfslipError) as cm:

@@ -47,7 +47,7 @@ extern "C" {
 
 /* ---- version ------------------------------------------------------------ */
 #define HS_VERSION_MAJOR 0
-#define HS_VERSION_MINOR 2
+#define HS_VERSION_MINOR 3
 #define HS_VERSION_PATCH 0
 
 /* Version of the library actually loaded (may differ from the header's). */
@@ -261,21 +261,35 @@ HS_EXPORT int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_co
  * Each call chooses its own precision; no global MPFR state is touched. */
 typedef struct hs_ref_scene {
   size_t struct_size;      /* = sizeof(hs_ref_scene), set by hs_ref_scene_default */
-  int geometry;            /* HS_GEOMETRY_HERTZ */
+  int geometry;            /* HS_GEOMETRY_HERTZ (default), _FLAT_ROUNDED or _POWER_LAW */
   /* dimensionless input (defaults "1", "1", "1", "1", "0.5", "0.5") */
   const char *a, *p0, *f, *E_star, *Q_over_fP, *sigma_over_fp0;
   /* dimensional Hertz input, used instead of a, p0 and the ratios when P is
-   * not NULL: then R, Q and sigma are required too (and E_star, f are used) */
+   * not NULL: then R, Q and sigma are required too (and E_star, f are used).
+   * Hertz only: with another geometry, HS_ERR_BAD_GEOMETRY. */
   const char *P, *R, *Q, *sigma;
+  /* since 0.3: the parameter of the geometry (NULL: the default; the other
+   * one is ignored). A caller built against 0.2 may pass
+   * struct_size = offsetof(hs_ref_scene, flat_over_a): it is served as
+   * before, Hertz only (another geometry gives HS_ERR_BAD_GEOMETRY). */
+  const char *flat_over_a; /* HS_GEOMETRY_FLAT_ROUNDED: b_f/a in [0, 1) (default "0.5") */
+  const char *exponent;    /* HS_GEOMETRY_POWER_LAW: n with 1 < n < 1000 (default "2") */
 } hs_ref_scene;
 
 HS_EXPORT int hs_ref_scene_default(hs_ref_scene *scene);
-/* Largest number of digits hs_ref_solve accepts. */
+/* Largest number of digits hs_ref_solve accepts (Hertz). */
 HS_EXPORT int hs_ref_max_digits(void);
+/* Largest number of digits hs_ref_solve accepts for a geometry: as
+ * hs_ref_max_digits() for HS_GEOMETRY_HERTZ; lower for HS_GEOMETRY_FLAT_ROUNDED
+ * and HS_GEOMETRY_POWER_LAW (170 with the default precision ladder), whose
+ * numerical solve costs about D^3 at D digits (docs/reference.md); 0 for a
+ * geometry the reference backend does not solve. A request above it gives
+ * HS_ERR_BAD_OPTION. */
+HS_EXPORT int hs_ref_max_digits_geometry(int geometry);
 
 typedef struct hs_ref_solution hs_ref_solution;  /* opaque, immutable once made */
 
-/* Solve to `digits` significant digits (1 .. hs_ref_max_digits()). */
+/* Solve to `digits` significant digits (1 .. hs_ref_max_digits_geometry(scene->geometry)). */
 HS_EXPORT int hs_ref_solve(const hs_ref_scene *scene, int digits, hs_ref_solution **out);
 HS_EXPORT void hs_ref_solution_free(hs_ref_solution *sol);
 

@@ -17,12 +17,23 @@
 
 namespace hs { namespace reference {
 
+// Geometries of the reference backend (the values of HS_GEOMETRY_*).
+constexpr int geometry_hertz = 1;         // closed forms (core/hertz.hpp)
+constexpr int geometry_flat_rounded = 2;  // flat punch with rounded corners, b_f/a = flat_over_a
+constexpr int geometry_power_law = 3;     // profile g = A|x|^n, n = exponent
+
 // Decimal inputs, parsed at the working precision (exact decimals stay
 // exact up to the last bit of the tier).
 struct text_scene {
   std::string a = "1", p0 = "1", f = "1", Estar = "1", q = "0.5", s = "0.5";
-  // Dimensional Hertz input instead of a, p0, q, s when P is not empty.
+  // Dimensional Hertz input instead of a, p0, q, s when P is not empty
+  // (Hertz only: with another geometry, bad_geometry).
   std::string P, R, Q, sigma;
+  // Non-Hertz geometries are solved by core::solve_general at the full
+  // precision of the tier (rtol = 0). Only the parameter of the chosen
+  // geometry is read: b_f/a in [0, 1), or 1 < n < 1000.
+  int geometry = geometry_hertz;
+  std::string flat_over_a = "0.5", exponent = "2";
 };
 
 enum class quantity : int { b1 = 1, b2 = 2, d1 = 3, d2 = 4, energy1 = 5, energy2 = 6, a = 7, p0 = 8 };
@@ -37,6 +48,8 @@ class tier_solution {
   virtual int dir1() const = 0;
   virtual int dir2() const = 0;
   virtual int iterations() const = 0;
+  // Gauss-Legendre order per panel of the accepted residual (0: Hertz closed forms).
+  virtual int quadrature_order() const = 0;
   // Value printed in scientific notation with `sig` significant digits.
   virtual std::string value(quantity q, int sig) const = 0;
   virtual std::string eval(point_eval what, const std::string &x, int sig) const = 0;
@@ -46,6 +59,16 @@ class tier_solution {
 const std::vector<unsigned> &tiers();
 int max_digits();
 constexpr int guard_digits = 10;
+// Non-Hertz geometries cost far more per tier (Gauss-Legendre orders growing
+// with the digits, ~D^3 overall: about 3 s at 180 digits, 50 s at 400): their
+// requests are capped where the check run would need a tier above this
+// (docs/reference.md). max_digits(geometry) is the cap, max_digits() for
+// Hertz, 0 for an unknown geometry.
+constexpr unsigned general_max_check_tier = 270;
+int max_digits(int geometry);
+// Largest Gauss-Legendre order per panel allowed to the general solver at a
+// tier of D digits (the order it needs grows about linearly with D).
+int general_max_order(unsigned D);
 
 // Solve at tier D (must be one of tiers()). Throws hs::core::error.
 std::unique_ptr<tier_solution> solve_at(unsigned D, const text_scene &sc, int max_iterations);
@@ -68,6 +91,7 @@ class solution {
   int dir1() const { return work_->dir1(); }
   int dir2() const { return work_->dir2(); }
   int iterations() const { return work_->iterations(); }
+  int quadrature_order() const { return work_->quadrature_order(); }
   certified value(quantity q) const;
   certified eval(point_eval what, const std::string &x) const;
 
