@@ -31,7 +31,7 @@ struct reader {
 void require(bool ok) {
   if (!ok) std::abort();
 }
-bool known(int st) { return st >= HS_OK && st <= HS_ERR_BAD_NUMBER; }
+bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
@@ -86,6 +86,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   // the general-pressure path on the same scene: flat punch or power law with
   // a fuzzed parameter (bounded loads keep one input's cost in milliseconds)
   const uint8_t g = r.byte();
+  [&] {
   if ((g & 1) && std::fabs(sc.sigma_over_fp0) < 50 && std::fabs(sc.Q_over_fP) < 0.999) {
     hs_geometry geo;
     hs_geometry_default(&geo);
@@ -98,7 +99,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     require(known(gst));
     if (gst != HS_OK) {
       require(gs == nullptr);
-      return 0;
+      return;
     }
     hs_summary gm;
     gm.struct_size = sizeof gm;
@@ -111,6 +112,26 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     const int bs = hs_eval_Bx(gs, 1, gx, gout);
     require(known(bs) && (bs != HS_OK || std::isfinite(gout[0])));
     hs_solution_free(gs);
+  }
+  }();
+  // model selection (read last, so that earlier corpus inputs decode as before):
+  // any model, rtol from the options above; AUTO must meet rtol when it succeeds
+  const uint8_t m = r.byte();
+  if (m & 1) {
+    hs_options mo = o;
+    mo.model = int(m >> 1) % 8 - 1;  // -1 .. 6: unknown values included
+    hs_solution *ms = nullptr;
+    const int mst = hs_solve(&sc, &mo, &ms);
+    require(known(mst) && (mst == HS_OK) == (ms != nullptr));
+    if (mst == HS_OK) {
+      hs_summary mm;
+      mm.struct_size = sizeof mm;
+      require(hs_solution_summary(ms, &mm) == HS_OK);
+      require(mm.model >= HS_MODEL_ASYMPTOTIC && mm.model <= HS_MODEL_REFERENCE);
+      require(mm.error_estimate >= 0);
+      if (mo.model == HS_MODEL_AUTO && mo.rtol > 0) require(mm.error_estimate <= mo.rtol);
+      hs_solution_free(ms);
+    }
   }
   return 0;
 }
