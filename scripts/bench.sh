@@ -7,6 +7,7 @@
 #   bench/results/methods.csv, stability.csv  every model: speed, accuracy, stability (issue 5);
 #     charts docs/figures/speed_accuracy.svg, docs/figures/stability.svg (docs/benchmarks.md)
 set -euo pipefail
+export HS_BENCH=ON
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 mkdir -p "$HS_ROOT/bench/results"
 "$HS_BUILD/bench/bench_hertz" "$HS_ROOT/bench/results/hertz.csv"

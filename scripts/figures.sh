@@ -2,6 +2,7 @@
 # The paper's Figures 5 and 6 (asymptotic edge model vs full solution) as CSV
 # and charts (SVG, plus PNG when rsvg-convert can be installed) in docs/figures/.
 set -euo pipefail
+export HS_BENCH=ON
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh" >/dev/null
 hs_packages=(librsvg2-bin)
 hs_install_missing || true
