@@ -830,12 +830,16 @@ bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_s
                   const T &tol_step, int max_it, int &iterations, int &steps) {
   using std::abs; using std::exp; using std::ldexp;
   T sc = 0;
+  // (s may be denormal: s/4 and s 2^-40 then underflow to 0; every step
+  // must make progress, else a zero step loops for ever: fuzzer input
+  // tests/fuzz/corpus/solve/timeout-denormal-sigma)
   T h = s / 4;
+  if (!(h > 0)) h = s;
   const T hmin = s * ldexp(T(1), -40);
   const T tiny = boost::math::tools::min_value<T>() / eps<T>();
   while (sc < s) {
-    if (h < hmin) return false;
-    const T sn = (s - sc <= h) ? s : sc + h;
+    if (!(h > 0) || h < hmin) return false;
+    const T sn = (s - sc <= h || !(sc + h > sc)) ? s : sc + h;
     const T ds = sn - sc;
     // tangent predictor
     general_state<T> pred = st;
