@@ -58,9 +58,7 @@ template <class F> int guard(F &&body) noexcept {
   }
 }
 
-void require(bool ok, core::status s, const char *msg) {
-  if (!ok) throw core::error(s, msg);
-}
+using hs::capi::require;
 
 // Validated solver options (NULL: the defaults). A 0.2 caller passes the
 // size without the model field and gets HS_MODEL_DEFAULT.
@@ -290,19 +288,9 @@ int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
     core::general_scene<double> sc;
     sc.a = c.a; sc.p0 = c.p0; sc.f = c.f; sc.Estar = c.Estar; sc.q = c.q; sc.s = c.s;
     auto h = std::make_unique<hs_solution>();
-    if (r.model == HS_MODEL_DEFAULT) {  // the fast path: no model machinery
-      core::solve_options<double> o;
-      o.max_iterations = r.max_iterations;
-      o.rtol = r.rtol;
-      h->hertz = std::make_unique<core::hertz_solution<double>>(core::solve_hertz<double>(c, o));
-      h->model_used = HS_MODEL_CLOSED_FORM;
-      const auto e = core::closed_form_estimate(h->hertz->d1() / c.a, h->hertz->d2() / c.a, c.q, c.s).value();
-      h->error_estimate = 16 * r.rtol > e ? 16 * r.rtol : e;
-    } else {
-      hs::capi::reference_input ref;
-      if (r.model == HS_MODEL_AUTO || r.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
-      hs::capi::solve_models(*h, true, sc, r, ref);
-    }
+    hs::capi::reference_input ref;
+    if (r.model == HS_MODEL_AUTO || r.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
+    hs::capi::solve_models(*h, true, sc, r, ref);
     *out = h.release();
   });
 }

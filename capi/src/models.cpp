@@ -13,9 +13,6 @@
 namespace hs { namespace capi {
 
 namespace {
-void require(bool ok, core::status s, const char *msg) {
-  if (!ok) throw core::error(s, msg);
-}
 // digits asked of the reference backend when it stands in for double: 17
 // are needed for a correctly rounded double, the rest is margin so that
 // certification (which compares with a run one tier up) is never the limit
@@ -83,12 +80,13 @@ void clear(hs_solution &h) {
   h.ref.reset();
 }
 
-void run_asymptotic(hs_solution &h, const core::general_scene<double> &sc) {
+// est: the model's error estimate if the caller has computed it already (< 0: not yet)
+void run_asymptotic(hs_solution &h, const core::general_scene<double> &sc, double est = -1) {
   const auto &pm = pressure_of(h);
   clear(h);
   h.edge.reset(new core::edge_solution<double>(pm, sc));
   h.model_used = HS_MODEL_ASYMPTOTIC;
-  h.error_estimate = core::asymptotic_estimate(pm, sc).value();
+  h.error_estimate = est >= 0 ? est : core::asymptotic_estimate(pm, sc).value();
 }
 
 void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, const request &r) {
@@ -134,7 +132,7 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
     const auto est = core::asymptotic_estimate(pressure_of(h), sc).value();
     if (est <= tol) {
       try {
-        run_asymptotic(h, sc);
+        run_asymptotic(h, sc, est);
         return;
       } catch (const core::error &e) {
         if (e.code() != core::status::not_applicable) throw;  // zones cover the contact: go on

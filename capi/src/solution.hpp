@@ -12,6 +12,11 @@
 
 namespace hs { namespace capi {
 
+// Throws the core's error (turned into the status by the ABI's firewall).
+inline void require(bool ok, core::status s, const char *msg) {
+  if (!ok) throw core::error(s, msg);
+}
+
 // The reference backend's certified solution rounded to double, with the
 // interface of the core solutions (values certified to >= 17 digits at
 // construction; point evaluations go through decimal strings).
