@@ -1,0 +1,787 @@
+// halfslip core: load histories at constant normal load (issue #14).
+//
+// Canonical frame: a = 1, p0 = 1, f = 1, E* = 1; loads q = Q/fP, s = sigma/(f p0);
+// traction in units of f p0, slip h in f p0 a/E*, energies in f^2 p0^2 a^2/E*.
+// Derivation: docs/history.md. In short:
+//
+//  * While a point x is stuck its slip does not change, and the slip zones
+//    carry q = s_i p(x), fixed in time. So at any instant the traction RATE is
+//    zero on the slip zones and, on the stick zone (-b2, b1) = (c - e, c + e),
+//    is the fully stuck traction of that interval:
+//        qdot(x) = [Qdot/2 - (Sdot/4)(x - c)] / sqrt((b1 - x)(x + b2)).
+//    The traction at a stuck point is therefore its traction when it last
+//    entered the stick zone (s_i p(x), or 0 if it has never slipped) plus the
+//    time integral of qdot since then (superposition of stuck-interval rates;
+//    locked-in slip is preserved automatically).
+//  * An edge of the stick zone where the zone advances (stick shrinking) is
+//    fixed by continuity, q(b_i) = s_i p(b_i). The rate's end coefficient
+//        r1 = Qdot/2 - Sdot e/4 (end b1),   r2 = Qdot/2 + Sdot e/4 (end -b2)
+//    decides each end: s_i r_i > 0 advances; s_i r_i < 0 would make the slip
+//    rate next to the end run against the traction, so the end recedes with
+//    r_i = 0 (stick half-width held at e* = 2 Qdot/Sdot for end 1,
+//    -2 Qdot/Sdot for end 2), or, if that is out of reach, the whole zone sticks
+//    at once (e.g. unloading). A stick zone that reaches the contact edge
+//    opens a zone of direction sign(r_i) there as soon as r_i != 0.
+//  * The slip rate in zone 1 is hdot = 2[r A acosh(v/e) - B sqrt(v^2 - e^2)],
+//    v = x - c, A = Qdot/2, B = Sdot/4 (zone 2: + B and |v|), the slip rate of
+//    a stuck contact of half-width e; dissipation rate = int s_i p hdot dx.
+//
+// The path is marched in equal load steps per run; the ends are interpolated
+// in time by polynomials through the previous knots of the run (degree up to
+// history_options::degree), and each step's contribution to the traction is a
+// Gauss-Legendre rule after the substitution u = u* -+ v^2 at the root of the
+// nearly vanishing factor. Events (an end switching mode, a receding zone
+// closing) are located within the step. Error falls like step^(degree+1/2).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "numerics.hpp"
+#include "pressure.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+template <class T> struct history_options {
+  T max_step = T(1) / 128;  // largest load step, in max(|dq|, |ds|/4)
+  int degree = 3;           // interpolation degree of the stick-zone ends in time
+  int order = 8;            // Gauss-Legendre nodes per step integral
+  int max_steps = 2000000;  // total steps over the whole history
+  int max_newton = 60;      // Newton iterations per step
+};
+
+// State after a path vertex (canonical frame; b's in units of a).
+template <class T> struct history_vertex {
+  T q{0}, s{0};
+  T b1{1}, b2{1};
+  int dir1 = 0, dir2 = 0;  // slip direction of each edge zone at the vertex (0: stuck)
+  T energy1{0}, energy2{0};  // dissipated over the segment that ends here
+  size_t step_end = 0;       // number of steps up to this vertex
+};
+
+namespace hdetail {
+
+// b(u) = bb + (u - 1) g(u), g a polynomial in u of degree <= 3: exact at u = 1.
+template <class T> struct endpoly {
+  T bb{1};
+  std::array<T, 4> g{{T(0), T(0), T(0), T(0)}};
+  int deg = 0;  // degree of g
+  T val(const T &u) const { return bb + (u - 1) * gval(u); }
+  T gval(const T &u) const {
+    T r = g[deg];
+    for (int k = deg - 1; k >= 0; --k) r = r * u + g[k];
+    return r;
+  }
+  T der(const T &u) const {  // b'(u) = g(u) + (u - 1) g'(u)
+    T gd = 0;
+    for (int k = deg; k >= 1; --k) gd = gd * u + T(k) * g[k];
+    return gval(u) + (u - 1) * gd;
+  }
+};
+
+// Polynomial through (u_j, b_j), u_j = 1 - (m - j) for j = 0..m (knots at
+// integers up to 1), written as bb + (u - 1) g(u).
+template <class T> endpoly<T> interpolate(const std::vector<T> &b) {
+  const int m = int(b.size()) - 1;  // degree
+  endpoly<T> p;
+  p.bb = b[m];
+  if (m == 0) return p;
+  // Newton form in nodes 1, 0, -1, -2 (reverse order: node of bb first)
+  std::vector<T> nodes(m + 1), c(m + 1);
+  for (int j = 0; j <= m; ++j) {
+    nodes[j] = T(1 - j);
+    c[j] = b[m - j];
+  }
+  for (int k = 1; k <= m; ++k)
+    for (int j = m; j >= k; --j) c[j] = (c[j] - c[j - 1]) / (nodes[j] - nodes[j - k]);
+  // b(u) = c0 + (u - 1)[c1 + (u - n1)[c2 + (u - n2) c3]]: g = c1 + (u - n1)(c2 + (u - n2) c3)
+  std::array<T, 4> g{{T(0), T(0), T(0), T(0)}};
+  // build g as monomials by Horner on the Newton form
+  std::array<T, 4> acc{{c[m], T(0), T(0), T(0)}};
+  int d = 0;
+  for (int k = m - 1; k >= 1; --k) {
+    // acc = acc * (u - nodes[k]) + c[k]
+    std::array<T, 4> nx{{T(0), T(0), T(0), T(0)}};
+    for (int j = 0; j <= d; ++j) {
+      nx[j + 1] += acc[j];
+      nx[j] -= nodes[k] * acc[j];
+    }
+    ++d;
+    nx[0] += c[k];
+    acc = nx;
+  }
+  g = acc;
+  p.g = g;
+  p.deg = d;
+  return p;
+}
+
+template <class T> T acosh1p(const T &w) {  // acosh(1 + w), w >= 0, accurate for small w
+  using std::log1p; using std::sqrt;
+  return log1p(w + sqrt(w * (w + 2)));
+}
+
+}  // namespace hdetail
+
+// One step of the march: loads linear in u in [0, 1], stick-zone ends b1(u), b2(u).
+template <class T> struct history_step {
+  T q0, s0, dq, ds;
+  hdetail::endpoly<T> e1, e2;
+  T b1a, b2a;          // ends at u = 0 (the knots of the previous step)
+  int s1 = 0, s2 = 0;  // zone directions during the step (0: no zone)
+  T E1{0}, E2{0};      // energy dissipated in each zone during the step
+  T b1(const T &u) const { return e1.val(u); }
+  T b2(const T &u) const { return e2.val(u); }
+  T b1b() const { return e1.bb; }
+  T b2b() const { return e2.bb; }
+};
+
+template <class T> class history {
+ public:
+  using pressure_ptr = std::shared_ptr<const pressure_model<T>>;
+  history(pressure_ptr pm, const history_options<T> &o = {}) : pm_(std::move(pm)), opt_(o) {
+    if (!pm_) throw error(status::null_pointer, "history: no pressure model");
+    if (!(opt_.max_step > 0) || !(opt_.max_step <= 1))
+      throw error(status::bad_option, "history: max_step must be in (0, 1]");
+    if (opt_.degree < 1 || opt_.degree > 3) throw error(status::bad_option, "history: degree must be 1, 2 or 3");
+    if (opt_.order < 2 || opt_.order > 64) throw error(status::bad_option, "history: order must be in 2..64");
+  }
+
+  // March from the current loads to (q, s) along a straight segment.
+  void add_vertex(const T &qn, const T &sn) {
+    using std::abs; using std::ceil; using std::max; using std::min;
+    using boost::math::isfinite;
+    if (!isfinite(qn) || !isfinite(sn)) throw error(status::not_finite, "history: a path vertex is not finite");
+    if (!(abs(qn) < 1)) throw error(status::gross_sliding, "history: |Q| >= fP at a path vertex: gross sliding");
+    const T dq = qn - q_, ds = sn - s_;
+    const T len = max(abs(dq), abs(ds) / 4);
+    T E1 = 0, E2 = 0;
+    if (len > 0) {
+      decide(dq, ds);
+      const T h = T(1) / max(T(1), ceil(len / opt_.max_step));
+      T done = 0;  // fraction of the segment done
+      T hrun = h;
+      while (done < 1) {
+        if ((m1_ == rec && b1_ >= 1 - 16 * eps<T>()) || (m2_ == rec && b2_ >= 1 - 16 * eps<T>())) {
+          after_event(m1_ == rec && b1_ >= 1 - 16 * eps<T>() ? 3 : 4);
+          decide(dq, ds);
+          run_start_ = steps_.size();
+        }
+        T frac = min(hrun, 1 - done);
+        if (1 - done - frac < hrun / 1024) frac = 1 - done;
+        // a step that cannot keep an advancing end advancing ends beyond an
+        // event: shorten it until it solves (the event is then located below)
+        history_step<T> st;
+        for (int tries = 0;; ++tries) {
+          try {
+            st = take_step(dq, ds, frac);
+            break;
+          } catch (const error &err) {
+            if (err.code() != status::no_convergence || tries >= 40) throw;
+            frac /= 2;
+          }
+        }
+        // events within the step
+        int ev = event_in(st);
+        if (ev != 0) {
+          T lo = 0, hi = frac;
+          // bisection/secant on the fraction at which the event happens
+          T fl = event_value(ev, nullptr, dq, ds, T(0)), fh = event_value(ev, &st, dq, ds, frac);
+          history_step<T> best = st;
+          for (int it = 0; it < 60; ++it) {
+            T mid = (fl != fh) ? lo + (hi - lo) * fl / (fl - fh) : (lo + hi) / 2;
+            if (!(mid > lo + (hi - lo) / 16) || !(mid < hi - (hi - lo) / 16)) mid = (lo + hi) / 2;
+            history_step<T> sm;
+            if (!try_step(dq, ds, mid, sm)) {  // beyond the event: shrink from above
+              hi = mid;
+              continue;
+            }
+            const T fm = event_value(ev, &sm, dq, ds, mid);
+            if ((fm > 0) == (fl > 0)) { lo = mid; fl = fm; } else { hi = mid; fh = fm; best = sm; }
+            if (hi - lo <= 8 * eps<T>() * frac || abs(fm) <= 8 * eps<T>()) { best = sm; frac = mid; break; }
+            frac = hi;
+          }
+          st = best;
+          if (event_value(ev, &st, dq, ds, frac) != 0) apply_event_limit(ev, st);
+          commit(st, dq, ds, frac);
+          done += frac;
+          E1 += st.E1; E2 += st.E2;
+          after_event(ev);
+          decide(dq, ds);
+          run_start_ = steps_.size();
+          // rest of the segment in equal steps
+          const T rest = 1 - done;
+          if (rest > 0) hrun = rest / max(T(1), ceil(rest / h));
+          continue;
+        }
+        commit(st, dq, ds, frac);
+        done += frac;
+        E1 += st.E1; E2 += st.E2;
+      }
+    }
+    history_vertex<T> v;
+    v.q = qn; v.s = sn; q_ = qn; s_ = sn;
+    v.b1 = b1_; v.b2 = b2_;
+    v.dir1 = s1_; v.dir2 = s2_;
+    v.energy1 = E1; v.energy2 = E2;
+    v.step_end = steps_.size();
+    vertices_.push_back(v);
+    run_start_ = steps_.size();
+  }
+
+  const std::vector<history_vertex<T>> &vertices() const { return vertices_; }
+  const std::vector<history_step<T>> &steps() const { return steps_; }
+  const pressure_model<T> &pressure() const { return *pm_; }
+
+  // Traction q(x) after `nsteps` steps (canonical units f p0).
+  T traction(const T &x, size_t nsteps) const {
+    if (nsteps == 0) return T(0);
+    const history_step<T> &last = steps_[nsteps - 1];
+    if (x >= last.b1b() && last.s1 != 0 && x > last.b1b()) return T(last.s1) * pm_->p(x);
+    if (x <= -last.b2b() && last.s2 != 0 && x < -last.b2b()) return T(last.s2) * pm_->p(x);
+    return stick_traction(x, nsteps, nullptr);
+  }
+  // Accumulated slip h(x) after nsteps (canonical units f p0 a / E*).
+  T slip(const T &x, size_t nsteps) const {
+    T h = 0;
+    for (size_t k = 0; k < nsteps; ++k) h += step_slip(steps_[k], x);
+    return h;
+  }
+  size_t step_count() const { return steps_.size(); }
+
+ private:
+  enum mode { edge, adv, rec };
+  pressure_ptr pm_;
+  history_options<T> opt_;
+  std::vector<history_step<T>> steps_;
+  std::vector<history_vertex<T>> vertices_;
+  T q_{0}, s_{0}, b1_{1}, b2_{1};
+  int s1_ = 0, s2_ = 0;
+  mode m1_ = edge, m2_ = edge;
+  T estar_{0};
+  size_t run_start_ = 0;
+
+  static int sgn(const T &v) { return (v > 0) - (v < 0); }
+  static T r(int i, const T &dq, const T &ds, const T &e) { return i == 1 ? dq / 2 - ds * e / 4 : dq / 2 + ds * e / 4; }
+
+  // A zero-load step that moves the ends outwards at once (part of a zone sticks).
+  void jump(const T &b1n, const T &b2n) {
+    history_step<T> st;
+    st.q0 = q_; st.s0 = s_; st.dq = 0; st.ds = 0;
+    st.b1a = b1_; st.b2a = b2_;
+    st.e1.bb = b1n; st.e1.g[0] = b1n - b1_; st.e1.deg = 0;
+    st.e2.bb = b2n; st.e2.g[0] = b2n - b2_; st.e2.deg = 0;
+    st.s1 = s1_; st.s2 = s2_;
+    steps_.push_back(st);
+    b1_ = b1n; b2_ = b2n;
+    run_start_ = steps_.size();
+  }
+
+  void decide(const T &dq, const T &ds) {
+    for (int pass = 0; pass < 8; ++pass) {
+      const T e = (b1_ + b2_) / 2;
+      bool changed = false;
+      for (int i = 1; i <= 2 && !changed; ++i) {
+        int &si = i == 1 ? s1_ : s2_;
+        mode &mi = i == 1 ? m1_ : m2_;
+        const T bo = i == 1 ? b2_ : b1_;
+        const T bi = i == 1 ? b1_ : b2_;
+        const T ri = r(i, dq, ds, e);
+        if (si == 0) {
+          if (ri != 0) { si = sgn(ri); mi = adv; changed = true; run_start_ = steps_.size(); }
+          else mi = edge;
+          continue;
+        }
+        if (T(si) * ri > 0) {
+          if (mi != adv) { mi = adv; run_start_ = steps_.size(); }
+          continue;
+        }
+        // recede with r_i = 0 if the stick zone can grow to e*, else the zone sticks whole
+        bool can = false;
+        T es = 0;
+        if (ds != 0) {
+          es = (i == 1 ? 2 : -2) * dq / ds;
+          using std::abs;
+          if (es < e && es >= e - 64 * eps<T>() * (1 + abs(e))) es = e;  // at the event itself
+          can = es >= e && 2 * es - bo < 1;
+        }
+        if (can) {
+          const T bn = 2 * es - bo;
+          if (bn > bi) {
+            if (i == 1) jump(bn, b2_); else jump(b1_, bn);
+          }
+          mi = rec;
+          estar_ = es;
+          run_start_ = steps_.size();
+        } else {
+          if (i == 1) jump(T(1), b2_); else jump(b1_, T(1));
+          si = 0;
+          mi = edge;
+          changed = true;
+        }
+      }
+      if (!changed) {
+        if (m1_ == rec && m2_ != adv) throw error(status::internal, "history: receding end without an advancing one");
+        if (m2_ == rec && m1_ != adv) throw error(status::internal, "history: receding end without an advancing one");
+        return;
+      }
+    }
+    throw error(status::internal, "history: the slip-zone modes did not settle");
+  }
+
+  // Build the trial step to fraction `frac` of the segment with given end values.
+  history_step<T> make_step(const T &dq, const T &ds, const T &frac, const T &b1n, const T &b2n) const {
+    history_step<T> st;
+    st.q0 = q_; st.s0 = s_;
+    st.dq = dq * frac; st.ds = ds * frac;
+    st.b1a = b1_; st.b2a = b2_;
+    st.s1 = s1_; st.s2 = s2_;
+    // knots of the run with equal step (the previous steps of this run)
+    std::vector<T> k1, k2;
+    const size_t have = steps_.size() - run_start_;
+    int m = std::min<int>(opt_.degree, int(have) + 1);
+    bool equal = true;
+    for (int j = 1; j < m && equal; ++j) {
+      const auto &p = steps_[steps_.size() - j];
+      using std::abs;
+      if (abs(p.dq - st.dq) > 64 * eps<T>() * (abs(st.dq) + abs(st.ds)) ||
+          abs(p.ds - st.ds) > 64 * eps<T>() * (abs(st.dq) + abs(st.ds)))
+        equal = false;
+    }
+    if (!equal) m = 1;
+    for (int j = m - 1; j >= 1; --j) {
+      const auto &p = steps_[steps_.size() - j];
+      k1.push_back(p.b1a);
+      k2.push_back(p.b2a);
+    }
+    k1.push_back(b1_); k2.push_back(b2_);
+    k1.push_back(b1n); k2.push_back(b2n);
+    st.e1 = hdetail::interpolate(k1);
+    st.e2 = hdetail::interpolate(k2);
+    if (m1_ == rec) st.e1 = mirror_end(st.e2, b1n);
+    if (m2_ == rec) st.e2 = mirror_end(st.e1, b2n);
+    return st;
+  }
+  // receding end: b_i(u) = 2 e* - b_j(u)
+  hdetail::endpoly<T> mirror_end(const hdetail::endpoly<T> &o, const T &bn) const {
+    hdetail::endpoly<T> p = o;
+    p.bb = bn;
+    for (auto &c : p.g) c = -c;
+    return p;
+  }
+
+  // ---- traction at a stuck point -------------------------------------------
+  // sum over the steps since x last entered the stick zone (steps_[0..n) plus an
+  // optional trial step after them)
+  T stick_traction(const T &x, size_t n, const history_step<T> *trial) const {
+    T total = 0;
+    long k = long(n) - 1;
+    bool first = trial != nullptr;
+    while (first || k >= 0) {
+      const history_step<T> &st = first ? *trial : steps_[size_t(k)];
+      const bool in_start = st.b1a > x && x > -st.b2a;
+      if (in_start) {
+        total += contrib(st, x, T(0), T(1));
+      } else {
+        const T ua = entry_u(st, x);
+        total += contrib(st, x, ua, T(1));
+        if (x >= st.b1a) total += T(st.s1) * pm_->p(x);
+        else total += T(st.s2) * pm_->p(x);
+        return total;
+      }
+      if (first) first = false; else --k;
+    }
+    return total;  // stuck since the start: q was 0
+  }
+
+  // last u in [0, 1] at which x enters the stick zone during the step
+  T entry_u(const history_step<T> &st, const T &x) const {
+    using std::abs;
+    if (st.dq == 0 && st.ds == 0) return T(1);  // a jump: entered at its end
+    auto inside = [&](const T &u) { return st.b1(u) - x > 0 && x + st.b2(u) > 0; };
+    T lo = 0, hi = 1;  // outside at lo, inside at hi
+    for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
+      const T mid = (lo + hi) / 2;
+      if (inside(mid)) hi = mid; else lo = mid;
+    }
+    return hi;
+  }
+
+  // int_ua^ub [dq/2 - ds/4 (x - c(u))] / sqrt(L1 L2) du, L1 = b1(u) - x, L2 = x + b2(u)
+  T contrib(const history_step<T> &st, const T &x, const T &ua, const T &ub) const {
+    if ((st.dq == 0 && st.ds == 0) || !(ub > ua)) return T(0);
+    auto L1 = [&](const T &u) { return (st.e1.bb - x) + (u - 1) * st.e1.gval(u); };
+    auto L2 = [&](const T &u) { return (x + st.e2.bb) + (u - 1) * st.e2.gval(u); };
+    auto f = [&](const T &u) {
+      using std::sqrt;
+      const T l1 = L1(u), l2 = L2(u);
+      if (!(l1 > 0) || !(l2 > 0)) return T(0);
+      const T c = (st.b1(u) - st.b2(u)) / 2;
+      return (st.dq / 2 - st.ds / 4 * (x - c)) / sqrt(l1 * l2);
+    };
+    return integrate_rsing(f, L1, L2, st, ua, ub, 0);
+  }
+
+  // Gauss-Legendre on [ua, ub] of f = g / sqrt(L1 L2), with u = u* -+ v^2 at a
+  // nearly vanishing factor (root u* at or just outside the interval).
+  template <class F, class G1, class G2>
+  T integrate_rsing(const F &f, const G1 &L1, const G2 &L2, const history_step<T> &st, const T &ua, const T &ub,
+                    int depth) const {
+    using std::abs; using std::sqrt;
+    const T l1a = L1(ua), l1b = L1(ub), l2a = L2(ua), l2b = L2(ub);
+    auto ratio = [](const T &a, const T &b) {
+      const T lo = std::min(a, b), hi = std::max(a, b);
+      return hi - lo > 0 ? lo / (hi - lo) : T(1e30);
+    };
+    const T r1 = ratio(l1a, l1b), r2 = ratio(l2a, l2b);
+    const bool n1 = r1 < 2, n2 = r2 < 2;
+    const int end1 = l1a < l1b ? -1 : +1, end2 = l2a < l2b ? -1 : +1;
+    if (n1 && n2 && end1 != end2 && depth < 4) {
+      const T mid = (ua + ub) / 2;
+      return integrate_rsing(f, L1, L2, st, ua, mid, depth + 1) + integrate_rsing(f, L1, L2, st, mid, ub, depth + 1);
+    }
+    const auto rule = gauss_legendre<T>(opt_.order * ((n1 && n2) ? 2 : 1));
+    if (!n1 && !n2) {
+      T sum = 0;
+      const T hw = (ub - ua) / 2, mid = (ua + ub) / 2;
+      for (size_t j = 0; j < rule->x.size(); ++j) sum += rule->w[j] * f(mid + hw * rule->x[j]);
+      return sum * hw;
+    }
+    // the factor to remove: the nearer one
+    const bool use1 = n1 && (!n2 || r1 <= r2);
+    const int end = use1 ? end1 : end2;
+    const T ue = end > 0 ? ub : ua;
+    auto Lv = [&](const T &u) { return use1 ? L1(u) : L2(u); };
+    auto Ld = [&](const T &u) { return use1 ? st.e1.der(u) : -T(0) + st.e2.der(u); };
+    // root u* outward of ue: Newton on L from ue
+    T us = ue;
+    T lv = Lv(ue);
+    if (lv > 0) {
+      for (int it = 0; it < 40; ++it) {
+        const T d = Ld(us);
+        if (d == 0) break;
+        const T stp = Lv(us) / d;  // L' has the sign that makes L grow into the interval
+        const T nu = us - stp;
+        if ((end > 0 && !(nu >= ue)) || (end < 0 && !(nu <= ue))) break;
+        if (abs(nu - us) <= 4 * eps<T>() * (1 + abs(us))) { us = nu; break; }
+        us = nu;
+      }
+    }
+    T sum = 0;
+    if (end > 0) {  // u = us - v^2
+      const T vlo = sqrt(std::max(T(0), us - ub)), vhi = sqrt(us - ua);
+      const T hw = (vhi - vlo) / 2, mid = (vhi + vlo) / 2;
+      for (size_t j = 0; j < rule->x.size(); ++j) {
+        const T v = mid + hw * rule->x[j];
+        sum += rule->w[j] * 2 * v * f(us - v * v);
+      }
+      return sum * hw;
+    }
+    const T vlo = sqrt(std::max(T(0), ua - us)), vhi = sqrt(ub - us);
+    const T hw = (vhi - vlo) / 2, mid = (vhi + vlo) / 2;
+    for (size_t j = 0; j < rule->x.size(); ++j) {
+      const T v = mid + hw * rule->x[j];
+      sum += rule->w[j] * 2 * v * f(us + v * v);
+    }
+    return sum * hw;
+  }
+
+  bool try_step(const T &dq, const T &ds, const T &frac, history_step<T> &out) const {
+    try {
+      out = take_step(dq, ds, frac);
+      return true;
+    } catch (const error &err) {
+      if (err.code() != status::no_convergence) throw;
+      return false;
+    }
+  }
+
+  // ---- one step -----------------------------------------------------------
+  T residual_end(int i, const history_step<T> &st) const {
+    const T x = i == 1 ? st.e1.bb : -st.e2.bb;
+    const int si = i == 1 ? st.s1 : st.s2;
+    return stick_traction(x, steps_.size(), &st) - T(si) * pm_->p(x);
+  }
+
+  history_step<T> take_step(const T &dq, const T &ds, const T &frac) const {
+    using std::abs; using std::max; using std::min; using std::sqrt;
+    const bool a1 = m1_ == adv, a2 = m2_ == adv;
+    auto ends = [&](const T &z1, const T &z2, T &b1n, T &b2n) {
+      b1n = a1 ? z1 : (m1_ == edge ? b1_ : T(0));
+      b2n = a2 ? z2 : (m2_ == edge ? b2_ : T(0));
+      if (m1_ == rec) b1n = 2 * estar_ - b2n;
+      if (m2_ == rec) b2n = 2 * estar_ - b1n;
+    };
+    // starting guess: extrapolation within the run, else a small zone
+    T g1 = b1_, g2 = b2_;
+    const T len = max(abs(dq), abs(ds) / 4) * frac;
+    if (steps_.size() > run_start_) {
+      const auto &p = steps_.back();
+      const T r = frac * max(abs(dq), abs(ds) / 4) / max(abs(p.dq), abs(p.ds) / 4);
+      g1 = b1_ + (b1_ - p.b1a) * r;
+      g2 = b2_ + (b2_ - p.b2a) * r;
+    } else {
+      g1 = b1_ - len / 4;
+      g2 = b2_ - len / 4;
+    }
+    const T w0 = b1_ + b2_;
+    auto clampz = [&](T &z, const T &b) {
+      if (!(z < b)) z = b - (b + T(1)) * T(1e-3) * len - eps<T>();
+    };
+    T z1 = g1, z2 = g2;
+    if (a1) clampz(z1, b1_);
+    if (a2) clampz(z2, b2_);
+    const int n = int(a1) + int(a2);
+    T b1n, b2n;
+    ends(z1, z2, b1n, b2n);
+    if (n == 0) return make_step(dq, ds, frac, b1n, b2n);
+    auto resid = [&](const T &y1, const T &y2, T &f1, T &f2, bool strict = true) -> bool {
+      T c1, c2;
+      ends(y1, y2, c1, c2);
+      if (!strict && c1 + c2 > 0 && c1 < 1 + T(1e-3) && c2 < 1 + T(1e-3)) {
+        const history_step<T> st = make_step(dq, ds, frac, c1, c2);
+        if (a1) f1 = residual_end(1, st);
+        if (a2) f2 = residual_end(2, st);
+        return true;
+      }
+      // an advancing end moves inwards (outwards the continuity condition holds
+      // trivially: the receding case, decided by r_i instead)
+      if (!(c1 + c2 > 0) || !(c1 <= 1) || !(c2 <= 1) || (a1 && !(c1 <= b1_)) || (a2 && !(c2 <= b2_)))
+        return false;
+      const history_step<T> st = make_step(dq, ds, frac, c1, c2);
+      if (a1) f1 = residual_end(1, st);
+      if (a2) f2 = residual_end(2, st);
+      return true;
+    };
+    T f1 = 0, f2 = 0;
+    if (!resid(z1, z2, f1, f2)) {
+      bool found = false;
+      for (T tiny = T(1e-3); tiny > T(1e-14) && !found; tiny /= 32) {
+        z1 = a1 ? b1_ - w0 * tiny : z1;
+        z2 = a2 ? b2_ - w0 * tiny : z2;
+        found = resid(z1, z2, f1, f2);
+      }
+      if (!found) throw error(status::no_convergence, "history: no valid start for a step");
+    }
+    const T tol = 16 * eps<T>();
+    for (int it = 0; it < opt_.max_newton; ++it) {
+      const T fn = max(abs(f1), abs(f2));
+      // Jacobian by differences (one-sided, inwards)
+      const T hz = sqrt(eps<T>()) * max(w0, T(1e-300));
+      T j11 = 1, j12 = 0, j21 = 0, j22 = 1;
+      T g1a = 0, g2a = 0;
+      if (a1) {
+        if (!resid(z1 - hz, z2, g1a, g2a, false)) throw error(status::no_convergence, "history: step Jacobian");
+        j11 = (f1 - g1a) / hz;
+        j21 = a2 ? (f2 - g2a) / hz : T(0);
+      }
+      if (a2) {
+        T h1 = 0, h2 = 0;
+        if (!resid(z1, z2 - hz, h1, h2, false)) throw error(status::no_convergence, "history: step Jacobian");
+        j22 = (f2 - h2) / hz;
+        j12 = a1 ? (f1 - h1) / hz : T(0);
+      }
+      T d1 = 0, d2 = 0;
+      if (a1 && a2) {
+        const T det = j11 * j22 - j12 * j21;
+        d1 = (f1 * j22 - f2 * j12) / det;
+        d2 = (j11 * f2 - j21 * f1) / det;
+      } else if (a1) {
+        d1 = f1 / j11;
+      } else {
+        d2 = f2 / j22;
+      }
+      T lam = 1;
+      bool ok = false;
+      T n1 = 0, n2 = 0, nf1 = 0, nf2 = 0;
+      for (int ls = 0; ls < 40; ++ls) {
+        n1 = z1 - lam * d1;
+        n2 = z2 - lam * d2;
+        if (resid(n1, n2, nf1, nf2) && max(abs(nf1), abs(nf2)) < (1 - lam / 4) * fn + tol) {
+          ok = true;
+          break;
+        }
+        lam /= 2;
+      }
+#ifdef HS_HISTORY_DEBUG
+      fprintf(stderr, "it %d z %.17g %.17g f %.3e %.3e d %.3e %.3e J %.3e %.3e %.3e %.3e ok %d\n", it, double(z1), double(z2), double(f1), double(f2), double(d1), double(d2), double(j11), double(j12), double(j21), double(j22), int(ok));
+#endif
+      if (!ok) {
+        if ((!a1 || abs(f1) <= 256 * eps<T>() * (1 + abs(j11 * z1))) &&
+            (!a2 || abs(f2) <= 256 * eps<T>() * (1 + abs(j22 * z2))))
+          break;  // at the rounding floor
+        throw error(status::no_convergence, "history: the stick-zone ends of a step did not converge");
+      }
+      const T dz = max(abs(z1 - n1), abs(z2 - n2));
+      z1 = n1; z2 = n2; f1 = nf1; f2 = nf2;
+      // at the rounding floor: |F_i| within a few ulps of z_i times dF_i/dz_i
+      const bool c1 = !a1 || abs(f1) <= 64 * eps<T>() * (1 + abs(j11 * z1));
+      const bool c2 = !a2 || abs(f2) <= 64 * eps<T>() * (1 + abs(j22 * z2));
+      if (dz <= 4 * eps<T>() * max(w0, T(1e-300)) || max(abs(f1), abs(f2)) <= tol || (c1 && c2)) break;
+      if (it + 1 == opt_.max_newton)
+        throw error(status::no_convergence, "history: Newton iteration limit for a step reached");
+    }
+    ends(z1, z2, b1n, b2n);
+    return make_step(dq, ds, frac, b1n, b2n);
+  }
+
+  // ---- events ---------------------------------------------------------------
+  // 1/2: advancing end i reaches r_i = 0; 3/4: receding end i reaches the edge
+  int event_in(const history_step<T> &st) const {
+    const T e = (st.e1.bb + st.e2.bb) / 2;
+    if (m1_ == adv && T(s1_) * r(1, st.dq, st.ds, e) <= 0) return 1;
+    if (m2_ == adv && T(s2_) * r(2, st.dq, st.ds, e) <= 0) return 2;
+    if (m1_ == rec && st.e1.bb >= 1) return 3;
+    if (m2_ == rec && st.e2.bb >= 1) return 4;
+    return 0;
+  }
+  T event_value(int ev, const history_step<T> *st, const T &dq, const T &ds, const T &) const {
+    const T b1 = st ? st->e1.bb : b1_, b2 = st ? st->e2.bb : b2_;
+    const T e = (b1 + b2) / 2;
+    switch (ev) {
+      case 1: return T(s1_) * r(1, dq, ds, e);
+      case 2: return T(s2_) * r(2, dq, ds, e);
+      case 3: return 1 - b1;
+      default: return 1 - b2;
+    }
+  }
+  void apply_event_limit(int ev, history_step<T> &st) const {
+    if (ev == 3 && st.e1.bb > 1) st.e1.bb = 1;
+    if (ev == 4 && st.e2.bb > 1) st.e2.bb = 1;
+  }
+  void after_event(int ev) {
+    if (ev == 3 && b1_ >= 1 - 16 * eps<T>()) { s1_ = 0; m1_ = edge; b1_ = 1; }
+    if (ev == 4 && b2_ >= 1 - 16 * eps<T>()) { s2_ = 0; m2_ = edge; b2_ = 1; }
+  }
+
+  // ---- commit: energies ----------------------------------------------------
+  void commit(history_step<T> &st, const T &dq, const T &ds, const T &frac) {
+    (void)dq; (void)ds; (void)frac;
+    if (steps_.size() >= size_t(opt_.max_steps))
+      throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
+    step_energy(st);
+    steps_.push_back(st);
+    b1_ = st.e1.bb;
+    b2_ = st.e2.bb;
+  }
+
+  // slip rate (per unit u) in zone z (+1 right of the stick zone, -1 left) at x
+  static T hdot(int z, const T &A, const T &B, const T &c, const T &e, const T &x) {
+    using std::sqrt;
+    const T w = z > 0 ? x - (c + e) : (c - e) - x;  // distance from the stick end, >= 0
+    if (!(w > 0)) return T(0);
+    const T ach = hdetail::acosh1p(w / e);
+    const T sq = sqrt(w * (w + 2 * e));
+    return 2 * (A * ach + (z > 0 ? -B : B) * sq);
+  }
+
+  // dissipation over the step: int_0^1 du int_zone s_i p hdot dx
+  void step_energy(history_step<T> &st) const {
+    using std::cos; using std::sin; using std::sqrt;
+    st.E1 = st.E2 = 0;
+    if (st.dq == 0 && st.ds == 0) return;
+    const auto ru = gauss_legendre<T>(opt_.order);
+    const T A = st.dq / 2, B = st.ds / 4;
+    for (size_t j = 0; j < ru->x.size(); ++j) {
+      const T u = (1 + ru->x[j]) / 2, wu = ru->w[j] / 2;
+      const T b1 = st.b1(u), b2 = st.b2(u);
+      const T c = (b1 - b2) / 2, e = (b1 + b2) / 2;
+      if (st.s1 != 0 && b1 < 1) st.E1 += wu * T(st.s1) * zone_rate(+1, A, B, c, e, b1, T(1));
+      if (st.s2 != 0 && b2 < 1) st.E2 += wu * T(st.s2) * zone_rate(-1, A, B, c, e, T(-1), -b2);
+    }
+  }
+  // int_lo^hi p(x) hdot(x) dx over a slip zone: x = lo + d (1 - cos th)/2 takes
+  // both square-root ends; geometric panels in th near the stick end when e << d.
+  T zone_rate(int z, const T &A, const T &B, const T &c, const T &e, const T &lo, const T &hi) const {
+    using std::acos; using std::cos; using std::sin; using std::sqrt;
+    const T d = hi - lo;
+    if (!(d > 0)) return T(0);
+    const T pi_ = pi<T>();
+    // th of a distance w from the stick end
+    auto th_of = [&](const T &w) {
+      const T wf = z > 0 ? w : d - w;  // distance from lo
+      T cth = 1 - 2 * wf / d;
+      if (cth > 1) cth = 1;
+      if (cth < -1) cth = -1;
+      return acos(cth);
+    };
+    std::vector<T> cuts{T(0), pi_};
+    // grading towards the stick end
+    for (T w = e; w < d / 4; w *= 8) cuts.push_back(th_of(w));
+    for (const auto &bp : pm_->breakpoints()) {
+      if (bp.x > lo && bp.x < hi) cuts.push_back(th_of(z > 0 ? bp.x - lo : hi - bp.x));
+    }
+    std::sort(cuts.begin(), cuts.end());
+    const auto rule = gauss_legendre<T>(opt_.order * 2);
+    T sum = 0;
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const T a = cuts[k], b = cuts[k + 1];
+      if (!(b > a)) continue;
+      const T hw = (b - a) / 2, mid = (a + b) / 2;
+      for (size_t j = 0; j < rule->x.size(); ++j) {
+        const T th = mid + hw * rule->x[j];
+        const T x = lo + d * (1 - cos(th)) / 2;
+        sum += hw * rule->w[j] * (d / 2) * sin(th) * pm_->p(x) * hdot(z, A, B, c, e, x);
+      }
+    }
+    return sum;
+  }
+
+  // slip accumulated at x over one step
+  T step_slip(const history_step<T> &st, const T &x) const {
+    using std::sqrt;
+    if (st.dq == 0 && st.ds == 0) return T(0);
+    const T A = st.dq / 2, B = st.ds / 4;
+    T h = 0;
+    for (int z = -1; z <= 1; z += 2) {
+      const int sz = z > 0 ? st.s1 : st.s2;
+      if (sz == 0) continue;
+      // g(u) = distance of x into the zone; the zone holds x where g > 0
+      auto g = [&](const T &u) { return z > 0 ? x - st.b1(u) : -st.b2(u) - x; };
+      const T g0 = g(T(0)), g1 = g(T(1));
+      if (!(g0 > 0) && !(g1 > 0)) {
+        // a zone could still pass over x within the step; check the middle
+        if (!(g(T(0.5)) > 0)) continue;
+      }
+      // sub-interval where g > 0: find crossings by bisection
+      auto cross = [&](T lo, T hi) {  // g(lo) and g(hi) of opposite signs
+        const bool plo = g(lo) > 0;
+        for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
+          const T m = (lo + hi) / 2;
+          if ((g(m) > 0) == plo) lo = m; else hi = m;
+        }
+        return (lo + hi) / 2;
+      };
+      T ua = 0, ub = 1;
+      const bool in0 = g0 > 0, in1 = g1 > 0;
+      if (!in0 && in1) ua = cross(T(0), T(1));
+      else if (in0 && !in1) ub = cross(T(0), T(1));
+      else if (!in0 && !in1) { ua = cross(T(0), T(0.5)); ub = cross(T(0.5), T(1)); }
+      auto rate = [&](const T &u) {
+        const T b1 = st.b1(u), b2 = st.b2(u);
+        return hdot(z, A, B, (b1 - b2) / 2, (b1 + b2) / 2, x);
+      };
+      // hdot ~ sqrt(g) at a crossing: u = end + (other - end) w^2 at each crossing end
+      const auto rule = gauss_legendre<T>(opt_.order);
+      const bool sa = ua > 0, sb = ub < 1;
+      const T mid = (ua + ub) / 2;
+      auto piece = [&](const T &from, const T &to, bool sing_from) {
+        T s = 0;
+        for (size_t j = 0; j < rule->x.size(); ++j) {
+          const T w = (1 + rule->x[j]) / 2, ww = rule->w[j] / 2;
+          if (sing_from) s += ww * 2 * w * (to - from) * rate(from + (to - from) * w * w);
+          else s += ww * (to - from) * rate(from + (to - from) * w);
+        }
+        return s;
+      };
+      if (sa || sb) h += piece(ua, mid, sa) - piece(ub, mid, sb);
+      else h += piece(ua, ub, false);
+    }
+    return h;
+  }
+};
+
+}}  // namespace hs::core
