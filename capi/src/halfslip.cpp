@@ -44,19 +44,7 @@ struct hs_ref_solution {
 
 namespace {
 
-// The exception firewall: every extern "C" body goes through here.
-template <class F> int guard(F &&body) noexcept {
-  try {
-    body();
-    return HS_OK;
-  } catch (const core::error &e) {
-    return int(e.code());
-  } catch (const std::bad_alloc &) {
-    return HS_ERR_OUT_OF_MEMORY;
-  } catch (...) {
-    return HS_ERR_INTERNAL;
-  }
-}
+using hs::capi::guard;
 
 using hs::capi::require;
 
@@ -135,6 +123,71 @@ int eval_points(const hs_solution *sol, size_t n, const double *x, double *out, 
 }
 
 }  // namespace
+
+namespace hs { namespace capi {
+
+// The pressure model of a geometry (not Hertz) and the canonical scene: a, f,
+// E*, loads from the scene; p0 from the scene, or from the pressure for samples
+// and callbacks.
+std::shared_ptr<const core::pressure_model<double>> pressure_of_geometry(const hs_scene &scn, const hs_geometry &g,
+                                                                         core::general_scene<double> &sc) {
+  const hs_scene *scene = &scn;
+  const hs_geometry *geometry = &g;
+  std::shared_ptr<const core::pressure_model<double>> model;
+  require(scene->struct_size == sizeof(hs_scene), core::status::struct_size, "scene struct_size");
+  sc.a = scene->a;
+  sc.p0 = scene->p0;
+  sc.f = scene->f;
+  sc.Estar = scene->E_star;
+  sc.q = scene->Q_over_fP;
+  sc.s = scene->sigma_over_fp0;
+  require(std::isfinite(sc.a) && sc.a > 0, std::isfinite(sc.a) ? core::status::bad_size : core::status::not_finite,
+          "contact half-width a must be finite and > 0");
+  switch (geometry->kind) {
+    case HS_GEOMETRY_FLAT_ROUNDED:
+      require(std::isfinite(geometry->flat_over_a), core::status::not_finite, "flat_over_a is not finite");
+      model = std::make_shared<core::flat_rounded_pressure<double>>(geometry->flat_over_a);
+      break;
+    case HS_GEOMETRY_POWER_LAW:
+      require(std::isfinite(geometry->exponent), core::status::not_finite, "exponent is not finite");
+      model = std::make_shared<core::power_law_pressure<double>>(geometry->exponent);
+      break;
+    case HS_GEOMETRY_SAMPLES: {
+      require(geometry->sample_x != nullptr && geometry->sample_p != nullptr, core::status::null_pointer,
+              "sample arrays are NULL");
+      require(geometry->n_samples >= 6 && geometry->n_samples <= 10000000, core::status::bad_geometry,
+              "need at least 6 pressure samples");
+      std::vector<double> xs(geometry->sample_x, geometry->sample_x + geometry->n_samples);
+      std::vector<double> ps(geometry->sample_p, geometry->sample_p + geometry->n_samples);
+      for (size_t i = 0; i < xs.size(); ++i)
+        require(std::isfinite(xs[i]) && std::isfinite(ps[i]), core::status::not_finite, "sample is not finite");
+      auto m = std::make_shared<core::sampled_pressure<double>>(xs, ps, sc.a);
+      sc.p0 = m->p0();
+      model = m;
+      break;
+    }
+    case HS_GEOMETRY_CALLBACK: {
+      require(geometry->pressure != nullptr, core::status::null_pointer, "pressure callback is NULL");
+      double (*fn)(double, void *) = geometry->pressure;
+      void *user = geometry->user;
+      auto m = std::make_shared<core::callback_pressure<double>>(
+          [fn, user](const double &x) {
+            const double v = fn(x, user);
+            if (!std::isfinite(v)) throw core::error(core::status::not_finite, "pressure callback returned NaN/Inf");
+            return v;
+          },
+          sc.a);
+      sc.p0 = m->p0();
+      model = m;
+      break;
+    }
+    default:
+      throw core::error(core::status::bad_geometry, "unknown geometry");
+  }
+  return model;
+}
+
+}}  // namespace hs::capi
 
 extern "C" {
 
@@ -364,60 +417,11 @@ int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const 
       if (st != HS_OK) throw core::error(core::status(st), "hertz");
       return;
     }
-    require(scene->struct_size == sizeof(hs_scene), core::status::struct_size, "scene struct_size");
     core::general_scene<double> sc;
-    sc.a = scene->a;
-    sc.p0 = scene->p0;
-    sc.f = scene->f;
-    sc.Estar = scene->E_star;
-    sc.q = scene->Q_over_fP;
-    sc.s = scene->sigma_over_fp0;
-    require(std::isfinite(sc.a) && sc.a > 0, std::isfinite(sc.a) ? core::status::bad_size : core::status::not_finite,
-            "contact half-width a must be finite and > 0");
     const auto req = read_options(opts);
     auto h = std::make_unique<hs_solution>();
     hs::capi::reference_input ref;
-    switch (geometry->kind) {
-      case HS_GEOMETRY_FLAT_ROUNDED:
-        require(std::isfinite(geometry->flat_over_a), core::status::not_finite, "flat_over_a is not finite");
-        h->model = std::make_shared<core::flat_rounded_pressure<double>>(geometry->flat_over_a);
-        break;
-      case HS_GEOMETRY_POWER_LAW:
-        require(std::isfinite(geometry->exponent), core::status::not_finite, "exponent is not finite");
-        h->model = std::make_shared<core::power_law_pressure<double>>(geometry->exponent);
-        break;
-      case HS_GEOMETRY_SAMPLES: {
-        require(geometry->sample_x != nullptr && geometry->sample_p != nullptr, core::status::null_pointer,
-                "sample arrays are NULL");
-        require(geometry->n_samples >= 6 && geometry->n_samples <= 10000000, core::status::bad_geometry,
-                "need at least 6 pressure samples");
-        std::vector<double> xs(geometry->sample_x, geometry->sample_x + geometry->n_samples);
-        std::vector<double> ps(geometry->sample_p, geometry->sample_p + geometry->n_samples);
-        for (size_t i = 0; i < xs.size(); ++i)
-          require(std::isfinite(xs[i]) && std::isfinite(ps[i]), core::status::not_finite, "sample is not finite");
-        auto m = std::make_shared<core::sampled_pressure<double>>(xs, ps, sc.a);
-        sc.p0 = m->p0();
-        h->model = m;
-        break;
-      }
-      case HS_GEOMETRY_CALLBACK: {
-        require(geometry->pressure != nullptr, core::status::null_pointer, "pressure callback is NULL");
-        double (*fn)(double, void *) = geometry->pressure;
-        void *user = geometry->user;
-        auto m = std::make_shared<core::callback_pressure<double>>(
-            [fn, user](const double &x) {
-              const double v = fn(x, user);
-              if (!std::isfinite(v)) throw core::error(core::status::not_finite, "pressure callback returned NaN/Inf");
-              return v;
-            },
-            sc.a);
-        sc.p0 = m->p0();
-        h->model = m;
-        break;
-      }
-      default:
-        throw core::error(core::status::bad_geometry, "unknown geometry");
-    }
+    h->model = hs::capi::pressure_of_geometry(*scene, *geometry, sc);
     if ((req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) &&
         (geometry->kind == HS_GEOMETRY_FLAT_ROUNDED || geometry->kind == HS_GEOMETRY_POWER_LAW)) {
       ref = reference_of(sc);

@@ -2,6 +2,7 @@
 // (model selection by tolerance, docs/models.md). Not installed.
 #pragma once
 #include <memory>
+#include <new>
 #include <string>
 
 #include "halfslip/core/asymptotic.hpp"
@@ -11,6 +12,20 @@
 #include "halfslip/reference/backend.hpp"
 
 namespace hs { namespace capi {
+
+// The exception firewall: every extern "C" body goes through here.
+template <class F> int guard(F &&body) noexcept {
+  try {
+    body();
+    return 0;  // HS_OK
+  } catch (const core::error &e) {
+    return int(e.code());
+  } catch (const std::bad_alloc &) {
+    return int(core::status::out_of_memory);
+  } catch (...) {
+    return int(core::status::internal);
+  }
+}
 
 // Throws the core's error (turned into the status by the ABI's firewall).
 inline void require(bool ok, core::status s, const char *msg) {
@@ -90,6 +105,11 @@ struct reference_input {
 
 // Solve into h (h.model set for non-Hertz geometries; hertz = true for the
 // Hertz geometry, whose pressure model is made on demand).
+// The pressure model of a non-Hertz geometry, filling the canonical scene (halfslip.cpp).
+std::shared_ptr<const core::pressure_model<double>> pressure_of_geometry(const hs_scene &scene,
+                                                                         const hs_geometry &geometry,
+                                                                         core::general_scene<double> &sc);
+
 void solve_models(hs_solution &h, bool hertz, const core::general_scene<double> &sc, const request &r,
                   const reference_input &ref);
 

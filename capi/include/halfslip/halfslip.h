@@ -327,6 +327,79 @@ HS_EXPORT int hs_ref_value(const hs_ref_solution *sol, int quantity, char *buf, 
 HS_EXPORT int hs_ref_eval(const hs_ref_solution *sol, int what, const char *x, char *buf, size_t size,
                           size_t *needed, int *certified);
 
+
+/* ---- load histories (since 0.4; docs/history.md) ------------------------------
+ * The normal load is applied first and held; then (Q, sigma) moves along
+ * straight segments between vertices, starting from (0, 0). Each vertex
+ * reports the stick zone, the slip direction of each edge zone (0: that edge
+ * does not slip at the vertex) and the energy dissipated in each zone over
+ * the segment that ends there. Locked-in slip, receding and reversing zones
+ * are followed exactly; the path is marched in load steps (max_step). */
+typedef struct hs_history hs_history;
+
+#define HS_RAMP_SIGMA_FIRST 0  /* periodic loading reached by sigma first, then Q (default) */
+#define HS_RAMP_TOGETHER    1  /* both together along a straight line */
+#define HS_RAMP_Q_FIRST     2  /* Q first, then sigma */
+
+typedef struct hs_history_options {
+  size_t struct_size;       /* = sizeof(hs_history_options), set by hs_history_options_default */
+  double max_step;          /* largest load step, in max(|dQ/fP|, |dsigma/fp0|/4); default 1/128 */
+  int max_steps;            /* limit on the total number of steps; default 2000000 */
+  int segments_per_cycle;   /* periodic loading with Q and sigma out of phase: chords per cycle (default 64) */
+  int ramp_order;           /* HS_RAMP_*: how the periodic loading is reached from zero */
+  double steady_rtol;       /* cycles are steady when the zone ends and energies repeat to this (default 1e-9) */
+} hs_history_options;
+
+HS_EXPORT int hs_history_options_default(hs_history_options *opts);
+/* A new history of the scene's contact (a, p0, f, E*; its Q/fP and sigma/fp0 are
+ * ignored). geometry: NULL for the scene's Hertz contact, or any hs_geometry. */
+HS_EXPORT int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_history_options *opts,
+                             hs_history **out);
+HS_EXPORT void hs_history_free(hs_history *h);  /* NULL is a no-op */
+/* Append n vertices (Q/fP, sigma/fp0) and march to them. On error the history
+ * keeps the vertices reached before the failing one. */
+HS_EXPORT int hs_history_add_vertices(hs_history *h, size_t n, const double *Q_over_fP,
+                                      const double *sigma_over_fp0);
+/* Periodic loading Q(t) = Qm + Qa sin(wt), sigma(t) = Sm + Sa sin(wt + phase),
+ * reached from the current state by opts->ramp_order, then `cycles` cycles. */
+HS_EXPORT int hs_history_add_cycles(hs_history *h, double Qm_over_fP, double Qa_over_fP, double Sm_over_fp0,
+                                    double Sa_over_fp0, double phase_deg, int cycles);
+HS_EXPORT int hs_history_vertex_count(const hs_history *h, size_t *n);
+
+typedef struct hs_history_vertex {
+  size_t struct_size;       /* = sizeof(hs_history_vertex) */
+  double Q_over_fP, sigma_over_fp0;
+  double b1, b2;            /* stick zone (-b2, b1), units of length */
+  int slip_dir1, slip_dir2; /* +1, -1, or 0 where that edge is not slipping at the vertex */
+  double energy1, energy2;  /* dissipated in zone 1 (x > b1) and zone 2 over the segment ending here */
+  int cycle;                /* 0: path or ramp; k >= 1: the k-th cycle of hs_history_add_cycles */
+  long steps;               /* load steps marched up to this vertex */
+} hs_history_vertex;
+HS_EXPORT int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out);
+
+#define HS_FIELD_TRACTION 1  /* shear traction q(x) */
+#define HS_FIELD_SLIP     2  /* accumulated slip h(x), locked-in slip included */
+/* Field at n points |x| <= a in the state after vertex i. */
+HS_EXPORT int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, const double *x,
+                              double *out);
+
+typedef struct hs_cycle_summary {
+  size_t struct_size;          /* = sizeof(hs_cycle_summary) */
+  int cycles;                  /* cycles computed */
+  int cycles_to_steady;        /* first cycle that the next repeats (steady_rtol); -1: not reached */
+  int shakedown;               /* 1: the last cycle dissipates nothing */
+  double energy_per_cycle1;    /* zone 1 over the last cycle */
+  double energy_per_cycle2;
+} hs_cycle_summary;
+HS_EXPORT int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out);
+/* Slip range max h - min h over the vertices of the last cycle, at n points. */
+HS_EXPORT int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double *out);
+
+/* Whether a proportional ramp from zero to the solution's (Q, sigma) would make a
+ * slip zone recede on the way (the monotonic solution then is not the state such a
+ * ramp reaches; docs/history.md), and the Q/fP where that first happens (NaN if not). */
+HS_EXPORT int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at_Q_over_fP);
+
 #ifdef __cplusplus
 }
 #endif

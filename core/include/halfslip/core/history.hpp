@@ -60,6 +60,7 @@ template <class T> struct history_vertex {
   int dir1 = 0, dir2 = 0;  // slip direction of each edge zone at the vertex (0: stuck)
   T energy1{0}, energy2{0};  // dissipated over the segment that ends here
   size_t step_end = 0;       // number of steps up to this vertex
+  int cycle = 0;             // 0: path; k >= 1: k-th cycle of add_cycles
 };
 
 namespace hdetail {
@@ -233,6 +234,9 @@ template <class T> class history {
   }
 
   const std::vector<history_vertex<T>> &vertices() const { return vertices_; }
+  void tag_last_vertex(int cycle) { vertices_.back().cycle = cycle; }
+  T q() const { return q_; }
+  T s() const { return s_; }
   const std::vector<history_step<T>> &steps() const { return steps_; }
   const pressure_model<T> &pressure() const { return *pm_; }
 
@@ -783,5 +787,107 @@ template <class T> class history {
     return h;
   }
 };
+
+
+enum class ramp_order { sigma_first = 0, together = 1, q_first = 2 };
+
+template <class T> struct cycle_result {
+  int cycles = 0;
+  int cycles_to_steady = -1;  // first cycle that the next repeats; -1: not reached
+  bool shakedown = false;     // the last cycle dissipates nothing
+  T energy1{0}, energy2{0};   // over the last cycle
+  size_t last_cycle_first = 0, last_cycle_end = 0;  // vertex range [first - 1, end) of the last cycle
+};
+
+// Periodic loading q(t) = qm + qa sin(wt), s(t) = sm + sa sin(wt + phase),
+// reached from the current state (ramp order), then `cycles` cycles. A cycle
+// that traces a straight line (in phase, or one amplitude zero) is marched
+// through its turning points exactly; otherwise by `segments` chords.
+template <class T>
+cycle_result<T> add_cycles(history<T> &h, const T &qm, const T &qa, const T &sm, const T &sa, const T &phase_deg,
+                           int cycles, ramp_order order, int segments, const T &steady_rtol) {
+  using std::abs; using std::fmod; using std::max; using std::sin;
+  using boost::math::isfinite;
+  if (!isfinite(qm) || !isfinite(qa) || !isfinite(sm) || !isfinite(sa) || !isfinite(phase_deg))
+    throw error(status::not_finite, "cycles: a parameter is not finite");
+  if (cycles < 1 || cycles > 100000) throw error(status::bad_option, "cycles: need 1 <= cycles <= 100000");
+  if (segments < 4 || segments > 100000) throw error(status::bad_option, "cycles: segments per cycle out of 4..100000");
+  if (!(abs(qm) + abs(qa) < 1)) throw error(status::gross_sliding, "cycles: |Qm| + |Qa| >= fP: gross sliding");
+  const T pi_ = pi<T>();
+  const T ph = phase_deg * pi_ / 180;
+  auto at = [&](const T &th, T &q, T &s) {
+    q = qm + qa * sin(th);
+    s = sm + sa * sin(th + ph);
+  };
+  T q0, s0;
+  at(T(0), q0, s0);
+  auto go = [&](const T &q, const T &s) {
+    if (q != h.q() || s != h.s()) h.add_vertex(q, s);
+  };
+  if (order == ramp_order::sigma_first) { go(h.q(), s0); go(q0, s0); }
+  else if (order == ramp_order::q_first) { go(q0, h.s()); go(q0, s0); }
+  else go(q0, s0);
+  // straight-line cycle: the phase is a multiple of 180 degrees or one amplitude is zero
+  const T pm = fmod(abs(phase_deg), T(180));
+  const bool line = qa == 0 || sa == 0 || pm == 0;
+  std::vector<T> ths;
+  if (line) {
+    // turning points of sin(th) (and of sin(th + ph) = +-sin th)
+    ths = {pi_ / 2, 3 * pi_ / 2, 2 * pi_};
+  } else {
+    for (int k = 1; k <= segments; ++k) ths.push_back(2 * pi_ * T(k) / T(segments));
+  }
+  cycle_result<T> res;
+  T pE1 = -1, pE2 = -1, pb1 = -1, pb2 = -1;
+  for (int c = 1; c <= cycles; ++c) {
+    const size_t first = h.vertices().size();
+    T E1 = 0, E2 = 0;
+    for (const T &th : ths) {
+      T q, s;
+      at(th, q, s);
+      h.add_vertex(q, s);
+      h.tag_last_vertex(c);
+      E1 += h.vertices().back().energy1;
+      E2 += h.vertices().back().energy2;
+    }
+    const auto &v = h.vertices().back();
+    res.cycles = c;
+    res.energy1 = E1;
+    res.energy2 = E2;
+    res.last_cycle_first = first;
+    res.last_cycle_end = h.vertices().size();
+    if (c > 1 && res.cycles_to_steady < 0) {
+      const T scale = max(max(abs(E1), abs(E2)), max(abs(pE1), abs(pE2)));
+      const bool same = abs(E1 - pE1) <= steady_rtol * scale + 64 * eps<T>() * scale &&
+                        abs(E2 - pE2) <= steady_rtol * scale + 64 * eps<T>() * scale &&
+                        abs(v.b1 - pb1) <= steady_rtol && abs(v.b2 - pb2) <= steady_rtol;
+      if (same) res.cycles_to_steady = c - 1;
+    }
+    pE1 = E1; pE2 = E2; pb1 = v.b1; pb2 = v.b2;
+  }
+  res.shakedown = !(res.energy1 > 0) && !(res.energy2 > 0);
+  return res;
+}
+
+// Along the proportional ramp t (q, s), t in (0, 1], zone i recedes once the
+// stick half-width e(t) falls to 2/lambda, lambda = |s/q| > 2 (r_i = 0; see
+// the top of this file). e_of(q', s') is the monotonic stick half-width.
+// Returns true and the q where it first happens (bisection on t; e decreases
+// along the ramp).
+template <class T, class EOf> bool ramp_recedes(const T &q, const T &s, const EOf &e_of, T &at_q) {
+  using std::abs;
+  if (q == 0 || s == 0) return false;
+  const T lam = abs(s / q);
+  if (!(lam > 2)) return false;
+  const T target = 2 / lam;
+  if (e_of(q, s) > target) return false;
+  T lo = 0, hi = 1;  // e(lo) > target >= e(hi)
+  for (int it = 0; it < 200 && hi - lo > 2 * eps<T>(); ++it) {
+    const T mid = (lo + hi) / 2;
+    if (e_of(mid * q, mid * s) > target) lo = mid; else hi = mid;
+  }
+  at_q = hi * q;
+  return true;
+}
 
 }}  // namespace hs::core

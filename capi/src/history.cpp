@@ -1,0 +1,227 @@
+// halfslip C ABI: load histories (issue #14). Thin shims over
+// core/history.hpp: convert units, check struct_size, catch exceptions.
+#include <halfslip/halfslip.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "halfslip/core/history.hpp"
+#include "solution.hpp"
+
+namespace core = hs::core;
+using hs::capi::guard;
+using hs::capi::require;
+
+struct hs_history {
+  core::general_scene<double> scene;  // a, p0, f, E* (loads unused)
+  hs_history_options opts;
+  std::unique_ptr<core::history<double>> h;
+  core::cycle_result<double> cycles;
+  bool has_cycles = false;
+};
+
+namespace {
+
+void check_finite_positive(double v, const char *what) {
+  require(std::isfinite(v), core::status::not_finite, what);
+  require(v > 0, core::status::bad_size, what);
+}
+
+}  // namespace
+
+int hs_history_options_default(hs_history_options *o) {
+  return guard([&] {
+    require(o != nullptr, core::status::null_pointer, "NULL options");
+    o->struct_size = sizeof *o;
+    o->max_step = 1.0 / 128;
+    o->max_steps = 2000000;
+    o->segments_per_cycle = 64;
+    o->ramp_order = HS_RAMP_SIGMA_FIRST;
+    o->steady_rtol = 1e-9;
+  });
+}
+
+int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_history_options *opts,
+                   hs_history **out) {
+  return guard([&] {
+    require(scene != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
+    require(scene->struct_size == sizeof(hs_scene), core::status::struct_size, "scene struct_size");
+    auto r = std::make_unique<hs_history>();
+    hs_history_options_default(&r->opts);
+    if (opts) {
+      require(opts->struct_size == sizeof(hs_history_options), core::status::struct_size, "options struct_size");
+      r->opts = *opts;
+    }
+    const auto &o = r->opts;
+    require(std::isfinite(o.max_step) && o.max_step > 0 && o.max_step <= 1, core::status::bad_option,
+            "max_step must be in (0, 1]");
+    require(o.max_steps >= 1, core::status::bad_option, "max_steps must be >= 1");
+    require(o.segments_per_cycle >= 4 && o.segments_per_cycle <= 100000, core::status::bad_option,
+            "segments_per_cycle must be in 4..100000");
+    require(o.ramp_order >= HS_RAMP_SIGMA_FIRST && o.ramp_order <= HS_RAMP_Q_FIRST, core::status::bad_option,
+            "ramp_order");
+    require(std::isfinite(o.steady_rtol) && o.steady_rtol >= 0, core::status::bad_option, "steady_rtol");
+    std::shared_ptr<const core::pressure_model<double>> pm;
+    if (geometry == nullptr || geometry->kind == HS_GEOMETRY_HERTZ) {
+      if (geometry) require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry");
+      require(scene->geometry == HS_GEOMETRY_HERTZ || geometry != nullptr, core::status::bad_geometry,
+              "scene geometry: pass an hs_geometry for non-Hertz contacts");
+      r->scene.a = scene->a;
+      r->scene.p0 = scene->p0;
+      r->scene.f = scene->f;
+      r->scene.Estar = scene->E_star;
+      pm = std::make_shared<core::hertz_pressure<double>>();
+    } else {
+      require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry struct_size");
+      pm = hs::capi::pressure_of_geometry(*scene, *geometry, r->scene);
+    }
+    check_finite_positive(r->scene.a, "a");
+    check_finite_positive(r->scene.p0, "p0");
+    check_finite_positive(r->scene.Estar, "E*");
+    require(std::isfinite(r->scene.f), core::status::not_finite, "f");
+    require(r->scene.f > 0, core::status::bad_friction, "f");
+    core::history_options<double> ho;
+    ho.max_step = o.max_step;
+    ho.max_steps = o.max_steps;
+    r->h = std::make_unique<core::history<double>>(pm, ho);
+    *out = r.release();
+  });
+}
+
+void hs_history_free(hs_history *h) { delete h; }
+
+int hs_history_add_vertices(hs_history *h, size_t n, const double *q, const double *s) {
+  return guard([&] {
+    require(h != nullptr && (n == 0 || (q != nullptr && s != nullptr)), core::status::null_pointer, "NULL");
+    for (size_t i = 0; i < n; ++i) h->h->add_vertex(q[i], s[i]);
+  });
+}
+
+int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double sa, double phase_deg, int cycles) {
+  return guard([&] {
+    require(h != nullptr, core::status::null_pointer, "NULL history");
+    h->cycles = core::add_cycles<double>(*h->h, qm, qa, sm, sa, phase_deg, cycles,
+                                         core::ramp_order(h->opts.ramp_order), h->opts.segments_per_cycle,
+                                         h->opts.steady_rtol);
+    h->has_cycles = true;
+  });
+}
+
+int hs_history_vertex_count(const hs_history *h, size_t *n) {
+  return guard([&] {
+    require(h != nullptr && n != nullptr, core::status::null_pointer, "NULL");
+    *n = h->h->vertices().size();
+  });
+}
+
+int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out) {
+  return guard([&] {
+    require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
+    require(out->struct_size == sizeof *out, core::status::struct_size, "vertex struct_size");
+    require(i < h->h->vertices().size(), core::status::bad_option, "vertex index out of range");
+    const auto &v = h->h->vertices()[i];
+    const auto &sc = h->scene;
+    const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
+    out->Q_over_fP = v.q;
+    out->sigma_over_fp0 = v.s;
+    out->b1 = sc.a * v.b1;
+    out->b2 = sc.a * v.b2;
+    out->slip_dir1 = v.dir1;
+    out->slip_dir2 = v.dir2;
+    out->energy1 = escale * v.energy1;
+    out->energy2 = escale * v.energy2;
+    out->cycle = v.cycle;
+    out->steps = long(v.step_end);
+  });
+}
+
+namespace {
+
+double field_at(const hs_history &h, size_t nsteps, int field, double x) {
+  const auto &sc = h.scene;
+  require(std::isfinite(x), core::status::not_finite, "x");
+  require(std::fabs(x) <= sc.a, core::status::point_outside, "x outside the contact");
+  const double xi = x / sc.a;
+  if (field == HS_FIELD_TRACTION) return sc.f * sc.p0 * h.h->traction(xi, nsteps);
+  return sc.f * sc.p0 * sc.a / sc.Estar * h.h->slip(xi, nsteps);
+}
+
+}  // namespace
+
+int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, const double *x, double *out) {
+  return guard([&] {
+    require(h != nullptr && (n == 0 || (x != nullptr && out != nullptr)), core::status::null_pointer, "NULL");
+    require(vertex < h->h->vertices().size(), core::status::bad_option, "vertex index out of range");
+    require(field == HS_FIELD_TRACTION || field == HS_FIELD_SLIP, core::status::bad_option, "field");
+    std::vector<double> tmp(n);
+    const size_t ns = h->h->vertices()[vertex].step_end;
+    for (size_t i = 0; i < n; ++i) tmp[i] = field_at(*h, ns, field, x[i]);
+    std::copy(tmp.begin(), tmp.end(), out);
+  });
+}
+
+int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out) {
+  return guard([&] {
+    require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
+    require(out->struct_size == sizeof *out, core::status::struct_size, "summary struct_size");
+    require(h->has_cycles, core::status::not_applicable, "no periodic loading in this history");
+    const auto &sc = h->scene;
+    const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
+    out->cycles = h->cycles.cycles;
+    out->cycles_to_steady = h->cycles.cycles_to_steady;
+    out->shakedown = h->cycles.shakedown ? 1 : 0;
+    out->energy_per_cycle1 = escale * h->cycles.energy1;
+    out->energy_per_cycle2 = escale * h->cycles.energy2;
+  });
+}
+
+int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double *out) {
+  return guard([&] {
+    require(h != nullptr && (n == 0 || (x != nullptr && out != nullptr)), core::status::null_pointer, "NULL");
+    require(h->has_cycles, core::status::not_applicable, "no periodic loading in this history");
+    const auto &c = h->cycles;
+    const auto &vs = h->h->vertices();
+    std::vector<double> tmp(n);
+    for (size_t i = 0; i < n; ++i) {
+      double lo = 0, hi = 0;
+      bool first = true;
+      for (size_t k = c.last_cycle_first - 1; k < c.last_cycle_end; ++k) {
+        const double v = field_at(*h, vs[k].step_end, HS_FIELD_SLIP, x[i]);
+        if (first || v < lo) lo = v;
+        if (first || v > hi) hi = v;
+        first = false;
+      }
+      tmp[i] = hi - lo;
+    }
+    std::copy(tmp.begin(), tmp.end(), out);
+  });
+}
+
+int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
+  return guard([&] {
+    require(sol != nullptr && recedes != nullptr && at != nullptr, core::status::null_pointer, "NULL");
+    const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
+    const double s = sol->visit([](const auto &v) { return double(v.scene.s); });
+    double where = std::numeric_limits<double>::quiet_NaN();
+    bool r = false;
+    if (sol->model && !sol->hertz) {
+      const auto &pm = *sol->model;
+      core::general_scene<double> g;
+      g.a = 1; g.p0 = 1; g.f = 1; g.Estar = 1;
+      r = core::ramp_recedes<double>(q, s, [&](double qq, double ss) {
+        g.q = qq; g.s = ss;
+        return core::solve_general<double>(pm, g).half_width();
+      }, where);
+    } else {
+      core::hertz_scene<double> hz;
+      r = core::ramp_recedes<double>(q, s, [&](double qq, double ss) {
+        hz.q = qq; hz.s = ss;
+        return core::solve_hertz<double>(hz).half_width();
+      }, where);
+    }
+    *recedes = r ? 1 : 0;
+    *at = r ? where : std::numeric_limits<double>::quiet_NaN();
+  });
+}
