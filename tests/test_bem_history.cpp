@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -263,4 +264,14 @@ TEST_CASE("bem oracle: non-proportional cycle reaches a steady cyclic state") {
   // the first segment is monotonic loading from zero, so it dissipates in the direction of Q
   CHECK(r[0].dir1 == 1);
   CHECK(r[0].dir2 == 1);
+}
+
+TEST_CASE("bem oracle: failures are reported") {
+  bem::options o;
+  o.nodes = 50;
+  o.max_iterations = 1;  // loading from the stuck state needs at least one switch
+  CHECK_THROWS_AS(bem::run(hertz, {{0.5, 0.0}}, o), std::runtime_error);
+  CHECK_THROWS_AS(bem::run(hertz, {{1.0, 0.0}}, bem::options()), std::invalid_argument);
+  o.nodes = 2;
+  CHECK_THROWS_AS(bem::run(hertz, {{0.5, 0.0}}, o), std::invalid_argument);
 }
