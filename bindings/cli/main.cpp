@@ -54,6 +54,21 @@ const char *kUsage =
     "  --shard K/N writes the K-th of N contiguous blocks of rows; the N outputs\n"
     "  concatenated in order equal the unsharded output (CSV header in shard 1 only).\n"
     "\n"
+    "usage: halfslip history (--path \"Q1,S1;Q2,S2;...\" | --cycle Qm,Qa,Sm,Sa,phase_deg [--cycles N]) [options]\n"
+    "  Load history at constant normal load (docs/history.md): from (0, 0), (Q, sigma) moves along\n"
+    "  straight segments to each vertex; or periodic Q = Qm + Qa sin wt, sigma = Sm + Sa sin(wt + phase).\n"
+    "  Loads are ratios Q/fP, sigma/(f p0), or forces per unit length and stresses with the dimensional\n"
+    "  options (--P --R --E-star --f; no --Q/--sigma). Geometry and scale options as for solve.\n"
+    "  --cycles N              number of cycles (default 10)\n"
+    "  --ramp R                how the cycle is reached from zero: sigma-first (default), together, q-first\n"
+    "  --segments-per-cycle M  chords per cycle when Q and sigma are out of phase (default 64)\n"
+    "  --max-step H            first load step in max(|dQ/fP|, |dsigma/fp0|/4) (default 1/32)\n"
+    "  --rtol R                halve the step until steps h and 2h agree to R (default 1e-8; 0: fixed)\n"
+    "  --steady-rtol R         steady when zone ends and energies repeat to R (default 1e-9)\n"
+    "  --points N              q(x) and slip h(x) at N points across the contact (and the slip range)\n"
+    "  --json                  one object: vertices (b1, b2, slip_dir1/2, energy1/2 per segment),\n"
+    "                          cycles_to_steady, energy_per_cycle1/2\n"
+    "\n"
     "usage: halfslip asymptotic-error --loading shear|bulk --b-over-a X [--json]\n"
     "  Energy dissipated in one slip zone: asymptotic edge model vs full Hertz solution\n"
     "  at the same load (the load that gives slip zone b/a in the full solution).\n";
@@ -309,31 +324,17 @@ const char *model_name(int m) {
   }
 }
 
-int cmd_solve(int argc, char **argv) {
-  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json"});
+// The scene and geometry of the solve/history options (geometry, sizes, loads);
+// sx, sp hold the samples of --pressure-file. With `loads` false, the load
+// options are not part of the command (history: the path gives them).
+void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::vector<double> &sx,
+                     std::vector<double> &sp, bool loads = true) {
   auto get = [&](const char *k, double def) {
     return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
   };
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
-  // --rtol below double's rounding: the reference backend at that many digits
-  double rtol = 0;
-  if (args.count("--rtol")) {
-    rtol = get("--rtol", 0);
-    if (!(rtol > 0 && rtol <= 0.5)) die("bad value for --rtol: must lie in (0, 0.5]");
-    if (rtol < std::ldexp(1.0, -53) && !args.count("--digits")) {
-      if (args.count("--model")) die("--rtol below 1.1e-16 needs the reference backend: drop --model");
-      const int digits = int(std::ceil(-std::log10(rtol)));
-      if (digits > hs_ref_max_digits()) die("bad value for --rtol: beyond the reference backend's digits");
-      return solve_reference(args, digits);
-    }
-  }
-  if (args.count("--digits")) {
-    return solve_reference(args, parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()));
-  }
-  const bool json = args.count("--json") > 0;
-  hs_geometry geo;
   hs_geometry_default(&geo);
-  std::vector<double> sx, sp;
+  hs_scene_default(&scene);
   if (geometry == "flat-rounded") {
     geo.kind = HS_GEOMETRY_FLAT_ROUNDED;
     if (args.count("--flat-over-a")) geo.flat_over_a = get("--flat-over-a", 0.5);
@@ -354,8 +355,6 @@ int cmd_solve(int argc, char **argv) {
     if (args.count(k) && geometry != "flat-rounded") die(std::string(k) + " needs --geometry flat-rounded");
   if (args.count("--exponent") && geometry != "power-law") die("--exponent needs --geometry power-law");
   if (args.count("--pressure-file") && geometry != "samples") die("--pressure-file needs --geometry samples");
-  hs_scene scene;
-  hs_scene_default(&scene);
   if (is_dimensional(args)) {
     // dimensional input: P, E*, f, Q, sigma and the geometry's size parameters
     // (hertz: R; flat-rounded: corner radius R and --flat-width b_f; power-law: --A, --exponent n)
@@ -363,7 +362,7 @@ int cmd_solve(int argc, char **argv) {
     if (geometry != "hertz" && geometry != "flat-rounded" && !pl)
       die("dimensional input (--P ...) is available for hertz, flat-rounded and power-law");
     for (const char *k : {"--P", "--E-star", "--f", "--Q", "--sigma", pl ? "--A" : "--R"})
-      if (!args.count(k))
+      if (!args.count(k) && (loads || (std::strcmp(k, "--Q") != 0 && std::strcmp(k, "--sigma") != 0)))
         die(std::string("dimensional input needs ") + k +
             (pl ? " (give --P --A --exponent --E-star --f --Q --sigma)" : " (give --P --R --E-star --f --Q --sigma)"));
     for (const char *k : {"--Q-over-fP", "--sigma-over-fp0", "--a", "--p0"})
@@ -395,8 +394,8 @@ int cmd_solve(int argc, char **argv) {
       }
     }
   } else {
-    scene.Q_over_fP = get("--Q-over-fP", 0.5);
-    scene.sigma_over_fp0 = get("--sigma-over-fp0", 0.5);
+    scene.Q_over_fP = loads ? get("--Q-over-fP", 0.5) : 0.0;
+    scene.sigma_over_fp0 = loads ? get("--sigma-over-fp0", 0.5) : 0.0;
     scene.a = get("--a", 1.0);
     scene.p0 = get("--p0", 1.0);
     scene.f = get("--f", 1.0);
@@ -407,6 +406,34 @@ int cmd_solve(int argc, char **argv) {
     if (!(scene.f > 0)) die("bad value for --f: must be > 0");
     if (!(scene.E_star > 0)) die("bad value for --E-star: must be > 0");
   }
+}
+
+int cmd_solve(int argc, char **argv) {
+  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json"});
+  auto get = [&](const char *k, double def) {
+    return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
+  };
+  const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
+  // --rtol below double's rounding: the reference backend at that many digits
+  double rtol = 0;
+  if (args.count("--rtol")) {
+    rtol = get("--rtol", 0);
+    if (!(rtol > 0 && rtol <= 0.5)) die("bad value for --rtol: must lie in (0, 0.5]");
+    if (rtol < std::ldexp(1.0, -53) && !args.count("--digits")) {
+      if (args.count("--model")) die("--rtol below 1.1e-16 needs the reference backend: drop --model");
+      const int digits = int(std::ceil(-std::log10(rtol)));
+      if (digits > hs_ref_max_digits()) die("bad value for --rtol: beyond the reference backend's digits");
+      return solve_reference(args, digits);
+    }
+  }
+  if (args.count("--digits")) {
+    return solve_reference(args, parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()));
+  }
+  const bool json = args.count("--json") > 0;
+  hs_geometry geo;
+  hs_scene scene;
+  std::vector<double> sx, sp;
+  scene_from_args(args, scene, geo, sx, sp);
   const int npts = args.count("--points") ? parse_int("--points", args.at("--points"), 0, 100000) : 0;
   hs_options opts;
   hs_options_default(&opts);
@@ -447,6 +474,9 @@ int cmd_solve(int argc, char **argv) {
     check(hs_eval_work(sol, xs.size(), xs.data(), W.data()), "work");
   }
   const double P = M_PI * sm.a * sm.p0 / 2;
+  int recedes = 0;
+  double recedes_at = 0;
+  check(hs_solution_ramp(sol, &recedes, &recedes_at), "ramp");
 
   if (json) {
     std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "
@@ -460,6 +490,8 @@ int cmd_solve(int argc, char **argv) {
                 sm.iterations);
     std::printf(", \"quadrature_order\": %d, \"model\": \"%s\", \"error_estimate\": %s", sm.quadrature_order,
                 model_name(sm.model), num(sm.error_estimate).c_str());
+    std::printf(", \"ramp_recedes\": %s, \"ramp_recedes_at_Q_over_fP\": %s", recedes ? "true" : "false",
+                recedes ? num(recedes_at).c_str() : "null");
     if (!xs.empty()) {
       std::printf(", \"points\": [");
       for (size_t i = 0; i < xs.size(); ++i)
@@ -486,6 +518,11 @@ int cmd_solve(int argc, char **argv) {
     if (sm.quadrature_order) std::printf("  (quadrature: Gauss-Legendre order %d per panel)\n", sm.quadrature_order);
     std::printf("model: %s, estimated error %.2g (largest relative error of d1, d2 and the energies)\n",
                 model_name(sm.model), sm.error_estimate);
+    if (recedes)
+      std::printf("note: this is the monotonic state (every slip zone grown from zero). A proportional ramp from\n"
+                  "  zero to this load makes a slip zone recede from Q/fP = %.10g on, and reaches a different\n"
+                  "  state: use 'halfslip history --path \"%.10g,%.10g\"' (docs/history.md).\n",
+                  recedes_at, scene.Q_over_fP, scene.sigma_over_fp0);
     if (!xs.empty()) {
       std::printf("%22s %22s %22s %22s\n", "x", "B_x", "h", "W");
       for (size_t i = 0; i < xs.size(); ++i)
@@ -493,6 +530,182 @@ int cmd_solve(int argc, char **argv) {
     }
   }
   hs_solution_free(sol);
+  return 0;
+}
+
+// ---------------------------------------------------------------- history
+const std::vector<std::string> kHistoryKeys = {"--geometry", "--a", "--p0", "--f", "--E-star", "--P", "--R", "--A",
+                                               "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
+                                               "--path", "--cycle", "--cycles", "--ramp", "--segments-per-cycle",
+                                               "--max-step", "--points", "--steady-rtol", "--rtol"};
+
+// "Q1,S1;Q2,S2;..." -> pairs
+std::vector<std::pair<double, double>> parse_path(const std::string &t) {
+  std::vector<std::pair<double, double>> out;
+  size_t p = 0;
+  while (p <= t.size()) {
+    const size_t q = t.find(';', p);
+    std::string v = t.substr(p, q == std::string::npos ? std::string::npos : q - p);
+    const size_t c = v.find(',');
+    if (c == std::string::npos)
+      die("bad value for --path: vertex " + std::to_string(out.size() + 1) + " '" + v + "' is not 'Q,sigma'");
+    const std::string a = v.substr(0, c), b = v.substr(c + 1);
+    out.emplace_back(parse_number("--path (vertex " + std::to_string(out.size() + 1) + ")", a.c_str()),
+                     parse_number("--path (vertex " + std::to_string(out.size() + 1) + ")", b.c_str()));
+    if (q == std::string::npos) break;
+    p = q + 1;
+  }
+  return out;
+}
+
+int cmd_history(int argc, char **argv) {
+  const Args args = parse_args(argc, argv, 2, kHistoryKeys, {"--json"});
+  const bool json = args.count("--json") > 0;
+  if (args.count("--path") == args.count("--cycle"))
+    die("history needs exactly one of --path \"Q1,S1;Q2,S2;...\" and --cycle Qm,Qa,Sm,Sa,phase_deg");
+  for (const char *k : {"--cycles", "--ramp", "--segments-per-cycle", "--steady-rtol"})
+    if (args.count(k) && !args.count("--cycle")) die(std::string(k) + " needs --cycle");
+  hs_geometry geo;
+  hs_scene scene;
+  std::vector<double> sx, sp;
+  scene_from_args(args, scene, geo, sx, sp, false);
+  const bool dim = is_dimensional(args);
+  const double P = M_PI * scene.a * scene.p0 / 2;
+  // dimensional loads (force per unit length, stress) -> ratios
+  const double qs = dim ? 1 / (scene.f * P) : 1, ss = dim ? 1 / (scene.f * scene.p0) : 1;
+  hs_history_options ho;
+  hs_history_options_default(&ho);
+  if (args.count("--max-step")) ho.max_step = parse_number("--max-step", args.at("--max-step").c_str());
+  if (args.count("--rtol")) ho.rtol = parse_number("--rtol", args.at("--rtol").c_str());
+  if (args.count("--segments-per-cycle"))
+    ho.segments_per_cycle = parse_int("--segments-per-cycle", args.at("--segments-per-cycle"), 4, 100000);
+  if (args.count("--steady-rtol")) ho.steady_rtol = parse_number("--steady-rtol", args.at("--steady-rtol").c_str());
+  if (args.count("--ramp")) {
+    const std::string r = args.at("--ramp");
+    if (r == "sigma-first") ho.ramp_order = HS_RAMP_SIGMA_FIRST;
+    else if (r == "together") ho.ramp_order = HS_RAMP_TOGETHER;
+    else if (r == "q-first") ho.ramp_order = HS_RAMP_Q_FIRST;
+    else die("bad value for --ramp: '" + r + "' (sigma-first, together or q-first)");
+  }
+  hs_history *h = nullptr;
+  check(hs_history_new(&scene, &geo, &ho, &h), "history");
+  bool cyc = false;
+  if (args.count("--path")) {
+    const auto path = parse_path(args.at("--path"));
+    for (size_t i = 0; i < path.size(); ++i) {
+      const double q = path[i].first * qs, s = path[i].second * ss;
+      const int st = hs_history_add_vertices(h, 1, &q, &s);
+      if (st != HS_OK)
+        die("history: vertex " + std::to_string(i + 1) + " (Q/fP = " + num(q) + ", sigma/fp0 = " + num(s) +
+            "): " + hs_strerror(st));
+    }
+  } else {
+    const std::string t = args.at("--cycle");
+    std::vector<double> c;
+    size_t p = 0;
+    while (p <= t.size()) {
+      const size_t q = t.find(',', p);
+      c.push_back(parse_number("--cycle", t.substr(p, q == std::string::npos ? std::string::npos : q - p).c_str()));
+      if (q == std::string::npos) break;
+      p = q + 1;
+    }
+    if (c.size() != 5) die("bad value for --cycle: need Qm,Qa,Sm,Sa,phase_deg (5 numbers)");
+    const int n = args.count("--cycles") ? parse_int("--cycles", args.at("--cycles"), 1, 100000) : 10;
+    check(hs_history_add_cycles(h, c[0] * qs, c[1] * qs, c[2] * ss, c[3] * ss, c[4], n), "history");
+    cyc = true;
+  }
+  size_t nv = 0;
+  check(hs_history_vertex_count(h, &nv), "history");
+  std::vector<hs_history_vertex> vs(nv);
+  for (size_t i = 0; i < nv; ++i) {
+    vs[i].struct_size = sizeof vs[i];
+    check(hs_history_vertex_get(h, i, &vs[i]), "history");
+  }
+  hs_cycle_summary cs;
+  cs.struct_size = sizeof cs;
+  if (cyc) check(hs_history_cycle_summary(h, &cs), "history");
+  const int npts = args.count("--points") ? parse_int("--points", args.at("--points"), 0, 100000) : 0;
+  std::vector<double> xs;
+  for (int i = 0; i < npts; ++i) xs.push_back(npts == 1 ? 0.0 : scene.a * (-1 + 2.0 * i / (npts - 1)));
+  std::vector<double> qv(xs.size()), hv(xs.size()), dh(xs.size());
+  if (cyc && !xs.empty()) check(hs_history_slip_range(h, xs.size(), xs.data(), dh.data()), "slip range");
+  const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
+  if (json) {
+    std::printf("{\"geometry\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, \"E_star\": %s, "
+                "\"rtol\": %s, \"step\": %s, \"error_estimate\": %s, \"vertices\": [",
+                geometry.c_str(), num(scene.a).c_str(), num(scene.p0).c_str(), num(P).c_str(),
+                num(scene.f).c_str(), num(scene.E_star).c_str(), num(ho.rtol).c_str(),
+                num(nv ? vs[nv - 1].step : ho.max_step).c_str(), num(nv ? vs[nv - 1].error_estimate : 0.0).c_str());
+    for (size_t i = 0; i < nv; ++i) {
+      const auto &v = vs[i];
+      std::printf("%s{\"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, \"slip_dir1\": %d, "
+                  "\"slip_dir2\": %d, \"energy1\": %s, \"energy2\": %s, \"cycle\": %d, \"steps\": %ld",
+                  i ? ", " : "", num(v.Q_over_fP).c_str(), num(v.sigma_over_fp0).c_str(), num(v.b1).c_str(),
+                  num(v.b2).c_str(), v.slip_dir1, v.slip_dir2, num(v.energy1).c_str(), num(v.energy2).c_str(),
+                  v.cycle, v.steps);
+      if (i + 1 == nv) std::printf(", \"step\": %s, \"error_estimate\": %s", num(v.step).c_str(), num(v.error_estimate).c_str());
+      if (!xs.empty()) {
+        check(hs_history_eval(h, i, HS_FIELD_TRACTION, xs.size(), xs.data(), qv.data()), "traction");
+        check(hs_history_eval(h, i, HS_FIELD_SLIP, xs.size(), xs.data(), hv.data()), "slip");
+        std::printf(", \"points\": [");
+        for (size_t k = 0; k < xs.size(); ++k)
+          std::printf("%s{\"x\": %s, \"q\": %s, \"h\": %s}", k ? ", " : "", num(xs[k]).c_str(), num(qv[k]).c_str(),
+                      num(hv[k]).c_str());
+        std::printf("]");
+      }
+      std::printf("}");
+    }
+    std::printf("]");
+    if (cyc) {
+      std::printf(", \"cycles\": %d, \"cycles_to_steady\": %s, \"shakedown\": %s, \"energy_per_cycle1\": %s, "
+                  "\"energy_per_cycle2\": %s",
+                  cs.cycles, cs.cycles_to_steady < 0 ? "null" : std::to_string(cs.cycles_to_steady).c_str(),
+                  cs.shakedown ? "true" : "false", num(cs.energy_per_cycle1).c_str(),
+                  num(cs.energy_per_cycle2).c_str());
+      if (!xs.empty()) {
+        std::printf(", \"slip_range\": [");
+        for (size_t k = 0; k < xs.size(); ++k)
+          std::printf("%s{\"x\": %s, \"dh\": %s}", k ? ", " : "", num(xs[k]).c_str(), num(dh[k]).c_str());
+        std::printf("]");
+      }
+    }
+    std::printf("}\n");
+  } else {
+    std::printf("halfslip %s: load history, %s contact, constant normal load\n", hs_version_string(),
+                geometry.c_str());
+    std::printf("  a = %.10g, p0 = %.10g, P = %.10g (per unit length), f = %.10g, E* = %.10g\n", scene.a, scene.p0,
+                P, scene.f, scene.E_star);
+    std::printf("  energies per unit length; stick zone (-b2, b1); slip direction 0: that edge does not slip\n");
+    if (nv)
+      std::printf("  load step %.6g after refinement, estimated error %.2g (rtol %.2g)\n", vs[nv - 1].step,
+                  vs[nv - 1].error_estimate, ho.rtol);
+    std::printf("%6s %5s %13s %13s %12s %12s %5s %5s %13s %13s %8s\n", "vertex", "cycle", "Q/fP", "sigma/fp0",
+                "b1/a", "b2/a", "dir1", "dir2", "energy1", "energy2", "steps");
+    for (size_t i = 0; i < nv; ++i) {
+      const auto &v = vs[i];
+      std::printf("%6zu %5d %13.6g %13.6g %12.8f %12.8f %+5d %+5d %13.6g %13.6g %8ld\n", i + 1, v.cycle,
+                  v.Q_over_fP, v.sigma_over_fp0, v.b1 / scene.a, v.b2 / scene.a, v.slip_dir1, v.slip_dir2,
+                  v.energy1, v.energy2, v.steps);
+    }
+    if (cyc) {
+      std::printf("cycles: %d; steady from cycle %s%s\n", cs.cycles,
+                  cs.cycles_to_steady < 0 ? "(not reached)" : std::to_string(cs.cycles_to_steady).c_str(),
+                  cs.shakedown ? " (shakedown: no slip in the last cycle)" : "");
+      std::printf("energy per cycle (last cycle): zone 1 %.10g, zone 2 %.10g\n", cs.energy_per_cycle1,
+                  cs.energy_per_cycle2);
+    }
+    if (!xs.empty()) {
+      check(hs_history_eval(h, nv - 1, HS_FIELD_TRACTION, xs.size(), xs.data(), qv.data()), "traction");
+      check(hs_history_eval(h, nv - 1, HS_FIELD_SLIP, xs.size(), xs.data(), hv.data()), "slip");
+      std::printf("state after the last vertex:\n%22s %22s %22s%s\n", "x", "q", "h", cyc ? "        slip range dh" : "");
+      for (size_t k = 0; k < xs.size(); ++k) {
+        std::printf("%22.15g %22.15g %22.15g", xs[k], qv[k], hv[k]);
+        if (cyc) std::printf(" %22.15g", dh[k]);
+        std::printf("\n");
+      }
+    }
+  }
+  hs_history_free(h);
   return 0;
 }
 
@@ -700,6 +913,7 @@ int main(int argc, char **argv) {
   }
   if (std::strcmp(argv[1], "solve") == 0) return cmd_solve(argc, argv);
   if (std::strcmp(argv[1], "table") == 0) return cmd_table(argc, argv);
+  if (std::strcmp(argv[1], "history") == 0) return cmd_history(argc, argv);
   if (std::strcmp(argv[1], "asymptotic-error") == 0) return cmd_asymptotic_error(argc, argv);
-  die(std::string("unknown command '") + argv[1] + "' (solve, table or asymptotic-error; see halfslip --help)");
+  die(std::string("unknown command '") + argv[1] + "' (solve, history, table or asymptotic-error; see halfslip --help)");
 }

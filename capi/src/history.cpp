@@ -17,7 +17,7 @@ using hs::capi::require;
 struct hs_history {
   core::general_scene<double> scene;  // a, p0, f, E* (loads unused)
   hs_history_options opts;
-  std::unique_ptr<core::history<double>> h;
+  std::unique_ptr<core::refined_history<double>> h;
   core::cycle_result<double> cycles;
   bool has_cycles = false;
 };
@@ -35,7 +35,8 @@ int hs_history_options_default(hs_history_options *o) {
   return guard([&] {
     require(o != nullptr, core::status::null_pointer, "NULL options");
     o->struct_size = sizeof *o;
-    o->max_step = 1.0 / 128;
+    o->max_step = 1.0 / 32;
+    o->rtol = 1e-8;
     o->max_steps = 2000000;
     o->segments_per_cycle = 64;
     o->ramp_order = HS_RAMP_SIGMA_FIRST;
@@ -63,6 +64,7 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
     require(o.ramp_order >= HS_RAMP_SIGMA_FIRST && o.ramp_order <= HS_RAMP_Q_FIRST, core::status::bad_option,
             "ramp_order");
     require(std::isfinite(o.steady_rtol) && o.steady_rtol >= 0, core::status::bad_option, "steady_rtol");
+    require(std::isfinite(o.rtol) && o.rtol >= 0, core::status::bad_option, "rtol");
     std::shared_ptr<const core::pressure_model<double>> pm;
     if (geometry == nullptr || geometry->kind == HS_GEOMETRY_HERTZ) {
       if (geometry) require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry");
@@ -85,7 +87,7 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
     core::history_options<double> ho;
     ho.max_step = o.max_step;
     ho.max_steps = o.max_steps;
-    r->h = std::make_unique<core::history<double>>(pm, ho);
+    r->h = std::make_unique<core::refined_history<double>>(pm, ho, o.rtol);
     *out = r.release();
   });
 }
@@ -102,9 +104,8 @@ int hs_history_add_vertices(hs_history *h, size_t n, const double *q, const doub
 int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double sa, double phase_deg, int cycles) {
   return guard([&] {
     require(h != nullptr, core::status::null_pointer, "NULL history");
-    h->cycles = core::add_cycles<double>(*h->h, qm, qa, sm, sa, phase_deg, cycles,
-                                         core::ramp_order(h->opts.ramp_order), h->opts.segments_per_cycle,
-                                         h->opts.steady_rtol);
+    h->cycles = h->h->add_cycles(qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h->opts.ramp_order),
+                                 h->opts.segments_per_cycle, h->opts.steady_rtol);
     h->has_cycles = true;
   });
 }
@@ -112,7 +113,7 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
 int hs_history_vertex_count(const hs_history *h, size_t *n) {
   return guard([&] {
     require(h != nullptr && n != nullptr, core::status::null_pointer, "NULL");
-    *n = h->h->vertices().size();
+    *n = h->h->fine().vertices().size();
   });
 }
 
@@ -120,8 +121,8 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
   return guard([&] {
     require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
     require(out->struct_size == sizeof *out, core::status::struct_size, "vertex struct_size");
-    require(i < h->h->vertices().size(), core::status::bad_option, "vertex index out of range");
-    const auto &v = h->h->vertices()[i];
+    require(i < h->h->fine().vertices().size(), core::status::bad_option, "vertex index out of range");
+    const auto &v = h->h->fine().vertices()[i];
     const auto &sc = h->scene;
     const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
     out->Q_over_fP = v.q;
@@ -134,6 +135,8 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
     out->energy2 = escale * v.energy2;
     out->cycle = v.cycle;
     out->steps = long(v.step_end);
+    out->step = h->h->step();
+    out->error_estimate = h->h->error_estimate();
   });
 }
 
@@ -144,8 +147,8 @@ double field_at(const hs_history &h, size_t nsteps, int field, double x) {
   require(std::isfinite(x), core::status::not_finite, "x");
   require(std::fabs(x) <= sc.a, core::status::point_outside, "x outside the contact");
   const double xi = x / sc.a;
-  if (field == HS_FIELD_TRACTION) return sc.f * sc.p0 * h.h->traction(xi, nsteps);
-  return sc.f * sc.p0 * sc.a / sc.Estar * h.h->slip(xi, nsteps);
+  if (field == HS_FIELD_TRACTION) return sc.f * sc.p0 * h.h->fine().traction(xi, nsteps);
+  return sc.f * sc.p0 * sc.a / sc.Estar * h.h->fine().slip(xi, nsteps);
 }
 
 }  // namespace
@@ -153,10 +156,10 @@ double field_at(const hs_history &h, size_t nsteps, int field, double x) {
 int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, const double *x, double *out) {
   return guard([&] {
     require(h != nullptr && (n == 0 || (x != nullptr && out != nullptr)), core::status::null_pointer, "NULL");
-    require(vertex < h->h->vertices().size(), core::status::bad_option, "vertex index out of range");
+    require(vertex < h->h->fine().vertices().size(), core::status::bad_option, "vertex index out of range");
     require(field == HS_FIELD_TRACTION || field == HS_FIELD_SLIP, core::status::bad_option, "field");
     std::vector<double> tmp(n);
-    const size_t ns = h->h->vertices()[vertex].step_end;
+    const size_t ns = h->h->fine().vertices()[vertex].step_end;
     for (size_t i = 0; i < n; ++i) tmp[i] = field_at(*h, ns, field, x[i]);
     std::copy(tmp.begin(), tmp.end(), out);
   });
@@ -182,7 +185,7 @@ int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double
     require(h != nullptr && (n == 0 || (x != nullptr && out != nullptr)), core::status::null_pointer, "NULL");
     require(h->has_cycles, core::status::not_applicable, "no periodic loading in this history");
     const auto &c = h->cycles;
-    const auto &vs = h->h->vertices();
+    const auto &vs = h->h->fine().vertices();
     std::vector<double> tmp(n);
     for (size_t i = 0; i < n; ++i) {
       double lo = 0, hi = 0;

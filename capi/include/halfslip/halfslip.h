@@ -343,11 +343,14 @@ typedef struct hs_history hs_history;
 
 typedef struct hs_history_options {
   size_t struct_size;       /* = sizeof(hs_history_options), set by hs_history_options_default */
-  double max_step;          /* largest load step, in max(|dQ/fP|, |dsigma/fp0|/4); default 1/128 */
+  double max_step;          /* first load step, in max(|dQ/fP|, |dsigma/fp0|/4); default 1/32 */
   int max_steps;            /* limit on the total number of steps; default 2000000 */
   int segments_per_cycle;   /* periodic loading with Q and sigma out of phase: chords per cycle (default 64) */
   int ramp_order;           /* HS_RAMP_*: how the periodic loading is reached from zero */
   double steady_rtol;       /* cycles are steady when the zone ends and energies repeat to this (default 1e-9) */
+  double rtol;              /* the step is halved (path replayed) until steps h and 2h agree to rtol at every
+                               vertex (zone ends / a, energies / the largest one); 0: march at max_step
+                               only. Default 1e-8. */
 } hs_history_options;
 
 HS_EXPORT int hs_history_options_default(hs_history_options *opts);
@@ -374,6 +377,8 @@ typedef struct hs_history_vertex {
   double energy1, energy2;  /* dissipated in zone 1 (x > b1) and zone 2 over the segment ending here */
   int cycle;                /* 0: path or ramp; k >= 1: the k-th cycle of hs_history_add_cycles */
   long steps;               /* load steps marched up to this vertex */
+  double step;              /* the load step used (after refinement) */
+  double error_estimate;    /* estimated error of the march (units as for rtol), whole history */
 } hs_history_vertex;
 HS_EXPORT int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out);
 

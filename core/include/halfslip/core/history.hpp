@@ -51,6 +51,7 @@ template <class T> struct history_options {
   int order = 8;            // Gauss-Legendre nodes per step integral
   int max_steps = 2000000;  // total steps over the whole history
   int max_newton = 60;      // Newton iterations per step
+  int grade_steps = 4;      // first steps of each run at 2^-(G-1), 2^-(G-1), ..., 1/4, 1/2 of the step
 };
 
 // State after a path vertex (canonical frame; b's in units of a).
@@ -68,7 +69,7 @@ namespace hdetail {
 // b(u) = bb + (u - 1) g(u), g a polynomial in u of degree <= 3: exact at u = 1.
 template <class T> struct endpoly {
   T bb{1};
-  std::array<T, 4> g{{T(0), T(0), T(0), T(0)}};
+  std::array<T, 6> g{{T(0), T(0), T(0), T(0), T(0), T(0)}};
   int deg = 0;  // degree of g
   T val(const T &u) const { return bb + (u - 1) * gval(u); }
   T gval(const T &u) const {
@@ -83,29 +84,25 @@ template <class T> struct endpoly {
   }
 };
 
-// Polynomial through (u_j, b_j), u_j = 1 - (m - j) for j = 0..m (knots at
-// integers up to 1), written as bb + (u - 1) g(u).
-template <class T> endpoly<T> interpolate(const std::vector<T> &b) {
+// Polynomial through (u_j, b_j), j = 0..m, with u_m = 1 (the new knot), written
+// as bb + (u - 1) g(u) (Newton form from the node u = 1 backwards).
+template <class T> endpoly<T> interpolate(const std::vector<T> &b, const std::vector<T> &u) {
   const int m = int(b.size()) - 1;  // degree
   endpoly<T> p;
   p.bb = b[m];
   if (m == 0) return p;
-  // Newton form in nodes 1, 0, -1, -2 (reverse order: node of bb first)
   std::vector<T> nodes(m + 1), c(m + 1);
   for (int j = 0; j <= m; ++j) {
-    nodes[j] = T(1 - j);
+    nodes[j] = u[m - j];
     c[j] = b[m - j];
   }
   for (int k = 1; k <= m; ++k)
     for (int j = m; j >= k; --j) c[j] = (c[j] - c[j - 1]) / (nodes[j] - nodes[j - k]);
-  // b(u) = c0 + (u - 1)[c1 + (u - n1)[c2 + (u - n2) c3]]: g = c1 + (u - n1)(c2 + (u - n2) c3)
-  std::array<T, 4> g{{T(0), T(0), T(0), T(0)}};
-  // build g as monomials by Horner on the Newton form
-  std::array<T, 4> acc{{c[m], T(0), T(0), T(0)}};
+  // b(u) = c0 + (u - n0)[c1 + (u - n1)[c2 + (u - n2) c3]], n0 = 1: g = c1 + (u - n1)(c2 + ...)
+  std::array<T, 6> acc{{c[m], T(0), T(0), T(0), T(0), T(0)}};
   int d = 0;
   for (int k = m - 1; k >= 1; --k) {
-    // acc = acc * (u - nodes[k]) + c[k]
-    std::array<T, 4> nx{{T(0), T(0), T(0), T(0)}};
+    std::array<T, 6> nx{{T(0), T(0), T(0), T(0), T(0), T(0)}};
     for (int j = 0; j <= d; ++j) {
       nx[j + 1] += acc[j];
       nx[j] -= nodes[k] * acc[j];
@@ -114,8 +111,7 @@ template <class T> endpoly<T> interpolate(const std::vector<T> &b) {
     nx[0] += c[k];
     acc = nx;
   }
-  g = acc;
-  p.g = g;
+  p.g = acc;
   p.deg = d;
   return p;
 }
@@ -130,6 +126,7 @@ template <class T> T acosh1p(const T &w) {  // acosh(1 + w), w >= 0, accurate fo
 // One step of the march: loads linear in u in [0, 1], stick-zone ends b1(u), b2(u).
 template <class T> struct history_step {
   T q0, s0, dq, ds;
+  T len{0};            // length of the step as a fraction of its segment
   hdetail::endpoly<T> e1, e2;
   T b1a, b2a;          // ends at u = 0 (the knots of the previous step)
   int s1 = 0, s2 = 0;  // zone directions during the step (0: no zone)
@@ -147,7 +144,7 @@ template <class T> class history {
     if (!pm_) throw error(status::null_pointer, "history: no pressure model");
     if (!(opt_.max_step > 0) || !(opt_.max_step <= 1))
       throw error(status::bad_option, "history: max_step must be in (0, 1]");
-    if (opt_.degree < 1 || opt_.degree > 3) throw error(status::bad_option, "history: degree must be 1, 2 or 3");
+    if (opt_.degree < 1 || opt_.degree > 5) throw error(status::bad_option, "history: degree must be in 1..5");
     if (opt_.order < 2 || opt_.order > 64) throw error(status::bad_option, "history: order must be in 2..64");
   }
 
@@ -171,7 +168,12 @@ template <class T> class history {
           decide(dq, ds);
           run_start_ = steps_.size();
         }
-        T frac = min(hrun, 1 - done);
+        // graded start of each run (its first steps use low-degree interpolation)
+        const size_t in_run = steps_.size() - run_start_;
+        T grade = 1;
+        if (int(in_run) < opt_.grade_steps)
+          grade = std::ldexp(T(1), std::max(int(in_run), 1) - 1 - opt_.grade_steps + 1);
+        T frac = min(hrun * grade, 1 - done);
         if (1 - done - frac < hrun / 1024) frac = 1 - done;
         // a step that cannot keep an advancing end advancing ends beyond an
         // event: shorten it until it solves (the event is then located below)
@@ -267,6 +269,13 @@ template <class T> class history {
   mode m1_ = edge, m2_ = edge;
   T estar_{0};
   size_t run_start_ = 0;
+  struct jac_cache {
+    bool valid = false, a1 = false, a2 = false;
+    size_t run = 0;
+    T len{0};
+    T j[4];
+  };
+  mutable jac_cache jac_;  // march state only (const evaluations never touch it)
 
   static int sgn(const T &v) { return (v > 0) - (v < 0); }
   static T r(int i, const T &dq, const T &ds, const T &e) { return i == 1 ? dq / 2 - ds * e / 4 : dq / 2 + ds * e / 4; }
@@ -343,28 +352,24 @@ template <class T> class history {
     st.dq = dq * frac; st.ds = ds * frac;
     st.b1a = b1_; st.b2a = b2_;
     st.s1 = s1_; st.s2 = s2_;
-    // knots of the run with equal step (the previous steps of this run)
-    std::vector<T> k1, k2;
+    st.len = frac;
+    // knots of the run: the starts of its previous steps (up to degree - 1 of them)
+    std::vector<T> k1, k2, ku;
     const size_t have = steps_.size() - run_start_;
-    int m = std::min<int>(opt_.degree, int(have) + 1);
-    bool equal = true;
-    for (int j = 1; j < m && equal; ++j) {
-      const auto &p = steps_[steps_.size() - j];
-      using std::abs;
-      if (abs(p.dq - st.dq) > 64 * eps<T>() * (abs(st.dq) + abs(st.ds)) ||
-          abs(p.ds - st.ds) > 64 * eps<T>() * (abs(st.dq) + abs(st.ds)))
-        equal = false;
-    }
-    if (!equal) m = 1;
+    const int m = std::min<int>(opt_.degree, int(have) + 1);
+    T back = 0;
+    for (int j = 1; j <= m - 1; ++j) back += steps_[steps_.size() - j].len;
     for (int j = m - 1; j >= 1; --j) {
       const auto &p = steps_[steps_.size() - j];
       k1.push_back(p.b1a);
       k2.push_back(p.b2a);
+      ku.push_back(-back / frac);
+      back -= p.len;
     }
-    k1.push_back(b1_); k2.push_back(b2_);
-    k1.push_back(b1n); k2.push_back(b2n);
-    st.e1 = hdetail::interpolate(k1);
-    st.e2 = hdetail::interpolate(k2);
+    k1.push_back(b1_); k2.push_back(b2_); ku.push_back(T(0));
+    k1.push_back(b1n); k2.push_back(b2n); ku.push_back(T(1));
+    st.e1 = hdetail::interpolate(k1, ku);
+    st.e2 = hdetail::interpolate(k2, ku);
     if (m1_ == rec) st.e1 = mirror_end(st.e2, b1n);
     if (m2_ == rec) st.e2 = mirror_end(st.e1, b2n);
     return st;
@@ -384,7 +389,13 @@ template <class T> class history {
     T total = 0;
     long k = long(n) - 1;
     bool first = trial != nullptr;
+#ifdef HS_PROF_CALL
+    HS_PROF_CALL
+#endif
     while (first || k >= 0) {
+#ifdef HS_PROF_WALK
+      HS_PROF_WALK
+#endif
       const history_step<T> &st = first ? *trial : steps_[size_t(k)];
       const bool in_start = st.b1a > x && x > -st.b2a;
       if (in_start) {
@@ -447,7 +458,8 @@ template <class T> class history {
       const T mid = (ua + ub) / 2;
       return integrate_rsing(f, L1, L2, st, ua, mid, depth + 1) + integrate_rsing(f, L1, L2, st, mid, ub, depth + 1);
     }
-    const auto rule = gauss_legendre<T>(opt_.order * ((n1 && n2) ? 2 : 1));
+    const bool far = r1 > 8 && r2 > 8;  // both factors far from vanishing: half the nodes do
+    const auto rule = gauss_legendre<T>(far ? (opt_.order + 1) / 2 : opt_.order * ((n1 && n2) ? 2 : 1));
     if (!n1 && !n2) {
       T sum = 0;
       const T hw = (ub - ua) / 2, mid = (ua + ub) / 2;
@@ -571,23 +583,37 @@ template <class T> class history {
       if (!found) throw error(status::no_convergence, "history: no valid start for a step");
     }
     const T tol = 16 * eps<T>();
+    // The Jacobian of the previous step of the run (same length, same modes)
+    // serves as long as it contracts the residual (chord iterations).
+    const bool reuse = jac_.valid && jac_.run == run_start_ && jac_.len == frac && jac_.a1 == a1 && jac_.a2 == a2;
+    T j11 = 1, j12 = 0, j21 = 0, j22 = 1;
+    bool fresh = !reuse;
+    if (reuse) { j11 = jac_.j[0]; j12 = jac_.j[1]; j21 = jac_.j[2]; j22 = jac_.j[3]; }
+    T prev_fn = -1;
     for (int it = 0; it < opt_.max_newton; ++it) {
       const T fn = max(abs(f1), abs(f2));
+      if (!fresh && prev_fn >= 0 && fn > prev_fn / 8) fresh = true;  // chord too slow: new Jacobian
+      prev_fn = fn;
       // Jacobian by differences (one-sided, inwards)
       const T hz = sqrt(eps<T>()) * max(w0, T(1e-300));
-      T j11 = 1, j12 = 0, j21 = 0, j22 = 1;
       T g1a = 0, g2a = 0;
-      if (a1) {
+      if (fresh && a1) {
         if (!resid(z1 - hz, z2, g1a, g2a, false)) throw error(status::no_convergence, "history: step Jacobian");
         j11 = (f1 - g1a) / hz;
         j21 = a2 ? (f2 - g2a) / hz : T(0);
       }
-      if (a2) {
+      if (fresh && a2) {
         T h1 = 0, h2 = 0;
         if (!resid(z1, z2 - hz, h1, h2, false)) throw error(status::no_convergence, "history: step Jacobian");
         j22 = (f2 - h2) / hz;
         j12 = a1 ? (f1 - h1) / hz : T(0);
       }
+      if (fresh) {
+        jac_.valid = true; jac_.run = run_start_; jac_.len = frac; jac_.a1 = a1; jac_.a2 = a2;
+        jac_.j[0] = j11; jac_.j[1] = j12; jac_.j[2] = j21; jac_.j[3] = j22;
+      }
+      const bool was_fresh = fresh;
+      fresh = false;
       T d1 = 0, d2 = 0;
       if (a1 && a2) {
         const T det = j11 * j22 - j12 * j21;
@@ -613,6 +639,11 @@ template <class T> class history {
 #ifdef HS_HISTORY_DEBUG
       fprintf(stderr, "it %d z %.17g %.17g f %.3e %.3e d %.3e %.3e J %.3e %.3e %.3e %.3e ok %d\n", it, double(z1), double(z2), double(f1), double(f2), double(d1), double(d2), double(j11), double(j12), double(j21), double(j22), int(ok));
 #endif
+      if (!ok && !was_fresh) {  // the old Jacobian failed: retry with a new one
+        fresh = true;
+        prev_fn = -1;
+        continue;
+      }
       if (!ok) {
         if ((!a1 || abs(f1) <= 256 * eps<T>() * (1 + abs(j11 * z1))) &&
             (!a2 || abs(f2) <= 256 * eps<T>() * (1 + abs(j22 * z2))))
@@ -889,5 +920,97 @@ template <class T, class EOf> bool ramp_recedes(const T &q, const T &s, const EO
   at_q = hi * q;
   return true;
 }
+
+// A history marched twice, at load steps h and h/2, with the step halved (and
+// the path replayed from zero) until the two agree to rtol at every vertex:
+// zone ends in units of a, energies relative to the largest energy of the
+// path. The error estimate of the finer march is the difference divided by
+// 2^p - 1 with p = 3 (the march converges like h^(3.5) with degree 3).
+template <class T> class refined_history {
+ public:
+  using pressure_ptr = typename history<T>::pressure_ptr;
+  refined_history(pressure_ptr pm, const history_options<T> &o, const T &rtol, const T &min_step = T(1) / 65536)
+      : pm_(std::move(pm)), opt_(o), rtol_(rtol), min_step_(min_step) {
+    if (!(rtol_ >= 0)) throw error(status::bad_option, "history: rtol must be >= 0");
+    rebuild();
+  }
+  void add_vertex(const T &q, const T &s) {
+    op o; o.cyc = false; o.q = q; o.s = s;
+    apply(o);
+  }
+  cycle_result<T> add_cycles(const T &qm, const T &qa, const T &sm, const T &sa, const T &phase_deg, int cycles,
+                             ramp_order order, int segments, const T &steady_rtol) {
+    op o; o.cyc = true; o.q = qm; o.qa = qa; o.s = sm; o.sa = sa; o.ph = phase_deg; o.n = cycles;
+    o.order = order; o.segments = segments; o.steady = steady_rtol;
+    apply(o);
+    return last_cycles_;
+  }
+  const history<T> &fine() const { return *fine_; }
+  T error_estimate() const { return est_; }
+  T step() const { return opt_.max_step; }
+
+ private:
+  struct op {
+    bool cyc = false;
+    T q{0}, s{0}, qa{0}, sa{0}, ph{0}, steady{0};
+    int n = 0, segments = 0;
+    ramp_order order = ramp_order::sigma_first;
+  };
+  pressure_ptr pm_;
+  history_options<T> opt_;
+  T rtol_, min_step_;
+  std::vector<op> ops_;
+  std::unique_ptr<history<T>> fine_, coarse_;
+  cycle_result<T> last_cycles_;
+  T est_{0};
+
+  void run(history<T> &h, const op &o, cycle_result<T> *cr) {
+    if (!o.cyc) { h.add_vertex(o.q, o.s); return; }
+    auto r = hs::core::add_cycles<T>(h, o.q, o.qa, o.s, o.sa, o.ph, o.n, o.order, o.segments, o.steady);
+    if (cr) *cr = r;
+  }
+  void rebuild() {
+    history_options<T> oc = opt_;
+    oc.max_step = 2 * opt_.max_step;
+    if (oc.max_step > 1) oc.max_step = 1;
+    fine_.reset(new history<T>(pm_, opt_));
+    coarse_.reset(rtol_ > 0 ? new history<T>(pm_, oc) : nullptr);
+    for (const auto &o : ops_) {
+      run(*fine_, o, &last_cycles_);
+      if (coarse_) run(*coarse_, o, nullptr);
+    }
+  }
+  T estimate() const {
+    using std::abs; using std::max;
+    if (!coarse_) return T(0);
+    const auto &a = fine_->vertices(), &b = coarse_->vertices();
+    if (a.size() != b.size()) return T(1);
+    T emax = 0;
+    for (const auto &v : a) emax = max(emax, max(abs(v.energy1), abs(v.energy2)));
+    T d = 0;
+    for (size_t i = 0; i < a.size(); ++i) {
+      d = max(d, max(abs(a[i].b1 - b[i].b1), abs(a[i].b2 - b[i].b2)));
+      if (emax > 0) d = max(d, max(abs(a[i].energy1 - b[i].energy1), abs(a[i].energy2 - b[i].energy2)) / emax);
+    }
+    return d / 7;
+  }
+  void apply(const op &o) {
+    ops_.push_back(o);
+    try {
+      run(*fine_, o, &last_cycles_);
+      if (coarse_) run(*coarse_, o, nullptr);
+    } catch (...) {
+      ops_.pop_back();
+      rebuild();
+      throw;
+    }
+    est_ = estimate();
+    while (est_ > rtol_ && opt_.max_step / 2 >= min_step_) {
+      opt_.max_step /= 2;
+      rebuild();
+      est_ = estimate();
+    }
+  }
+};
 
 }}  // namespace hs::core
