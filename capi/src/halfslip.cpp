@@ -443,6 +443,11 @@ int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *
   return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.pressure(v)); });
 }
 
+// issue 15: shear traction
+int hs_eval_traction(const hs_solution *sol, size_t n, const double *x, double *out) {
+  return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.traction(v)); });
+}
+
 int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_comparison *out) {
   return guard([&] {
     require(out != nullptr, core::status::null_pointer, "output is NULL");

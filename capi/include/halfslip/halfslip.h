@@ -230,6 +230,12 @@ HS_EXPORT int hs_eval_work(const hs_solution *sol, size_t n, const double *x, do
 /* Contact pressure p(x) of the scene's geometry at n points. */
 HS_EXPORT int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out);
 
+/* Shear traction q(x) at n points (|x| <= a): the traction body 2 exerts on
+ * body 1, positive in +x (docs/conventions.md); its integral is Q. In the slip
+ * zones q = dir_i f p(x), in the stick zone the solution of the no-slip
+ * condition bounded at both stick boundaries (docs/fields.md). */
+HS_EXPORT int hs_eval_traction(const hs_solution *sol, size_t n, const double *x, double *out);
+
 /* ---- asymptotic single-edge model (paper section 5) ------------------------------
  * Hertz, a = p0 = f = E* = 1. For the load that gives a slip zone b/a under
  * pure shear (HS_LOADING_SHEAR) or pure bulk tension (HS_LOADING_BULK), the
