@@ -206,3 +206,22 @@ TEST_CASE("fields: in the stick zone both bodies have the same surface sigma_xx;
   CHECK(std::fabs(surface_sxx(st, 1, 1e6) - st.bulk1) < 1e-6);
   CHECK(std::fabs(surface_sxx(st, 2, -1e6) - st.bulk2) < 1e-6);
 }
+
+TEST_CASE("fields: Hertz same-sign trailing-edge peak, sigma_xx(-a) = 2 f p0 sqrt(d2 (a + b1))/a + sigma1 - sigma/2") {
+  // From the closed form: (2/pi) int q/(x - t) at x = -a is 2 f p0 (e - sqrt((a+e)^2 - c^2))/a, e = sigma/(4 f p0) a.
+  // (Ciavarella & Macina 2003 give the same peak; their paper was not at hand to compare term by term.)
+  for (double s : {0.0, 0.2, 0.5}) {
+    hertz_scene<double> sc;
+    sc.q = 0.6; sc.s = s; sc.a = 1.5; sc.p0 = 2.0; sc.f = 0.3;
+    const auto sol = solve_hertz(sc);
+    REQUIRE(sol.reg == regime::same_sign);
+    const auto st = hertz_state(sol);
+    const double sigma = s * sc.f * sc.p0;
+    const double expect = 2 * sc.f * sc.p0 * std::sqrt(sol.d2() * (sc.a + sol.b1())) / sc.a + sigma / 2;
+    const auto e = surface_summary(st, 1, 3 * sc.a, {-sc.a, sc.a, -sol.b2(), sol.b1()});
+    CAPTURE(s);
+    CHECK(std::fabs(surface_sxx(st, 1, -sc.a) - expect) <= 16 * hs_test::eps<double>() * sc.p0);
+    CHECK(std::fabs(e.max - expect) <= 16 * hs_test::eps<double>() * sc.p0);
+    CHECK(e.x_max == -sc.a);
+  }
+}
