@@ -41,6 +41,11 @@ const char *kUsage =
     "output:\n"
     "  --points N              also tabulate B_x, slip h and work W at N points per slip zone\n"
     "  --json                  one JSON object, numbers with 17 significant digits\n"
+    "  --pad-bulk S            bulk stress the pad (body 2) carries; the specimen carries sigma + S\n"
+    "                          (default 0). Surface stress peaks are in the report and the JSON\n"
+    "  --fields FILE           write the stresses of both bodies on a grid |x| <= 2a, |y| <= 2a\n"
+    "                          (and the surface, y = 0) as CSV: body,x,y,sxx,syy,sxy,max_principal,\n"
+    "                          max_shear,von_mises (plane strain, nu = 0.3)\n"
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
     "                          (hertz: N <= 390; flat-rounded, power-law: N <= 170, dimensionless)\n"
@@ -156,7 +161,8 @@ std::string json_str(const std::string &s) { return "\"" + s + "\""; }
 const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
                                              "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
                                              "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
-                                             "--rtol", "--model", "--A"};
+                                             "--rtol", "--model", "--A",
+                                             "--pad-bulk", "--fields"};  // issue 15
 
 // Pressure samples: two columns x p per line ('#' comments allowed).
 void read_samples(const std::string &path, std::vector<double> &xs, std::vector<double> &ps) {
@@ -324,6 +330,33 @@ const char *model_name(int m) {
   }
 }
 
+
+// issue 15: --fields FILE, the stresses of both bodies on a grid as CSV
+void write_fields(const hs_solution *sol, double a, double pad_bulk, const std::string &path) {
+  FILE *out = std::fopen(path.c_str(), "w");
+  if (!out) die("cannot write '" + path + "'");
+  std::fprintf(out, "body,x,y,sxx,syy,sxy,max_principal,max_shear,von_mises\n");
+  const int nx = 81, ny = 41;
+  for (int b = 1; b <= 2; ++b)
+    for (int j = 0; j < ny; ++j) {
+      std::vector<double> x(nx), y(nx), s(3 * nx);
+      for (int i = 0; i < nx; ++i) {
+        x[i] = -2 * a + 4 * a * i / (nx - 1);
+        y[i] = (b == 1 ? 1 : -1) * 2 * a * j / (ny - 1);
+      }
+      check(hs_eval_stress(sol, b, pad_bulk, nx, x.data(), y.data(), s.data()), "stress");
+      for (int i = 0; i < nx; ++i) {
+        const double xx = s[3 * i], yy = s[3 * i + 1], xy = s[3 * i + 2];
+        const double r = std::hypot((xx - yy) / 2, xy), zz = 0.3 * (xx + yy);
+        const double vm = std::sqrt(((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx)) / 2 +
+                                    3 * xy * xy);
+        std::fprintf(out, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", b, x[i], y[i], xx, yy, xy,
+                     (xx + yy) / 2 + r, r, vm);
+      }
+    }
+  std::fclose(out);
+}
+
 // The scene and geometry of the solve/history options (geometry, sizes, loads);
 // sx, sp hold the samples of --pressure-file. With `loads` false, the load
 // options are not part of the command (history: the path gives them).
@@ -478,6 +511,15 @@ int cmd_solve(int argc, char **argv) {
   double recedes_at = 0;
   check(hs_solution_ramp(sol, &recedes, &recedes_at), "ramp");
 
+  // issue 15: peak surface stresses of each body (not for the reference model: its point
+  // evaluations are too slow for the search) and the optional field grid
+  const double pad_bulk = args.count("--pad-bulk") ? parse_number("--pad-bulk", args.at("--pad-bulk").c_str()) : 0.0;
+  const bool have_surface = sm.model != HS_MODEL_REFERENCE;
+  double surf[2][5] = {};
+  if (have_surface)
+    for (int b = 0; b < 2; ++b) check(hs_surface_stress_extremes(sol, b + 1, pad_bulk, 0.0, surf[b]), "surface stress");
+  if (args.count("--fields")) write_fields(sol, sm.a, pad_bulk, args.at("--fields"));
+
   if (json) {
     std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "
                 "\"E_star\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, "
@@ -492,6 +534,14 @@ int cmd_solve(int argc, char **argv) {
                 model_name(sm.model), num(sm.error_estimate).c_str());
     std::printf(", \"ramp_recedes\": %s, \"ramp_recedes_at_Q_over_fP\": %s", recedes ? "true" : "false",
                 recedes ? num(recedes_at).c_str() : "null");
+    if (have_surface) {
+      std::printf(", \"surface_stress\": {");
+      for (int b = 0; b < 2; ++b)
+        std::printf("%s\"body%d\": {\"max\": %s, \"x_max\": %s, \"min\": %s, \"x_min\": %s, \"bulk\": %s}",
+                    b ? ", " : "", b + 1, num(surf[b][0]).c_str(), num(surf[b][1]).c_str(), num(surf[b][2]).c_str(),
+                    num(surf[b][3]).c_str(), num(surf[b][4]).c_str());
+      std::printf("}");
+    }
     if (!xs.empty()) {
       std::printf(", \"points\": [");
       for (size_t i = 0; i < xs.size(); ++i)
@@ -523,6 +573,12 @@ int cmd_solve(int argc, char **argv) {
                   "  zero to this load makes a slip zone recede from Q/fP = %.10g on, and reaches a different\n"
                   "  state: use 'halfslip history --path \"%.10g,%.10g\"' (docs/history.md).\n",
                   recedes_at, scene.Q_over_fP, scene.sigma_over_fp0);
+    if (have_surface) {
+      std::printf("surface direct stress sigma_xx(x, 0), |x| <= 3a (body 1 specimen y > 0, body 2 pad y < 0):\n");
+      for (int b = 0; b < 2; ++b)
+        std::printf("  body %d: max %.10g at x/a = %.6g, min %.10g at x/a = %.6g (bulk %.10g)\n", b + 1, surf[b][0],
+                    surf[b][1] / sm.a, surf[b][2], surf[b][3] / sm.a, surf[b][4]);
+    }
     if (!xs.empty()) {
       std::printf("%22s %22s %22s %22s\n", "x", "B_x", "h", "W");
       for (size_t i = 0; i < xs.size(); ++i)

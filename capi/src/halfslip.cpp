@@ -16,6 +16,7 @@
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/reference/backend.hpp"
 #include "solution.hpp"
+#include "halfslip/core/fields.hpp"
 
 namespace core = hs::core;
 
@@ -445,6 +446,74 @@ int hs_eval_work(const hs_solution *sol, size_t n, const double *x, double *out)
 }
 int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out) {
   return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.pressure(v)); });
+}
+
+// issue 15: the contact state of a solution (bulk2: stress the pad carries)
+namespace {
+hs::core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
+  if (h.hertz) return hs::core::hertz_state(*h.hertz, bulk2);
+  if (h.general) return hs::core::general_state_of(*h.general, bulk2);
+  if (h.edge) return hs::core::make_state<double>(*h.edge, bulk2);
+  return hs::core::make_state<double>(*h.ref, bulk2);
+}
+void check_fields_input(const hs_solution *sol, int body, double bulk2) {
+  require(sol != nullptr, core::status::null_pointer, "solution is NULL");
+  require(body == 1 || body == 2, core::status::bad_option, "body must be 1 or 2");
+  require(std::isfinite(bulk2), core::status::not_finite, "bulk stress is NaN or infinite");
+}
+}  // namespace
+
+int hs_eval_surface_stress(const hs_solution *sol, int body, double bulk2, size_t n, const double *x, double *out) {
+  return guard([&] {
+    check_fields_input(sol, body, bulk2);
+    if (n == 0) return;
+    require(x != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+    for (size_t i = 0; i < n; ++i) require(std::isfinite(x[i]), core::status::not_finite, "point is NaN or infinite");
+    const auto st = state_of(*sol, bulk2);
+    std::vector<double> tmp(n);
+    for (size_t i = 0; i < n; ++i) tmp[i] = core::surface_sxx(st, body, x[i]);
+    std::memcpy(out, tmp.data(), n * sizeof(double));
+  });
+}
+
+int hs_eval_stress(const hs_solution *sol, int body, double bulk2, size_t n, const double *x, const double *y,
+                   double *out) {
+  return guard([&] {
+    check_fields_input(sol, body, bulk2);
+    if (n == 0) return;
+    require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+    for (size_t i = 0; i < n; ++i) {
+      require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
+      require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
+              "point outside the body (body 1: y >= 0, body 2: y <= 0)");
+    }
+    const auto st = state_of(*sol, bulk2);
+    std::vector<double> tmp(3 * n);
+    for (size_t i = 0; i < n; ++i) {
+      const auto s = core::stress_at(st, body, x[i], std::fabs(y[i]));
+      tmp[3 * i] = s.xx; tmp[3 * i + 1] = s.yy; tmp[3 * i + 2] = s.xy;
+    }
+    std::memcpy(out, tmp.data(), 3 * n * sizeof(double));
+  });
+}
+
+int hs_surface_stress_extremes(const hs_solution *sol, int body, double bulk2, double half_range, double out[5]) {
+  return guard([&] {
+    check_fields_input(sol, body, bulk2);
+    require(out != nullptr, core::status::null_pointer, "output is NULL");
+    require(std::isfinite(half_range), core::status::not_finite, "half_range is NaN or infinite");
+    const auto st = state_of(*sol, bulk2);
+    const double L = half_range > 0 ? half_range : 3 * st.a;
+    std::vector<double> special{-st.a, st.a};
+    for (double b : st.breaks) special.push_back(b);
+    const auto e = core::surface_summary(st, body, L, special);
+    out[0] = e.max; out[1] = e.x_max; out[2] = e.min; out[3] = e.x_min; out[4] = e.bulk;
+  });
+}
+
+// issue 15: shear traction
+int hs_eval_traction(const hs_solution *sol, size_t n, const double *x, double *out) {
+  return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.traction(v)); });
 }
 
 int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_comparison *out) {

@@ -55,6 +55,12 @@ class reference_double {
   double slip(double x) const { return eval(reference::point_eval::slip, x); }
   double work(double x) const { return eval(reference::point_eval::work, x); }
   double pressure(double x) const { return eval(reference::point_eval::pressure, x); }
+  // shear traction from the certified zones and the (certified) pressure,
+  // by the double quadrature of core/traction.hpp
+  double traction(double x) const {
+    return core::monotonic_traction<double>([this](double v) { return pressure(v); }, scene.a, scene.f, b1_, b2_,
+                                            dir1_, dir2_, x);
+  }
 
  private:
   double take(const reference::certified &c) const;

@@ -506,6 +506,45 @@ class Solution(_Handle):
         """Contact pressure p(x) of the scene's geometry."""
         return self._eval(_lib.hs_eval_pressure, "hs_eval_pressure", x)
 
+    # ---- issue 15: traction and stresses (docs/fields.md) ----
+    def traction(self, x):
+        """Shear traction q(x) on body 1 (positive in +x, integral Q), |x| <= a."""
+        return self._eval(_lib.hs_eval_traction, "hs_eval_traction", x)
+
+    def surface_stress(self, x, body=1, pad_bulk=0.0):
+        """sigma_xx(x, 0) of body 1 (specimen, y > 0) or 2 (pad, y < 0) at any x;
+        the pad carries pad_bulk, the specimen sigma + pad_bulk."""
+        fn = _lib.hs_eval_surface_stress
+        return self._eval(lambda h, n, xs, out: fn(h, int(body), float(pad_bulk), n, xs, out),
+                          "hs_eval_surface_stress", x)
+
+    def stress(self, x, y, body=None, pad_bulk=0.0):
+        """(sigma_xx, sigma_yy, sigma_xy) at points (x, y): a tuple for scalars, else a
+        list of tuples. body defaults to 1 for y >= 0 and 2 for y < 0 (all points alike)."""
+        h = self._handle()
+        xs, n, scalar = _points(x)
+        ys, m, _ = _points(y)
+        if m != n:
+            raise ValueError("x and y differ in length")
+        if body is None:
+            body = 2 if n and ys[0] < 0 else 1
+        out = (c_double * (3 * max(n, 1)))()
+        st = _lib.hs_eval_stress(h, int(body), float(pad_bulk), n, xs if n else None, ys if n else None,
+                                 out if n else None)
+        if st != 0:
+            _raise(st, "hs_eval_stress", self._callback)
+        res = [(out[3 * i], out[3 * i + 1], out[3 * i + 2]) for i in range(n)]
+        return res[0] if scalar else res
+
+    def surface_stress_extremes(self, body=1, pad_bulk=0.0, half_range=0.0):
+        """dict max, x_max, min, x_min, bulk of sigma_xx(x, 0) over |x| <= half_range (0: 3a)."""
+        h = self._handle()
+        out = (c_double * 5)()
+        st = _lib.hs_surface_stress_extremes(h, int(body), float(pad_bulk), float(half_range), out)
+        if st != 0:
+            _raise(st, "hs_surface_stress_extremes", self._callback)
+        return dict(zip(("max", "x_max", "min", "x_min", "bulk"), out))
+
 
 # ---- arbitrary-precision reference backend ---------------------------------------------------
 

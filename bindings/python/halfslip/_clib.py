@@ -149,6 +149,11 @@ _SIGNATURES = {
     "hs_eval_slip": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),
     "hs_eval_work": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),
     "hs_eval_pressure": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),
+    # issue 15: traction and stresses
+    "hs_eval_traction": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),
+    "hs_eval_surface_stress": (c_int, [SolutionP, c_int, c_double, c_size_t, _DoubleP, _DoubleP]),
+    "hs_eval_stress": (c_int, [SolutionP, c_int, c_double, c_size_t, _DoubleP, _DoubleP, _DoubleP]),
+    "hs_surface_stress_extremes": (c_int, [SolutionP, c_int, c_double, c_double, _DoubleP]),
     "hs_ref_scene_default": (c_int, [POINTER(RefScene)]),
     "hs_ref_max_digits": (c_int, []),
     "hs_ref_max_digits_geometry": (c_int, [c_int]),

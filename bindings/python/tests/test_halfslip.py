@@ -537,5 +537,35 @@ class TestReference(unittest.TestCase):
             r.b1   # closed
 
 
+
+class TestFields(unittest.TestCase):
+    """Issue 15: traction and stresses through the C ABI (docs/fields.md)."""
+
+    def test_traction_hertz_same_sign_closed_form(self):
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.2) as sol:
+            b1, b2 = sol.b1, sol.b2
+            for x in (-0.9, -0.3, 0.0, 0.4, 0.95):
+                expect = math.sqrt(1 - x * x) - (math.sqrt((b1 - x) * (x + b2)) if -b2 < x < b1 else 0.0)
+                self.assertLess(abs(sol.traction(x) - expect), 1e-14)
+
+    def test_surface_stress_and_stress(self):
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.2) as sol:
+            e = sol.surface_stress_extremes(body=1)
+            # trailing-edge peak 2 f p0 sqrt(d2 (a + b1))/a + sigma/2 (docs/fields.md)
+            self.assertLess(abs(e["max"] - (2 * math.sqrt(sol.d2 * (1 + sol.b1)) + 0.1)), 1e-13)
+            self.assertEqual(e["x_max"], -1.0)
+            self.assertEqual(e["bulk"], 0.2)
+            v = sol.surface_stress([-2.0, 0.0, 2.0], body=2, pad_bulk=0.5)
+            self.assertEqual(len(v), 3)
+            sxx, syy, sxy = sol.stress(0.3, 1e-9)
+            self.assertLess(abs(sxx - sol.surface_stress(0.3)), 1e-7)
+            self.assertLess(abs(syy + math.sqrt(1 - 0.09)), 1e-7)
+            self.assertLess(abs(sxy + sol.traction(0.3)), 1e-7)
+            pts = sol.stress([0.0, 1.0], [-0.5, -0.5])  # body 2
+            self.assertEqual(len(pts), 2)
+            with self.assertRaises(halfslip.HalfslipError):
+                sol.stress(0.0, -0.5, body=1)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -230,6 +230,28 @@ HS_EXPORT int hs_eval_work(const hs_solution *sol, size_t n, const double *x, do
 /* Contact pressure p(x) of the scene's geometry at n points. */
 HS_EXPORT int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *out);
 
+/* Shear traction q(x) at n points (|x| <= a): the traction body 2 exerts on
+ * body 1, positive in +x (docs/conventions.md); its integral is Q. In the slip
+ * zones q = dir_i f p(x), in the stick zone the solution of the no-slip
+ * condition bounded at both stick boundaries (docs/fields.md). */
+HS_EXPORT int hs_eval_traction(const hs_solution *sol, size_t n, const double *x, double *out);
+
+/* ---- stresses in each body (issue 15, docs/fields.md) -----------------------------
+ * Body 1 (specimen) occupies y > 0, body 2 (pad) y < 0. bulk2 is the bulk stress
+ * sigma_xx the pad carries; the specimen carries sigma + bulk2 (pass 0 for the
+ * usual fretting-fatigue test: the pad carries none).
+ *   surface_stress: sigma_xx(x, 0) of the body at any n points x (on and off the contact)
+ *   stress: (sigma_xx, sigma_yy, sigma_xy) at (x[i], y[i]) written to out[3i..3i+2]
+ *           (y[i] >= 0 for body 1, <= 0 for body 2)
+ *   surface_stress_extremes: out = {max, x_max, min, x_min, bulk} of sigma_xx(x, 0) over
+ *           |x| <= half_range (<= 0: 3a) */
+HS_EXPORT int hs_eval_surface_stress(const hs_solution *sol, int body, double bulk2, size_t n, const double *x,
+                                     double *out);
+HS_EXPORT int hs_eval_stress(const hs_solution *sol, int body, double bulk2, size_t n, const double *x,
+                             const double *y, double *out);
+HS_EXPORT int hs_surface_stress_extremes(const hs_solution *sol, int body, double bulk2, double half_range,
+                                         double out[5]);
+
 /* ---- asymptotic single-edge model (paper section 5) ------------------------------
  * Hertz, a = p0 = f = E* = 1. For the load that gives a slip zone b/a under
  * pure shear (HS_LOADING_SHEAR) or pure bulk tension (HS_LOADING_BULK), the

@@ -142,6 +142,15 @@ template <class T> class edge_solution {
     return magnitude(zone).work(z);
   }
   T energy(int zone) const { return magnitude(zone).energy(); }
+  // Shear traction: f p dir_i on the model's slip zones, and in between the
+  // bounded stick-zone solution for those zones (traction.hpp). An
+  // approximation like the model: its resultant is not exactly Q.
+  T traction(const T &x) const {
+    std::vector<T> k;
+    for (const auto &bp : pm->breakpoints()) k.push_back(scene.a * bp.x);
+    return monotonic_traction<T>([&](const T &v) { return pressure(v); }, scene.a, scene.f, b1(), b2(), dir1(),
+                                 dir2(), x, k);
+  }
   // the geometry's pressure
   T pressure(const T &x) const {
     const T xi = x / scene.a;

@@ -9,6 +9,9 @@
 // boundary in units of a, and pressure(x) in the user frame.
 #pragma once
 #include <cmath>
+#include <vector>
+
+#include "traction.hpp"
 
 namespace hs { namespace core {
 
@@ -64,6 +67,12 @@ template <class Derived, class T, class Scene> struct canonical_solution {
     const int z = locate(x, dl);
     if (z == 0) return T(0);
     return sign() * scene.f * scene.p0 * scene.a / scene.Estar * self().hhat(z, dl);
+  }
+  // Shear traction q(x) on body 1 (docs/conventions.md), generic form
+  // (traction.hpp); kinks: user-frame points where the pressure is not smooth.
+  T traction_generic(const T &x, const std::vector<T> &kinks = {}) const {
+    return monotonic_traction<T>([&](const T &v) { return self().pressure(v); }, scene.a, scene.f, b1(), b2(),
+                                 dir1(), dir2(), x, kinks);
   }
   T work(const T &x) const {
     using std::abs;

@@ -717,6 +717,14 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
     return by_order([&](int M) { return hhat_order(z, dl, M); });
   }
 
+  // Shear traction q(x) on body 1 (traction.hpp), split at the pressure's kinks.
+  std::vector<T> user_kinks() const {
+    std::vector<T> k;
+    for (const auto &bp : pm->breakpoints()) k.push_back(scene.a * (mirror ? -bp.x : bp.x));
+    return k;
+  }
+  T traction(const T &x) const { return this->traction_generic(x, user_kinks()); }
+
   T pressure(const T &x) const {
     const T xi = (mirror ? -x : x) / scene.a;
     if (!(xi > -1 && xi < 1)) return T(0);

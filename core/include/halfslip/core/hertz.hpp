@@ -106,6 +106,20 @@ struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>>
     return abs(I);
   }
 
+  // Shear traction q(x) on body 1. Same-sign regime: closed form
+  // q = sgn(Q) f p0 [sqrt(1 - x^2/a^2) - sqrt((b1 - x)(x + b2))/a] in the stick zone
+  // (a Hertz distribution minus a shifted, scaled one); otherwise the generic
+  // form of traction.hpp.
+  T traction(const T &x) const {
+    using std::sqrt;
+    if (reg != regime::same_sign) return this->traction_generic(x);
+    if (!(x > -scene.a && x < scene.a)) return T(0);
+    const T B1 = this->b1(), B2 = this->b2();
+    const T sf = this->sign() * scene.f;
+    if (x >= B1 || x <= -B2) return sf * pressure(x);
+    return sf * (pressure(x) - scene.p0 * sqrt((B1 - x) * (x + B2)) / scene.a);
+  }
+
   T pressure(const T &x) const {
     using std::sqrt;
     const T xi = x / scene.a;

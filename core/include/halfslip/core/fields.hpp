@@ -1,0 +1,307 @@
+// halfslip core: the stresses the contact puts into each body (issue 15).
+//
+// A contact state is the pressure p(x) and the shear traction q(x) on |x| < a
+// (q acts on body 1, positive in +x; docs/conventions.md), the points where
+// they are not smooth, and the bulk stress each body carries. Any state can be
+// plugged in (monotonic solutions: make_state(); load histories later).
+//
+// Body 1 occupies y > 0, body 2 y < 0 (the interface is y = 0). In each body,
+// with z = |y| the depth, the Flamant solution for a half-plane loaded by a
+// pressure p and a tangential traction t (t = q on body 1, t = -q on body 2)
+// is written with the Cauchy integrals (zeta = x + i z)
+//   F0[g](zeta) = int g(s)/(s - zeta) ds,   F1[g](zeta) = int g(s)/(s - zeta)^2 ds:
+//   sigma_x = -(Im F0[p] + z Re F1[p])/pi + (2 Re F0[t] - z Im F1[t])/pi
+//   sigma_z = -(Im F0[p] - z Re F1[p])/pi + z Im F1[t]/pi
+//   tau_xz  =  z Im F1[p]/pi - (Im F0[t] + z Re F1[t])/pi
+// (Johnson, Contact Mechanics, eq 2.23, rewritten). Global components:
+// sigma_xx = sigma_x + bulk, sigma_yy = sigma_z, sigma_xy = tau_xz in body 1
+// and -tau_xz in body 2 (so that sigma_yy = -p and sigma_xy = -q on both
+// sides of the interface). docs/fields.md has the derivation and the tests.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include <boost/math/quadrature/gauss.hpp>
+
+#include "general.hpp"
+#include "hertz.hpp"
+#include "numerics.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+template <class T> struct cauchy_pair {
+  std::complex<T> F0{0, 0}, F1{0, 0};
+};
+
+// Adds the Cauchy integrals of amp * sqrt(c^2 - (s - e)^2) on [e - c, e + c]
+// (closed form: pi amp c (X - nu), pi amp (nu/X - 1), nu = (zeta - e)/c,
+// X = sqrt(nu - 1) sqrt(nu + 1) ~ nu at infinity; Im zeta >= 0).
+template <class T> void add_semi_ellipse(const T &amp, const T &c, const T &e, const std::complex<T> &zeta,
+                                         cauchy_pair<T> &out) {
+  if (!(c > 0) || amp == 0) return;
+  const std::complex<T> nu = (zeta - e) / c;
+  const std::complex<T> X = std::sqrt(nu - T(1)) * std::sqrt(nu + T(1));
+  out.F0 += pi<T>() * amp * c * (X - nu);
+  out.F1 += pi<T>() * amp * (nu / X - T(1));
+}
+
+// Cauchy integrals of two densities (p and q) at zeta by Gauss-Legendre on
+// graded panels. pts: sorted points -a = pts[0] < ... < pts.back() = a where
+// the densities may behave like sqrt(distance). Each piece is halved; on each
+// half s = end +- h t^2 removes the square root at its end, and the panels in
+// t are graded geometrically towards the pole's image, so that every panel is
+// at least its own length from the pole (20-point rule: error < 1e-16).
+template <class T, class G>
+void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex<T> &zeta, cauchy_pair<T> &P,
+                    cauchy_pair<T> &Q) {
+  using std::abs;
+  using gl = boost::math::quadrature::gauss<T, 20>;
+  const auto &xs = gl::abscissa();
+  const auto &ws = gl::weights();
+  auto panel = [&](const T &lo_end, const T &h, const T &t0, const T &t1) {
+    // s = lo_end + h t^2 (h may be negative)
+    const T mid = (t0 + t1) / 2, half = (t1 - t0) / 2;
+    for (std::size_t k = 0; k < xs.size(); ++k) {
+      for (int sg = -1; sg <= 1; sg += 2) {
+        if (xs[k] == 0 && sg > 0) continue;  // a central node once
+        const T t = mid + sg * half * xs[k];
+        const T s = lo_end + h * t * t;
+        const T w = ws[k] * half * 2 * abs(h) * t;
+        T pv, qv;
+        dens(s, pv, qv);
+        const std::complex<T> r = T(1) / (s - zeta);
+        P.F0 += w * pv * r;
+        P.F1 += w * pv * r * r;
+        Q.F0 += w * qv * r;
+        Q.F1 += w * qv * r * r;
+      }
+    }
+  };
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+    const T lo = pts[i], hi = pts[i + 1];
+    if (!(hi > lo)) continue;
+    const T m = (lo + hi) / 2;
+    for (int side = 0; side < 2; ++side) {
+      const T end = side == 0 ? lo : hi;
+      const T h = side == 0 ? m - lo : m - hi;  // s = end + h t^2
+      const std::complex<T> tau = std::sqrt((zeta - end) / h);
+      const T t0 = std::min(std::max(tau.real(), T(0)), T(1));
+      const T delta = abs(tau - t0);
+      std::vector<T> cuts{T(0), T(1)};
+      if (delta < T(0.5)) {
+        const T dmin = std::max(delta, T(64) * eps<T>());
+        cuts.push_back(t0);
+        for (T d = dmin; d < 1; d *= 2) {
+          if (t0 - d > 0) cuts.push_back(t0 - d);
+          if (t0 + d < 1) cuts.push_back(t0 + d);
+        }
+        std::sort(cuts.begin(), cuts.end());
+      }
+      for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+        if (cuts[k + 1] > cuts[k]) panel(end, h, cuts[k], cuts[k + 1]);
+    }
+  }
+}
+
+template <class T> struct stress_tensor {
+  T xx{0}, yy{0}, xy{0};
+  // in-plane principal stresses and maximum shear
+  T radius() const { using std::hypot; return hypot((xx - yy) / 2, xy); }
+  T max_principal() const { return (xx + yy) / 2 + radius(); }
+  T min_principal() const { return (xx + yy) / 2 - radius(); }
+  T max_shear() const { return radius(); }
+  // von Mises in plane strain: sigma_zz = nu (xx + yy)
+  T von_mises(const T &nu) const {
+    using std::sqrt;
+    const T zz = nu * (xx + yy);
+    return sqrt(((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx)) / 2 + 3 * xy * xy);
+  }
+};
+
+template <class T> struct contact_state {
+  T a{1};
+  T bulk1{0}, bulk2{0};  // sigma_xx each body carries far away (sigma = bulk1 - bulk2)
+  std::function<T(const T &)> p, q;
+  std::vector<T> breaks;  // interior points of (-a, a) where p or q is not smooth
+  // optional closed forms: adds the Cauchy integrals of p and q at zeta and
+  // returns true; false: not available (quadrature)
+  std::function<bool(const std::complex<T> &, cauchy_pair<T> &, cauchy_pair<T> &)> closed;
+  // optional: (2/pi) PV int q(t)/(x - t) dt for |x| <= a (for a solution:
+  // E* B_x + sigma/2, exact); needed for the surface stress on the contact
+  std::function<T(const T &)> hilbert_q;
+
+  std::vector<T> points() const {
+    std::vector<T> v{-a, a};
+    for (const T &b : breaks)
+      if (b > -a && b < a) v.push_back(b);
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+  }
+  void cauchy(const std::complex<T> &zeta, cauchy_pair<T> &P, cauchy_pair<T> &Q) const {
+    P = {}; Q = {};
+    if (closed && closed(zeta, P, Q)) return;
+    P = {}; Q = {};
+    cauchy_numeric<T>([&](const T &s, T &pv, T &qv) { pv = p(s); qv = q(s); }, points(), zeta, P, Q);
+  }
+};
+
+// Stress at (x, y) with y = +depth in body 1 (body = 1) or y = -depth in body 2.
+template <class T> T surface_sxx(const contact_state<T> &st, int body, const T &x);
+
+template <class T> stress_tensor<T> stress_at(const contact_state<T> &st, int body, const T &x, const T &depth) {
+  if (body != 1 && body != 2) throw error(status::bad_option, "body must be 1 or 2");
+  if (!(depth >= 0)) throw error(status::bad_option, "depth must be >= 0");
+  const T z = depth;
+  if (z == 0) {  // on the surface: the tractions themselves (continuous across y = 0)
+    using std::abs;
+    stress_tensor<T> s;
+    s.xx = surface_sxx(st, body, x);
+    if (abs(x) < st.a) { s.yy = -st.p(x); s.xy = -st.q(x); }
+    return s;
+  }
+  cauchy_pair<T> P, Q;
+  st.cauchy(std::complex<T>(x, z), P, Q);
+  const T ip = T(1) / pi<T>();
+  const T sx_p = -(P.F0.imag() + z * P.F1.real()) * ip;
+  const T sz_p = -(P.F0.imag() - z * P.F1.real()) * ip;
+  const T t_p = z * P.F1.imag() * ip;
+  const T sx_q = (2 * Q.F0.real() - z * Q.F1.imag()) * ip;
+  const T sz_q = z * Q.F1.imag() * ip;
+  const T t_q = -(Q.F0.imag() + z * Q.F1.real()) * ip;
+  stress_tensor<T> s;
+  if (body == 1) {
+    s.xx = sx_p + sx_q + st.bulk1;
+    s.yy = sz_p + sz_q;
+    s.xy = t_p + t_q;
+  } else {  // traction -q, and sigma_xy = -tau_xz
+    s.xx = sx_p - sx_q + st.bulk2;
+    s.yy = sz_p - sz_q;
+    s.xy = -(t_p - t_q);
+  }
+  return s;
+}
+
+// Surface direct stress sigma_xx(x, 0) of a body:
+//   -p(x) -+ (2/pi) PV int q(t)/(x - t) dt + bulk   (- for body 1, + for body 2).
+template <class T> T surface_sxx(const contact_state<T> &st, int body, const T &x) {
+  using std::abs;
+  if (body != 1 && body != 2) throw error(status::bad_option, "body must be 1 or 2");
+  const T sg = body == 1 ? T(-1) : T(1);
+  const T bulk = body == 1 ? st.bulk1 : st.bulk2;
+  T H;
+  if (abs(x) <= st.a) {
+    if (st.hilbert_q) return -st.p(x) + sg * st.hilbert_q(x) + bulk;
+    cauchy_pair<T> P, Q;  // closed forms: the boundary values from z = +0
+    if (st.closed && st.closed(std::complex<T>(x, T(0)), P, Q))
+      return -st.p(x) - sg * 2 * Q.F0.real() / pi<T>() + bulk;
+    throw error(status::not_applicable, "surface stress on the contact needs the state's Hilbert transform");
+  }
+  cauchy_pair<T> P, Q;
+  st.cauchy(std::complex<T>(x, T(0)), P, Q);
+  H = -2 * Q.F0.real() / pi<T>();  // (2/pi) int q/(x - t)
+  return sg * H + bulk;
+}
+
+// Extremes of sigma_xx(x, 0) over |x| <= L.
+template <class T> struct surface_extremes {
+  T max, x_max, min, x_min, bulk;
+};
+
+template <class T>
+surface_extremes<T> surface_summary(const contact_state<T> &st, int body, const T &L, const std::vector<T> &special,
+                                    int samples = 400) {
+  using std::abs;
+  std::vector<T> xs;
+  for (int i = 0; i <= samples; ++i) xs.push_back(-L + 2 * L * T(i) / T(samples));
+  // denser near the contact (where the peaks are)
+  for (int i = 0; i <= samples; ++i) xs.push_back(-st.a * T(1.02) + 2 * st.a * T(1.02) * T(i) / T(samples));
+  for (const T &s : special)
+    if (abs(s) <= L) xs.push_back(s);
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  std::vector<T> v(xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) v[i] = surface_sxx(st, body, xs[i]);
+  auto refine = [&](int sgn) -> std::pair<T, T> {
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < v.size(); ++i)
+      if (sgn * v[i] > sgn * v[k]) k = i;
+    T best = v[k], xb = xs[k];
+    if (k == 0 || k + 1 == xs.size()) return {best, xb};
+    // golden section on (xs[k-1], xs[k+1]) (a cusp at a special point is kept)
+    T lo = xs[k - 1], hi = xs[k + 1];
+    const T g = (std::sqrt(T(5)) - 1) / 2;
+    T c = hi - g * (hi - lo), d = lo + g * (hi - lo);
+    T fc = sgn * surface_sxx(st, body, c), fd = sgn * surface_sxx(st, body, d);
+    for (int it = 0; it < 60 && hi - lo > 16 * eps<T>() * (abs(lo) + abs(hi) + st.a); ++it) {
+      if (fc > fd) { hi = d; d = c; fd = fc; c = hi - g * (hi - lo); fc = sgn * surface_sxx(st, body, c); }
+      else { lo = c; c = d; fc = fd; d = lo + g * (hi - lo); fd = sgn * surface_sxx(st, body, d); }
+    }
+    if (fc > sgn * best) { best = sgn * fc; xb = c; }
+    if (fd > sgn * best) { best = sgn * fd; xb = d; }
+    return {best, xb};
+  };
+  const auto mx = refine(+1), mn = refine(-1);
+  return {mx.first, mx.second, mn.first, mn.second, body == 1 ? st.bulk1 : st.bulk2};
+}
+
+// The state of a monotonic solution (hertz_solution, general_solution,
+// edge_solution, or any type with scene, pressure, traction, Bx, b1, b2).
+// bulk2: the bulk stress body 2 carries; body 1 carries sigma + bulk2
+// (default: the pad carries none, the specimen all of sigma).
+template <class T, class S> contact_state<T> make_state(const S &sol, const T &bulk2 = T(0)) {
+  contact_state<T> st;
+  const T a = sol.scene.a;
+  const T sigma = sol.scene.s * sol.scene.f * sol.scene.p0;
+  st.a = a;
+  st.bulk2 = bulk2;
+  st.bulk1 = sigma + bulk2;
+  st.p = [&sol](const T &x) { return sol.pressure(x); };
+  // q is memoised: the far-field and surface rules reuse the same nodes
+  auto memo = std::make_shared<std::map<T, T>>();
+  st.q = [&sol, memo](const T &x) {
+    auto it = memo->find(x);
+    if (it != memo->end()) return it->second;
+    const T v = sol.traction(x);
+    if (memo->size() < 200000) memo->emplace(x, v);
+    return v;
+  };
+  st.breaks = {-sol.b2(), sol.b1()};
+  const T E = sol.scene.Estar;
+  st.hilbert_q = [&sol, E, sigma](const T &x) { return E * sol.Bx(x) + sigma / 2; };
+  return st;
+}
+
+// Hertz: p = (p0/a) sqrt(a^2 - x^2) always, and q in closed form in the
+// stuck and same-sign regimes, q = sgn(Q) f [p - (p0/a) sqrt(c^2 - (x - e)^2)],
+// c = (b1 + b2)/2, e = (b1 - b2)/2 (McEwen's fields of semi-ellipses).
+template <class T> contact_state<T> hertz_state(const hertz_solution<T> &sol, const T &bulk2 = T(0)) {
+  contact_state<T> st = make_state<T>(sol, bulk2);
+  const T a = sol.scene.a, p0 = sol.scene.p0, f = sol.scene.f;
+  const bool q_closed = sol.reg != regime::opposite_sign;
+  const T c = (sol.b1() + sol.b2()) / 2, e = (sol.b1() - sol.b2()) / 2;
+  const T sf = sol.reg == regime::stuck ? T(0) : sol.sign() * f;
+  st.closed = [=](const std::complex<T> &zeta, cauchy_pair<T> &P, cauchy_pair<T> &Q) {
+    if (!q_closed) return false;
+    add_semi_ellipse<T>(p0 / a, a, T(0), zeta, P);
+    add_semi_ellipse<T>(sf * p0 / a, a, T(0), zeta, Q);
+    add_semi_ellipse<T>(-sf * p0 / a, c, e, zeta, Q);
+    return true;
+  };
+  return st;
+}
+
+// General pressures: the pressure's kinks are quadrature split points too.
+template <class T> contact_state<T> general_state_of(const general_solution<T> &sol, const T &bulk2 = T(0)) {
+  contact_state<T> st = make_state<T>(sol, bulk2);
+  for (const T &k : sol.user_kinks()) st.breaks.push_back(k);
+  return st;
+}
+
+}}  // namespace hs::core

@@ -1,0 +1,87 @@
+// halfslip core: the shear traction q(x) of a monotonic partial-slip solution,
+// for any pressure, from the pressure and the stick zone alone.
+//
+// Conventions (docs/conventions.md): q is the shear traction that body 2
+// exerts on body 1, positive in +x; Q is its resultant. On the slip zones
+// q = dir_i f p(x). On the stick zone (-b2, b1) the relative surface strain
+// vanishes, E* B_x = (2/pi) PV int q(xi)/(x - xi) dxi - sigma/2 = 0, a finite
+// Hilbert problem for q on the stick zone whose solution bounded at both
+// stick boundaries is (docs/fields.md derives it)
+//
+//   q(x) = R(x)/pi * int_slip q_sl(xi) sgn(xi) / ((xi - x) Rext(xi)) dxi,
+//   R(x) = sqrt((b1 - x)(x + b2)),  Rext(xi) = sqrt(|xi - b1| |xi + b2|),
+//
+// sgn = +1 on zone 1 (xi > b1), -1 on zone 2. Q and sigma enter only through
+// b1, b2 (the side conditions make the bounded solution exist and carry Q).
+// With xi = b1 + d1 u^2 (zone 1) and xi = -b2 - d2 u^2 (zone 2) both zone
+// integrals read int_0^1 2 sqrt(d) g(u) / (eps + d u^2) du, g = q_sl/sqrt(w + d u^2),
+// eps = distance of x to that zone's stick boundary, w = b1 + b2; the nearly
+// singular part g(0)/(eps + d u^2) is integrated exactly (atan), the rest by
+// tanh-sinh.
+#pragma once
+#include <cmath>
+#include <vector>
+
+#include "numerics.hpp"
+
+namespace hs { namespace core {
+
+// P: callable p(x) in the user frame. kinks: points of (-a, a) where p is not
+// smooth (split points of the quadrature). Returns q(x); 0 outside |x| < a.
+template <class T, class P>
+T monotonic_traction(const P &p, const T &a, const T &f, const T &b1, const T &b2, int dir1, int dir2,
+                     const T &x, const std::vector<T> &kinks = {}, T tol = T(0)) {
+  using std::atan; using std::sqrt;
+  if (!(x > -a && x < a)) return T(0);
+  const T d1 = a - b1, d2 = a - b2;
+  if (d1 > 0 && x >= b1) return dir1 * f * p(x);
+  if (d2 > 0 && x <= -b2) return dir2 * f * p(x);
+  if (!(d1 > 0) && !(d2 > 0)) return T(0);  // fully stuck: Q = sigma = 0
+  if (!(tol > 0)) tol = boost::math::tools::root_epsilon<T>();
+  const T w = b1 + b2;
+  auto zone = [&](int side) -> T {
+    const T d = side > 0 ? d1 : d2;
+    if (!(d > 0)) return T(0);
+    const int dir = side > 0 ? dir1 : dir2;
+    if (dir == 0) return T(0);
+    const T ep = side > 0 ? b1 - x : x + b2;  // > 0 in the stick zone
+    const T sd = sqrt(d);
+    // g(u) = dir f p(xi) / sqrt(w + d u^2), xi = b +- d u^2
+    auto g = [&](const T &u, const T &uc) {
+      // uc > 0: distance 1 - u exact near the contact edge
+      T xi;
+      if (uc > 0) {
+        const T cdist = d * uc * (2 - uc);  // d (1 - u^2)
+        xi = side > 0 ? a - cdist : -a + cdist;
+      } else {
+        xi = side > 0 ? b1 + d * u * u : -b2 - d * u * u;
+      }
+      return dir * f * p(xi) / sqrt(w + d * u * u);
+    };
+    const T g0 = dir * f * p(side > 0 ? b1 : -b2) / sqrt(w);
+    std::vector<T> cuts;
+    for (const T &k : kinks) {
+      const T dist = side > 0 ? k - b1 : -b2 - k;
+      if (dist > 0 && dist < d) cuts.push_back(sqrt(dist / d));
+    }
+    T sum = 2 * g0 / sqrt(ep) * atan(sd / sqrt(ep));  // int 2 sd g0/(ep + d u^2)
+    cuts.push_back(T(0));
+    cuts.push_back(T(1));
+    std::sort(cuts.begin(), cuts.end());
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const T lo = cuts[i], hi = cuts[i + 1];
+      if (!(hi > lo)) continue;
+      sum += integrate_ts<T>(
+          [&](const T &u, const T &uc) {
+            const T ue = (uc > 0 && hi == T(1)) ? uc : T(-1);
+            return 2 * sd * (g(u, ue) - g0) / (ep + d * u * u);
+          },
+          lo, hi, tol);
+    }
+    return sum;
+  };
+  const T R = sqrt((b1 - x) * (x + b2));
+  return R / pi<T>() * (zone(+1) + zone(-1));
+}
+
+}}  // namespace hs::core
