@@ -68,6 +68,49 @@ for i in range(61):
     x=-math.cos(math.pi*i/60); print(x, math.sqrt(max(0.0,1-x*x)))" > "$tmp"
 js=$("$cli" solve --geometry samples --pressure-file "$tmp" --json) && echo "$js" | grep -q '"b1": 0.83210678' && ok || ko "samples of Hertz"
 rm -f "$tmp"
+# pressure files: whitespace or commas, a header line, '#' comments, CRLF; same result as plain columns
+tmp=$(mktemp); dir=$(mktemp -d)
+python3 -c "
+import math, sys
+rows = [(-math.cos(math.pi*i/60), math.sqrt(max(0.0, 1 - math.cos(math.pi*i/60)**2))) for i in range(61)]
+def w(name, head, fmt, eol):
+    with open(sys.argv[1] + '/' + name, 'w', newline='') as fh:
+        fh.write(head + ''.join(fmt % r + eol for r in rows))
+w('spaces.txt', '', '%r %r', '\\n')
+w('header.csv', 'x [m], p [Pa]\\n', '%r, %r', '\\n')
+w('tabs.txt', '# exported\\r\\nx\\tp\\r\\n', '  %r\\t%r   # comment', '\\r\\n')
+w('plain.csv', 'x,p\\n', '%r,%r', '\\n')" "$dir"
+for f in spaces.txt header.csv tabs.txt plain.csv; do
+  js=$("$cli" solve --geometry samples --pressure-file "$dir/$f" --json) && echo "$js" | grep -q '"b1": 0.83210678' && ok || ko "pressure file format $f"
+done
+rm -rf "$dir"
+# rejections name the file, the line and the rule
+rej() {  # rej CONTENT 'expected text'
+  printf '%b' "$1" > "$tmp"
+  err=$("$cli" solve --geometry samples --pressure-file "$tmp" 2>&1 >/dev/null); rc=$?
+  if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && printf '%s' "$err" | grep -qF -- "$2"; then ok
+  else ko "pressure file '$1': expected '$2', got (rc=$rc) $err"; fi
+}
+six="-0.9 0.43\n-0.5 0.86\n0 1\n0.5 0.86\n0.9 0.43\n"
+rej "" "line 1: the file is empty"
+rej "# nothing\n\nx p\n" "line 3: end of file, no samples"
+rej "x p\n-0.5 0.8\n0 1\n0.5 0.8\n" "line 4: end of file after 3 samples; need at least 6"
+rej "x p\n-0.5 -0.8\n$six" "line 2: negative pressure p = -0.8"
+rej "$six-0.2 0.9\n" "line 6: x = -0.2 does not increase (previous sample, line 5"
+rej "$six""0.9 0.5\n" "line 6: x = 0.9 does not increase"
+rej "-1.5 0\n$six" "line 1: x = -1.5 is outside the contact [-a, a] = [-1, 1]"
+rej "$six""0.95 nan\n" "line 6: p is NaN"
+rej "nan 1\n$six" "line 1: x is NaN"
+rej "-0.95 inf\n$six" "line 1: p is not finite"
+rej "-0.95 0.2 7\n$six" "line 1: 3 columns, expected 2"
+rej "-0.95,0.2,\n$six" "line 1: 3 columns, expected 2"
+rej "-0.95\n$six" "line 1: 1 column, expected 2"
+rej "x p\n-0.95 0.2\nfoo 0.3\n$six" "line 3: x 'foo' is not a number"
+rej "-0.95 0.2kPa\n$six" "line 1: p '0.2kPa' is not a number"
+rej "-1 0.5\n$six" "line 1: p = 0.5 at the contact edge x = -1"
+rej "-0.95 0\n$six" "line 1: p = 0 inside the contact"
+"$cli" solve --help | grep -q "first line may be a header" && ok || ko "--help documents the pressure file"
+rm -f "$tmp"
 for bad in "--geometry flat-rounded --flat-over-a 1" "--geometry power-law --exponent 0.5" "--geometry samples" "--geometry samples --pressure-file /nonexistent" "--exponent 3" "--geometry samples --digits 20" "--geometry flat-rounded --digits 171" "--geometry power-law --exponent 1 --digits 20" "--geometry flat-rounded --digits 20 --P 1000 --R 0.01 --E-star 1 --f 0.5 --Q 1 --sigma 0" "--exponent 3 --digits 20"; do
   err=$("$cli" solve $bad 2>&1 >/dev/null); rc=$?
   if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ]; then ok; else ko "bad geometry input '$bad' (rc=$rc): $err"; fi

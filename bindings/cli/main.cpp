@@ -24,7 +24,7 @@ const char *kUsage =
     "  --geometry G            hertz (default), flat-rounded, power-law, samples\n"
     "  --flat-over-a B         flat-rounded: flat half-width over contact half-width (default 0.5)\n"
     "  --exponent N            power-law: profile g = A|x|^N, N > 1 (default 2)\n"
-    "  --pressure-file F       samples: two columns x p, sqrt edge behaviour, x in [-a, a]\n"
+    "  --pressure-file F       samples: the pressure p at x, one sample per line (see below)\n"
     "  --Q-over-fP X           shear force ratio Q/(fP), |X| < 1   (default 0.5)\n"
     "  --sigma-over-fp0 Y      bulk tension ratio sigma/(f p0)      (default 0.5)\n"
     "  --a A --p0 P0 --f F --E-star E   scales\n"
@@ -44,6 +44,12 @@ const char *kUsage =
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
     "                          (hertz: N <= 390; flat-rounded, power-law: N <= 170, dimensionless)\n"
+    "pressure file (--geometry samples --pressure-file F):\n"
+    "  two columns x p per line, separated by spaces, tabs or one comma (CSV); '#' starts a\n"
+    "  comment; blank lines are skipped; the first line may be a header (e.g. 'x,p'). Rules:\n"
+    "  at least 6 samples; x finite and strictly increasing within [-a, a]; p finite, > 0\n"
+    "  inside the contact, 0 at x = -a or a if sampled, sqrt-like near the edges. A file\n"
+    "  breaking a rule is rejected with its line number and the rule.\n"
     "\n"
     "usage: halfslip table --Q-over-fP LIST --sigma-over-fp0 LIST [--digits N] [--format csv|jsonl]\n"
     "                      [--threads T] [--shard K/N] [--no-energy] [--a A --p0 P0 --f F --E-star E]\n"
@@ -74,6 +80,12 @@ double parse_number(const std::string &flag, const char *text) {
 std::string num(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string g10(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
   return buf;
 }
 
@@ -143,27 +155,125 @@ const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sig
                                              "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
                                              "--rtol", "--model", "--A"};
 
-// Pressure samples: two columns x p per line ('#' comments allowed).
-void read_samples(const std::string &path, std::vector<double> &xs, std::vector<double> &ps) {
+// Pressure samples (--pressure-file): two columns x p per line, separated by
+// whitespace or one comma; '#' starts a comment; blank lines are skipped; the
+// first non-comment line may be a header (its first field is not a number).
+// Every rejection names the file, the line and the rule broken.
+struct samples {
+  std::string path;
+  std::vector<double> x, p;
+  std::vector<int> line;  // line number of each sample
+  int last_line = 0;      // number of lines in the file
+};
+
+[[noreturn]] void bad_sample(const samples &s, int ln, const std::string &rule) {
+  die("bad --pressure-file '" + s.path + "', line " + std::to_string(ln) + ": " + rule);
+}
+
+std::string trim(const std::string &t) {
+  const size_t b = t.find_first_not_of(" \t"), e = t.find_last_not_of(" \t");
+  return b == std::string::npos ? "" : t.substr(b, e - b + 1);
+}
+
+// Fields of one line: comma-separated if it has a comma, else whitespace-separated.
+std::vector<std::string> split_fields(const std::string &t) {
+  std::vector<std::string> out;
+  if (t.find(',') != std::string::npos) {
+    size_t b = 0;
+    for (;;) {
+      const size_t c = t.find(',', b);
+      out.push_back(trim(t.substr(b, c == std::string::npos ? std::string::npos : c - b)));
+      if (c == std::string::npos) break;
+      b = c + 1;
+    }
+  } else {
+    size_t b = 0;
+    while ((b = t.find_first_not_of(" \t", b)) != std::string::npos) {
+      const size_t e = t.find_first_of(" \t", b);
+      out.push_back(t.substr(b, e == std::string::npos ? std::string::npos : e - b));
+      b = e;
+    }
+  }
+  return out;
+}
+
+bool is_number(const std::string &t, double &v) {
+  if (t.empty()) return false;
+  char *end = nullptr;
+  v = std::strtod(t.c_str(), &end);
+  return *end == '\0';
+}
+
+samples read_samples(const std::string &path) {
+  samples s;
+  s.path = path;
   FILE *f = std::fopen(path.c_str(), "r");
   if (!f) die("bad value for --pressure-file: cannot open '" + path + "'");
-  char line[512];
-  int ln = 0;
-  while (std::fgets(line, sizeof line, f)) {
-    ++ln;
-    char *p = line;
-    while (*p == ' ' || *p == '\t') ++p;
-    if (*p == '#' || *p == '\n' || *p == '\0') continue;
-    char *end = nullptr;
-    const double x = std::strtod(p, &end);
-    if (end == p) { std::fclose(f); die("bad value for --pressure-file: line " + std::to_string(ln) + " is not 'x p'"); }
-    char *end2 = nullptr;
-    const double v = std::strtod(end, &end2);
-    if (end2 == end) { std::fclose(f); die("bad value for --pressure-file: line " + std::to_string(ln) + " is not 'x p'"); }
-    xs.push_back(x);
-    ps.push_back(v);
-  }
+  std::string all;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) all.append(buf, n);
   std::fclose(f);
+  if (all.compare(0, 3, "\xEF\xBB\xBF") == 0) all.erase(0, 3);  // UTF-8 byte order mark
+  bool header_allowed = true;
+  size_t pos = 0;
+  while (pos < all.size()) {
+    size_t nl = all.find('\n', pos);
+    if (nl == std::string::npos) nl = all.size();
+    std::string t = all.substr(pos, nl - pos);
+    pos = nl + 1;
+    const int ln = ++s.last_line;
+    if (!t.empty() && t.back() == '\r') t.pop_back();
+    const size_t hash = t.find('#');
+    if (hash != std::string::npos) t.erase(hash);
+    t = trim(t);
+    if (t.empty()) continue;
+    const std::vector<std::string> fl = split_fields(t);
+    double x = 0, p = 0;
+    const bool xnum = is_number(fl[0], x);
+    if (!xnum && header_allowed && fl.size() >= 2) {  // a header such as "x p" or "x [m],p [Pa]"
+      header_allowed = false;
+      continue;
+    }
+    header_allowed = false;
+    if (fl.size() != 2)
+      bad_sample(s, ln, std::to_string(fl.size()) + " column" + (fl.size() == 1 ? "" : "s") +
+                            ", expected 2 (x p, separated by spaces, tabs or one comma)");
+    if (!xnum) bad_sample(s, ln, "x '" + fl[0] + "' is not a number");
+    if (!is_number(fl[1], p)) bad_sample(s, ln, "p '" + fl[1] + "' is not a number");
+    if (std::isnan(x) || std::isnan(p)) bad_sample(s, ln, std::string(std::isnan(x) ? "x" : "p") + " is NaN");
+    if (!std::isfinite(x) || !std::isfinite(p))
+      bad_sample(s, ln, std::string(!std::isfinite(x) ? "x" : "p") + " is not finite");
+    if (p < 0) bad_sample(s, ln, "negative pressure p = " + fl[1] + " (p must be >= 0)");
+    if (!s.x.empty() && !(x > s.x.back()))
+      bad_sample(s, ln, "x = " + fl[0] + " does not increase (previous sample, line " + std::to_string(s.line.back()) +
+                            ": x = " + g10(s.x.back()) + "; x must increase strictly)");
+    s.x.push_back(x);
+    s.p.push_back(p);
+    s.line.push_back(ln);
+  }
+  if (s.x.empty())
+    bad_sample(s, std::max(1, s.last_line), std::string(s.last_line ? "end of file, no samples (only blank, comment or header lines)"
+                                                       : "the file is empty") +
+                                   "; need at least 6 lines x p");
+  if (s.x.size() < 6)
+    bad_sample(s, s.last_line, "end of file after " + std::to_string(s.x.size()) + " samples; need at least 6");
+  return s;
+}
+
+// The rules that depend on the contact half-width a: x in [-a, a], p > 0
+// inside the contact and p = 0 at an edge sample (sqrt edge behaviour).
+void check_samples(const samples &s, double a) {
+  double pmax = 0;
+  for (double p : s.p) pmax = std::max(pmax, p);
+  for (size_t i = 0; i < s.x.size(); ++i) {
+    const double x = s.x[i], p = s.p[i];
+    if (!(x >= -a && x <= a))
+      bad_sample(s, s.line[i], "x = " + g10(x) + " is outside the contact [-a, a] = [" + g10(-a) + ", " + g10(a) + "]");
+    if ((x == -a || x == a) && p > 64 * 2.220446049250313e-16 * pmax)
+      bad_sample(s, s.line[i], "p = " + g10(p) + " at the contact edge x = " + g10(x) + " (p must vanish there)");
+    if (x > -a && x < a && !(p > 0))
+      bad_sample(s, s.line[i], "p = 0 inside the contact at x = " + g10(x) + " (p must be > 0 for |x| < a)");
+  }
 }
 
 bool is_dimensional(const Args &args) {
@@ -334,6 +444,7 @@ int cmd_solve(int argc, char **argv) {
   hs_geometry geo;
   hs_geometry_default(&geo);
   std::vector<double> sx, sp;
+  samples samp;
   if (geometry == "flat-rounded") {
     geo.kind = HS_GEOMETRY_FLAT_ROUNDED;
     if (args.count("--flat-over-a")) geo.flat_over_a = get("--flat-over-a", 0.5);
@@ -345,7 +456,9 @@ int cmd_solve(int argc, char **argv) {
   } else if (geometry == "samples") {
     geo.kind = HS_GEOMETRY_SAMPLES;
     if (!args.count("--pressure-file")) die("--geometry samples needs --pressure-file F (two columns x p)");
-    read_samples(args.at("--pressure-file"), sx, sp);
+    samp = read_samples(args.at("--pressure-file"));
+    sx = samp.x;
+    sp = samp.p;
     geo.n_samples = sx.size();
     geo.sample_x = sx.data();
     geo.sample_p = sp.data();
@@ -406,6 +519,7 @@ int cmd_solve(int argc, char **argv) {
     if (!(scene.p0 > 0)) die("bad value for --p0: must be > 0");
     if (!(scene.f > 0)) die("bad value for --f: must be > 0");
     if (!(scene.E_star > 0)) die("bad value for --E-star: must be > 0");
+    if (geometry == "samples") check_samples(samp, scene.a);
   }
   const int npts = args.count("--points") ? parse_int("--points", args.at("--points"), 0, 100000) : 0;
   hs_options opts;
