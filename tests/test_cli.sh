@@ -49,7 +49,8 @@ js=$("$cli" solve --digits 25 --json) && echo "$js" | python3 -c 'import json,sy
 "$cli" solve --digits 0 >/dev/null 2>&1 && ko "--digits 0 accepted" || ok
 # table: sharded outputs concatenate to the unsharded one
 full=$("$cli" table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 2) && ok || ko "table"
-[ "$(printf '%s\n' "$full" | wc -l)" -eq 7 ] && ok || ko "table rows"
+[ "$(printf '%s\n' "$full" | wc -l)" -eq 8 ] && ok || ko "table rows (provenance, header, 6 rows)"
+printf '%s\n' "$full" | head -1 | grep -qx "# halfslip [0-9.]*, 20 significant digits (reference backend), command: halfslip table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy" && ok || ko "table provenance line"
 cat_shards=$( for k in 1 2 3; do "$cli" table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 1 --shard $k/3; done )
 [ "$full" = "$cat_shards" ] && ok || ko "shards concatenate to the full table"
 jl=$("$cli" table --Q-over-fP 0.2,0.999 --sigma-over-fp0 0.5 --digits 20 --format jsonl --no-energy) && ok || ko "table jsonl"
@@ -121,13 +122,13 @@ done
 out=$("$cli" solve --digits 30 --geometry flat-rounded --flat-over-a 0.3 --Q-over-fP 0.3 --sigma-over-fp0 0.1) && echo "$out" | grep -q "b1       = 8.93988736671176220572189691154e-01   \[30 digits certified\]" && echo "$out" | grep -q "flat-rounded contact" && ok || ko "solve --digits --geometry flat-rounded"
 js=$("$cli" solve --digits 25 --geometry power-law --exponent 2 --json) && echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["geometry"] == "power-law" and d["inputs"]["exponent"] == "2" and d["b1_digits"] == 25, d' && echo "$js" | grep -q '"b1": "8.321067811865475244008444e-01"' && ok || ko "solve --digits --geometry power-law n = 2 is Hertz"
 full=$("$cli" table --geometry flat-rounded --flat-over-a 0.2:0.3:3 --Q-over-fP 0.3,0.6 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 2) && ok || ko "table flat-rounded"
-[ "$(printf '%s\n' "$full" | wc -l)" -eq 13 ] && ok || ko "table flat-rounded rows"
-printf '%s\n' "$full" | head -1 | grep -q "^flat_over_a,Q_over_fP,sigma_over_fp0,regime,status,b1,b1_digits" && ok || ko "table flat-rounded header"
-printf '%s\n' "$full" | awk -F, 'NR > 1 && ($5 != 0 || $7 != 20 || $13 != 20) { bad = 1 } END { exit bad }' && ok || ko "table flat-rounded: status 0 and 20 certified digits"
+[ "$(printf '%s\n' "$full" | wc -l)" -eq 14 ] && ok || ko "table flat-rounded rows"
+printf '%s\n' "$full" | sed -n 2p | grep -q "^flat_over_a,Q_over_fP,sigma_over_fp0,regime,status,b1,b1_digits" && ok || ko "table flat-rounded header"
+printf '%s\n' "$full" | awk -F, 'NR > 2 && ($5 != 0 || $7 != 20 || $13 != 20) { bad = 1 } END { exit bad }' && ok || ko "table flat-rounded: status 0 and 20 certified digits"
 printf '%s\n' "$full" | grep -q "^0.8,0.6,1.5,opposite-sign,0," && ok || ko "table flat-rounded: grid over b_f/a"
 cat_shards=$( for k in 1 2 3; do "$cli" table --geometry flat-rounded --flat-over-a 0.2:0.3:3 --Q-over-fP 0.3,0.6 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 1 --shard $k/3; done )
 [ "$full" = "$cat_shards" ] && ok || ko "flat-rounded shards concatenate to the full table"
-jl=$("$cli" table --geometry power-law --exponent 1.5,3 --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 15 --format jsonl --no-energy) && echo "$jl" | python3 -c 'import json,sys; r=[json.loads(l) for l in sys.stdin]; assert [x["exponent"] for x in r] == ["1.5", "3"] and all(x["b1_digits"] == 15 for x in r), r' && ok || ko "table power-law jsonl"
+jl=$("$cli" table --geometry power-law --exponent 1.5,3 --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 15 --format jsonl --no-energy) && echo "$jl" | python3 -c 'import json,sys; r=[json.loads(l) for l in sys.stdin]; assert r[0]["provenance"]["digits"] == 15; r = r[1:]; assert [x["exponent"] for x in r] == ["1.5", "3"] and all(x["b1_digits"] == 15 for x in r), r' && ok || ko "table power-law jsonl"
 "$cli" table --geometry power-law --exponent 2,0.5 --Q-over-fP 0.4 --sigma-over-fp0 0.5 >/dev/null 2>&1 && ko "table: bad exponent accepted" || ok
 "$cli" table --geometry flat-rounded --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 171 >/dev/null 2>&1 && ko "table: digits above the non-Hertz cap accepted" || ok
 
@@ -140,6 +141,22 @@ js=$("$cli" asymptotic-error --loading bulk --b-over-a 0.9 --json) && echo "$js"
 # bitwise reproducible run to run (separate processes)
 r1=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json); r2=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json)
 [ "$r1" = "$r2" ] && ok || ko "run-to-run reproducibility"
+
+# --opt=value, "did you mean", --no-energy, units, progress
+a=$("$cli" solve --Q-over-fP=0.3 --sigma-over-fp0=2 --json); b=$("$cli" solve --Q-over-fP 0.3 --sigma-over-fp0 2 --json)
+[ -n "$a" ] && [ "$a" = "$b" ] && ok || ko "--opt=value equals --opt value"
+err=$("$cli" solve --q-over-fp 0.3 2>&1 >/dev/null); echo "$err" | grep -q "did you mean --Q-over-fP?" && ok || ko "did you mean (case): $err"
+err=$("$cli" solve --sigma-over-fpo 1 2>&1 >/dev/null); echo "$err" | grep -q "did you mean --sigma-over-fp0?" && ok || ko "did you mean (typo): $err"
+err=$("$cli" table --no-enrgy 2>&1 >/dev/null); echo "$err" | grep -q "did you mean --no-energy?" && ok || ko "did you mean (table): $err"
+err=$("$cli" solve --frobnicate 1 2>&1 >/dev/null); echo "$err" | grep -q "did you mean" && ko "suggestion for a far-off flag: $err" || ok
+"$cli" solve --json=1 >/dev/null 2>&1 && ko "--json=1 accepted" || ok
+js=$("$cli" solve --no-energy --json) && echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["energy1"] is None and d["energy2"] is None and d["b1"] > 0' && ok || ko "solve --no-energy --json"
+out=$("$cli" solve --no-energy) && echo "$out" | grep -q "not computed (--no-energy)" && ok || ko "solve --no-energy report"
+out=$("$cli" solve --digits 20 --no-energy) && ! echo "$out" | grep -q energy1 && echo "$out" | grep -q "d2       = " && ok || ko "solve --digits --no-energy"
+out=$("$cli" solve --P 1000 --R 0.05 --E-star 1.15e11 --f 0.6 --Q 300 --sigma 2e6) && echo "$out" | grep -q "P = 1000 \[force per unit length\]" && echo "$out" | grep -q "b1 = .* \[length\]" && ok || ko "units in the report"
+"$cli" --help | grep -q "forces per unit length" && ok || ko "--help: P and Q per unit length"
+err=$("$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --digits 15 --no-energy --progress 2>&1 >/dev/null); echo "$err" | grep -q "1/1 rows" && ok || ko "table --progress: $err"
+err=$("$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --digits 15 --no-energy 2>&1 >/dev/null </dev/null); [ -z "$err" ] && ok || ko "no progress when stderr is not a terminal: $err"
 
 echo "cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <atomic>
 #include <map>
+#include <mutex>
 #include <string>
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -28,8 +30,11 @@ const char *kUsage =
     "  --Q-over-fP X           shear force ratio Q/(fP), |X| < 1   (default 0.5)\n"
     "  --sigma-over-fp0 Y      bulk tension ratio sigma/(f p0)      (default 0.5)\n"
     "  --a A --p0 P0 --f F --E-star E   scales\n"
-    "options (dimensional Hertz; all six together):\n"
+    "options (dimensional Hertz; all six together, in one consistent set of units, e.g. SI):\n"
     "  --P P --R R --E-star E --f F --Q Q --sigma S\n"
+    "  (plane strain: P and Q are forces per unit length of the contact, e.g. N/m; R a length;\n"
+    "   E* and sigma stresses, e.g. Pa; the report gives lengths, stresses and energies per\n"
+    "   unit length in the same units)\n"
     "  (flat-rounded: the same with R the corner radius, plus --flat-width b_f;\n"
     "   power-law: --P --A A --exponent N --E-star E --f F --Q Q --sigma S, profile g = A|x|^N)\n"
     "model (docs/models.md):\n"
@@ -41,6 +46,7 @@ const char *kUsage =
     "output:\n"
     "  --points N              also tabulate B_x, slip h and work W at N points per slip zone\n"
     "  --json                  one JSON object, numbers with 17 significant digits\n"
+    "  --no-energy             skip the zone energies (the slow part with --digits; null in JSON)\n"
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
     "                          (hertz: N <= 390; flat-rounded, power-law: N <= 170, dimensionless)\n"
@@ -52,17 +58,22 @@ const char *kUsage =
     "  breaking a rule is rejected with its line number and the rule.\n"
     "\n"
     "usage: halfslip table --Q-over-fP LIST --sigma-over-fp0 LIST [--digits N] [--format csv|jsonl]\n"
-    "                      [--threads T] [--shard K/N] [--no-energy] [--a A --p0 P0 --f F --E-star E]\n"
+    "                      [--threads T] [--shard K/N] [--no-energy] [--progress] [--a A --p0 P0 --f F --E-star E]\n"
     "                      [--geometry flat-rounded --flat-over-a LIST | --geometry power-law --exponent LIST]\n"
     "  High-precision benchmark table over the grid LIST x LIST (reference backend);\n"
     "  for a non-Hertz geometry also over its parameter (first column, outermost loop).\n"
     "  LIST is v1,v2,... or start:step:count (exact decimal arithmetic).\n"
     "  --shard K/N writes the K-th of N contiguous blocks of rows; the N outputs\n"
     "  concatenated in order equal the unsharded output (CSV header in shard 1 only).\n"
+    "  The first line records the provenance: CSV '# halfslip VERSION, N significant digits ...,\n"
+    "  command: ...', JSONL {\"provenance\": {\"halfslip\", \"digits\", \"energy\", \"command\"}}.\n"
+    "  --progress (or stderr being a terminal) prints rows done on stderr.\n"
     "\n"
     "usage: halfslip asymptotic-error --loading shear|bulk --b-over-a X [--json]\n"
     "  Energy dissipated in one slip zone: asymptotic edge model vs full Hertz solution\n"
-    "  at the same load (the load that gives slip zone b/a in the full solution).\n";
+    "  at the same load (the load that gives slip zone b/a in the full solution).\n"
+    "\n"
+    "Every option is given as --opt value or --opt=value. halfslip --version prints the version.\n";
 
 [[noreturn]] void die(const std::string &msg) {
   std::fprintf(stderr, "halfslip: %s\n", msg.c_str());
@@ -105,24 +116,89 @@ void check(int st, const std::string &what) {
 
 using Args = std::map<std::string, std::string>;
 
-// Parse "--key value" pairs (and the boolean flags given) after argv[first].
+// Edit distance, ignoring case (for "did you mean").
+size_t edit_distance(const std::string &a, const std::string &b) {
+  std::vector<size_t> d(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) d[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t prev = d[0];
+    d[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t cur = d[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+      d[j] = std::min({d[j] + 1, d[j - 1] + 1, prev + (same ? 0 : 1)});
+      prev = cur;
+    }
+  }
+  return d[b.size()];
+}
+
+[[noreturn]] void unknown_option(const std::string &a, const std::vector<std::string> &keys,
+                                 const std::vector<std::string> &flags) {
+  std::string best;
+  size_t bd = std::string::npos;
+  for (const auto *list : {&keys, &flags})
+    for (const auto &k : *list) {
+      const size_t d = edit_distance(a, k);
+      if (d < bd) { bd = d; best = k; }
+    }
+  const size_t tol = std::max<size_t>(2, a.size() / 4);
+  die("unknown option '" + a + "'" + (bd <= tol ? "; did you mean " + best + "?" : "") + " (see halfslip --help)");
+}
+
+// The command line as one string (for provenance), leaving out the options in skip.
+std::string command_line(int argc, char **argv, const std::vector<std::string> &skip) {
+  std::string out = "halfslip";
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    const std::string key = a.substr(0, a.find('='));
+    if (std::find(skip.begin(), skip.end(), key) != skip.end()) {
+      if (key == a && i + 1 < argc) ++i;  // "--key value": skip the value too
+      continue;
+    }
+    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                         "0123456789_./:=,+-@%") == std::string::npos;
+    if (!plain) {  // shell-quoted, so that the line can be run again
+      std::string q = "'";
+      for (const char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      a = q + "'";
+    }
+    out += " " + a;
+  }
+  return out;
+}
+
+// Parse "--key value" and "--key=value" pairs (and the boolean flags given) after argv[first].
 Args parse_args(int argc, char **argv, int first, const std::vector<std::string> &keys,
                 const std::vector<std::string> &flags) {
   Args args;
   for (int i = first; i < argc; ++i) {
-    const std::string a = argv[i];
+    std::string a = argv[i];
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);
     }
+    std::string value;
+    bool inline_value = false;
+    const size_t eq = a.find('=');
+    if (a.compare(0, 2, "--") == 0 && eq != std::string::npos) {
+      value = a.substr(eq + 1);
+      a.erase(eq);
+      inline_value = true;
+    }
     if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
+      if (inline_value) die("option " + a + " takes no value");
       args[a] = "1";
       continue;
     }
-    if (std::find(keys.begin(), keys.end(), a) == keys.end()) die("unknown option '" + a + "'");
-    if (i + 1 >= argc) die("option " + a + " needs a value");
+    if (std::find(keys.begin(), keys.end(), a) == keys.end()) unknown_option(a, keys, flags);
     if (args.count(a)) die("option " + a + " given twice");
-    args[a] = argv[++i];
+    if (!inline_value) {
+      if (i + 1 >= argc) die("option " + a + " needs a value");
+      value = argv[++i];
+    }
+    args[a] = value;
   }
   if (args.count("--geometry")) {
     const std::string g = args["--geometry"];
@@ -148,6 +224,21 @@ std::string decimal_arg(const Args &args, const char *k, const char *def) {
 }
 
 std::string json_str(const std::string &s) { return "\"" + s + "\""; }
+
+std::string json_escape(const std::string &s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
 
 // ---------------------------------------------------------------- solve
 const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
@@ -368,8 +459,12 @@ int solve_reference(const Args &args, int digits) {
   sm.struct_size = sizeof sm;
   check(hs_ref_solution_summary(sol, &sm), "summary");
   struct item { const char *key; int id; };
-  const item items[] = {{"a", HS_REF_A}, {"p0", HS_REF_P0}, {"b1", HS_REF_B1}, {"b2", HS_REF_B2}, {"d1", HS_REF_D1},
-                        {"d2", HS_REF_D2}, {"energy1", HS_REF_ENERGY1}, {"energy2", HS_REF_ENERGY2}};
+  std::vector<item> items = {{"a", HS_REF_A}, {"p0", HS_REF_P0}, {"b1", HS_REF_B1}, {"b2", HS_REF_B2},
+                             {"d1", HS_REF_D1}, {"d2", HS_REF_D2}};
+  if (!args.count("--no-energy")) {  // the zone energies are the slow part (docs/reference.md)
+    items.push_back({"energy1", HS_REF_ENERGY1});
+    items.push_back({"energy2", HS_REF_ENERGY2});
+  }
   std::vector<std::pair<std::string, int>> vals;
   std::vector<char> buf(size_t(digits) + 64);
   for (const auto &it : items) {
@@ -420,7 +515,7 @@ const char *model_name(int m) {
 }
 
 int cmd_solve(int argc, char **argv) {
-  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json"});
+  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json", "--no-energy"});
   auto get = [&](const char *k, double def) {
     return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
   };
@@ -541,8 +636,9 @@ int cmd_solve(int argc, char **argv) {
   hs_summary sm;
   sm.struct_size = sizeof sm;
   check(hs_solution_summary(sol, &sm), "summary");
-  double energy[2];
-  check(hs_solution_energy(sol, energy), "energy");
+  const bool want_energy = !args.count("--no-energy");
+  double energy[2] = {NAN, NAN};
+  if (want_energy) check(hs_solution_energy(sol, energy), "energy");
 
   // Points: N per slip zone, from the stick boundary to the contact edge.
   std::vector<double> xs;
@@ -570,8 +666,8 @@ int cmd_solve(int argc, char **argv) {
                 geometry.c_str(), regime_name(sm.regime), num(sm.a).c_str(), num(sm.p0).c_str(), num(P).c_str(),
                 num(scene.f).c_str(), num(scene.E_star).c_str(), num(scene.Q_over_fP).c_str(),
                 num(scene.sigma_over_fp0).c_str(), num(sm.b1).c_str(), num(sm.b2).c_str(), num(sm.d1).c_str(),
-                num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, num(energy[0]).c_str(), num(energy[1]).c_str(),
-                sm.iterations);
+                num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, want_energy ? num(energy[0]).c_str() : "null",
+                want_energy ? num(energy[1]).c_str() : "null", sm.iterations);
     std::printf(", \"quadrature_order\": %d, \"model\": \"%s\", \"error_estimate\": %s", sm.quadrature_order,
                 model_name(sm.model), num(sm.error_estimate).c_str());
     if (!xs.empty()) {
@@ -587,21 +683,31 @@ int cmd_solve(int argc, char **argv) {
     if (geometry == "flat-rounded") std::printf("  flat half-width b_f/a = %.10g\n", geo.flat_over_a);
     if (geometry == "power-law") std::printf("  profile exponent n = %.10g\n", geo.exponent);
     if (geometry == "samples") std::printf("  %zu pressure samples\n", geo.n_samples);
-    std::printf("  a = %.10g, p0 = %.10g, P = %.10g, f = %.10g, E* = %.10g\n", sm.a, sm.p0, P, scene.f,
-                scene.E_star);
-    std::printf("  Q/fP = %.10g, sigma/(f p0) = %.10g\n", scene.Q_over_fP, scene.sigma_over_fp0);
+    // Units: whatever consistent set the inputs use (SI: m, Pa, N/m); without
+    // dimensional input, a = p0 = f = E* = 1 unless given (docs/conventions.md).
+    const bool dim = is_dimensional(args);
+    std::printf("  units: %s\n", dim ? "those of the inputs (SI inputs: lengths in m, p0 and E* in Pa, P in N/m)"
+                                     : "dimensionless (lengths in units of a, stresses in units of p0 unless given)");
+    std::printf("  a = %.10g [length], p0 = %.10g [stress], P = %.10g [force per unit length]\n", sm.a, sm.p0, P);
+    std::printf("  f = %.10g, E* = %.10g [stress]\n", scene.f, scene.E_star);
+    std::printf("  Q/fP = %.10g, sigma/(f p0) = %.10g (dimensionless)\n", scene.Q_over_fP, scene.sigma_over_fp0);
     std::printf("regime: %s\n", regime_name(sm.regime));
     std::printf("  stick zone (-b2, b1): b1/a = %.15g, b2/a = %.15g\n", sm.b1 / sm.a, sm.b2 / sm.a);
+    std::printf("                        b1 = %.15g, b2 = %.15g [length]\n", sm.b1, sm.b2);
     std::printf("  slip zone 1 (b1, a):  d1/a = %.15g, slip direction %+d\n", sm.d1 / sm.a, sm.slip_dir1);
     std::printf("  slip zone 2 (-a,-b2): d2/a = %.15g, slip direction %+d\n", sm.d2 / sm.a, sm.slip_dir2);
-    std::printf("energy dissipated (monotonic loading, per unit length):\n");
-    std::printf("  zone 1: %.10g, zone 2: %.10g, total: %.10g\n", energy[0], energy[1], energy[0] + energy[1]);
+    if (want_energy) {
+      std::printf("energy dissipated (monotonic loading) [energy per unit length = force]:\n");
+      std::printf("  zone 1: %.10g, zone 2: %.10g, total: %.10g\n", energy[0], energy[1], energy[0] + energy[1]);
+    } else {
+      std::printf("energy dissipated: not computed (--no-energy)\n");
+    }
     if (sm.iterations) std::printf("  (Newton iterations: %d)\n", sm.iterations);
     if (sm.quadrature_order) std::printf("  (quadrature: Gauss-Legendre order %d per panel)\n", sm.quadrature_order);
     std::printf("model: %s, estimated error %.2g (largest relative error of d1, d2 and the energies)\n",
                 model_name(sm.model), sm.error_estimate);
     if (!xs.empty()) {
-      std::printf("%22s %22s %22s %22s\n", "x", "B_x", "h", "W");
+      std::printf("%22s %22s %22s %22s\n", "x [length]", "B_x", "h [length]", "W [force/length]");
       for (size_t i = 0; i < xs.size(); ++i)
         std::printf("%22.15g %22.15g %22.15g %22.15g\n", xs[i], B[i], h[i], W[i]);
     }
@@ -675,7 +781,7 @@ int cmd_table(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2,
                                {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--digits", "--format", "--threads",
                                 "--shard", "--a", "--p0", "--f", "--E-star", "--flat-over-a", "--exponent"},
-                               {"--no-energy"});
+                               {"--no-energy", "--progress"});
   if (!args.count("--Q-over-fP") || !args.count("--sigma-over-fp0"))
     die("table needs --Q-over-fP LIST and --sigma-over-fp0 LIST");
   const auto qs = parse_list("--Q-over-fP", args.at("--Q-over-fP"));
@@ -718,6 +824,10 @@ int cmd_table(int argc, char **argv) {
     items.push_back({"energy2", HS_REF_ENERGY2});
   }
   std::vector<std::string> lines(hi - lo);
+  // progress on stderr: when it is a terminal, or with --progress
+  const bool progress = args.count("--progress") || isatty(2);
+  std::atomic<size_t> done(0);
+  std::mutex progress_mutex;
   std::atomic<size_t> next(lo);
   std::atomic<bool> failed(false);
   std::string first_error;
@@ -756,11 +866,28 @@ int cmd_table(int argc, char **argv) {
       if (jsonl) line += "}";
       hs_ref_solution_free(sol);
       lines[r - lo] = line;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        std::fprintf(stderr, "\rhalfslip table: %zu/%zu rows", size_t(++done), hi - lo);
+        std::fflush(stderr);
+      }
     }
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto &t : pool) t.join();
+  if (progress) std::fprintf(stderr, "\n");
+  // provenance (first shard only, without --shard, --threads and --progress, so that
+  // the shards concatenate to the unsharded output): version, digits, command line
+  const std::string cmd = command_line(argc, argv, {"--shard", "--threads", "--progress"});
+  if (shard == 1) {
+    if (jsonl)
+      std::printf("{\"provenance\": {\"halfslip\": %s, \"digits\": %d, \"energy\": %s, \"command\": %s}}\n",
+                  json_str(hs_version_string()).c_str(), digits, energy ? "true" : "false", json_escape(cmd).c_str());
+    else
+      std::printf("# halfslip %s, %d significant digits (reference backend), command: %s\n", hs_version_string(),
+                  digits, cmd.c_str());
+  }
   if (!jsonl && shard == 1) {
     if (kind != HS_GEOMETRY_HERTZ) std::printf("%s,", pkey);
     std::printf("Q_over_fP,sigma_over_fp0,regime,status");
