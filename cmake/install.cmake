@@ -84,8 +84,13 @@ foreach(l IN LISTS HS_STATIC_DEPS)
   string(APPEND HS_PC_LIBS_PRIVATE " -l${l}")
 endforeach()
 string(STRIP "${HS_PC_LIBS_PRIVATE}" HS_PC_LIBS_PRIVATE)
-configure_file(${CMAKE_CURRENT_LIST_DIR}/halfslip.pc.in ${CMAKE_CURRENT_BINARY_DIR}/halfslip.pc @ONLY)
-install(FILES ${CMAKE_CURRENT_BINARY_DIR}/halfslip.pc DESTINATION ${HALFSLIP_INSTALL_PKGCONFIGDIR})
+# halfslip.pc gives a run path (-Wl,-rpath,${libdir}); with --static it links
+# libhalfslip.a (the shared library's -lhalfslip is in halfslip-shlib.pc, which
+# pkg-config emits after Libs.private, inside --as-needed).
+foreach(pc halfslip halfslip-shlib)
+  configure_file(${CMAKE_CURRENT_LIST_DIR}/${pc}.pc.in ${CMAKE_CURRENT_BINARY_DIR}/${pc}.pc @ONLY)
+  install(FILES ${CMAKE_CURRENT_BINARY_DIR}/${pc}.pc DESTINATION ${HALFSLIP_INSTALL_PKGCONFIGDIR})
+endforeach()
 if(TARGET halfslip_fortran)
   configure_file(${CMAKE_CURRENT_LIST_DIR}/halfslip-fortran.pc.in ${CMAKE_CURRENT_BINARY_DIR}/halfslip-fortran.pc
     @ONLY)

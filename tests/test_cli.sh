@@ -49,7 +49,8 @@ js=$("$cli" solve --digits 25 --json) && echo "$js" | python3 -c 'import json,sy
 "$cli" solve --digits 0 >/dev/null 2>&1 && ko "--digits 0 accepted" || ok
 # table: sharded outputs concatenate to the unsharded one
 full=$("$cli" table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 2) && ok || ko "table"
-[ "$(printf '%s\n' "$full" | wc -l)" -eq 7 ] && ok || ko "table rows"
+[ "$(printf '%s\n' "$full" | wc -l)" -eq 8 ] && ok || ko "table rows (provenance, header, 6 rows)"
+printf '%s\n' "$full" | head -1 | grep -qx "# halfslip [0-9.]*, 20 significant digits (reference backend), command: halfslip table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy" && ok || ko "table provenance line"
 cat_shards=$( for k in 1 2 3; do "$cli" table --Q-over-fP 0.1:0.3:3 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 1 --shard $k/3; done )
 [ "$full" = "$cat_shards" ] && ok || ko "shards concatenate to the full table"
 jl=$("$cli" table --Q-over-fP 0.2,0.999 --sigma-over-fp0 0.5 --digits 20 --format jsonl --no-energy) && ok || ko "table jsonl"
@@ -68,6 +69,49 @@ for i in range(61):
     x=-math.cos(math.pi*i/60); print(x, math.sqrt(max(0.0,1-x*x)))" > "$tmp"
 js=$("$cli" solve --geometry samples --pressure-file "$tmp" --json) && echo "$js" | grep -q '"b1": 0.83210678' && ok || ko "samples of Hertz"
 rm -f "$tmp"
+# pressure files: whitespace or commas, a header line, '#' comments, CRLF; same result as plain columns
+tmp=$(mktemp); dir=$(mktemp -d)
+python3 -c "
+import math, sys
+rows = [(-math.cos(math.pi*i/60), math.sqrt(max(0.0, 1 - math.cos(math.pi*i/60)**2))) for i in range(61)]
+def w(name, head, fmt, eol):
+    with open(sys.argv[1] + '/' + name, 'w', newline='') as fh:
+        fh.write(head + ''.join(fmt % r + eol for r in rows))
+w('spaces.txt', '', '%r %r', '\\n')
+w('header.csv', 'x [m], p [Pa]\\n', '%r, %r', '\\n')
+w('tabs.txt', '# exported\\r\\nx\\tp\\r\\n', '  %r\\t%r   # comment', '\\r\\n')
+w('plain.csv', 'x,p\\n', '%r,%r', '\\n')" "$dir"
+for f in spaces.txt header.csv tabs.txt plain.csv; do
+  js=$("$cli" solve --geometry samples --pressure-file "$dir/$f" --json) && echo "$js" | grep -q '"b1": 0.83210678' && ok || ko "pressure file format $f"
+done
+rm -rf "$dir"
+# rejections name the file, the line and the rule
+rej() {  # rej CONTENT 'expected text'
+  printf '%b' "$1" > "$tmp"
+  err=$("$cli" solve --geometry samples --pressure-file "$tmp" 2>&1 >/dev/null); rc=$?
+  if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && printf '%s' "$err" | grep -qF -- "$2"; then ok
+  else ko "pressure file '$1': expected '$2', got (rc=$rc) $err"; fi
+}
+six="-0.9 0.43\n-0.5 0.86\n0 1\n0.5 0.86\n0.9 0.43\n"
+rej "" "line 1: the file is empty"
+rej "# nothing\n\nx p\n" "line 3: end of file, no samples"
+rej "x p\n-0.5 0.8\n0 1\n0.5 0.8\n" "line 4: end of file after 3 samples; need at least 6"
+rej "x p\n-0.5 -0.8\n$six" "line 2: negative pressure p = -0.8"
+rej "$six-0.2 0.9\n" "line 6: x = -0.2 does not increase (previous sample, line 5"
+rej "$six""0.9 0.5\n" "line 6: x = 0.9 does not increase"
+rej "-1.5 0\n$six" "line 1: x = -1.5 is outside the contact [-a, a] = [-1, 1]"
+rej "$six""0.95 nan\n" "line 6: p is NaN"
+rej "nan 1\n$six" "line 1: x is NaN"
+rej "-0.95 inf\n$six" "line 1: p is not finite"
+rej "-0.95 0.2 7\n$six" "line 1: 3 columns, expected 2"
+rej "-0.95,0.2,\n$six" "line 1: 3 columns, expected 2"
+rej "-0.95\n$six" "line 1: 1 column, expected 2"
+rej "x p\n-0.95 0.2\nfoo 0.3\n$six" "line 3: x 'foo' is not a number"
+rej "-0.95 0.2kPa\n$six" "line 1: p '0.2kPa' is not a number"
+rej "-1 0.5\n$six" "line 1: p = 0.5 at the contact edge x = -1"
+rej "-0.95 0\n$six" "line 1: p = 0 inside the contact"
+"$cli" solve --help | grep -q "first line may be a header" && ok || ko "--help documents the pressure file"
+rm -f "$tmp"
 for bad in "--geometry flat-rounded --flat-over-a 1" "--geometry power-law --exponent 0.5" "--geometry samples" "--geometry samples --pressure-file /nonexistent" "--exponent 3" "--geometry samples --digits 20" "--geometry flat-rounded --digits 171" "--geometry power-law --exponent 1 --digits 20" "--geometry flat-rounded --digits 20 --P 1000 --R 0.01 --E-star 1 --f 0.5 --Q 1 --sigma 0" "--exponent 3 --digits 20"; do
   err=$("$cli" solve $bad 2>&1 >/dev/null); rc=$?
   if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ]; then ok; else ko "bad geometry input '$bad' (rc=$rc): $err"; fi
@@ -78,13 +122,13 @@ done
 out=$("$cli" solve --digits 30 --geometry flat-rounded --flat-over-a 0.3 --Q-over-fP 0.3 --sigma-over-fp0 0.1) && echo "$out" | grep -q "b1       = 8.93988736671176220572189691154e-01   \[30 digits certified\]" && echo "$out" | grep -q "flat-rounded contact" && ok || ko "solve --digits --geometry flat-rounded"
 js=$("$cli" solve --digits 25 --geometry power-law --exponent 2 --json) && echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["geometry"] == "power-law" and d["inputs"]["exponent"] == "2" and d["b1_digits"] == 25, d' && echo "$js" | grep -q '"b1": "8.321067811865475244008444e-01"' && ok || ko "solve --digits --geometry power-law n = 2 is Hertz"
 full=$("$cli" table --geometry flat-rounded --flat-over-a 0.2:0.3:3 --Q-over-fP 0.3,0.6 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 2) && ok || ko "table flat-rounded"
-[ "$(printf '%s\n' "$full" | wc -l)" -eq 13 ] && ok || ko "table flat-rounded rows"
-printf '%s\n' "$full" | head -1 | grep -q "^flat_over_a,Q_over_fP,sigma_over_fp0,regime,status,b1,b1_digits" && ok || ko "table flat-rounded header"
-printf '%s\n' "$full" | awk -F, 'NR > 1 && ($5 != 0 || $7 != 20 || $13 != 20) { bad = 1 } END { exit bad }' && ok || ko "table flat-rounded: status 0 and 20 certified digits"
+[ "$(printf '%s\n' "$full" | wc -l)" -eq 14 ] && ok || ko "table flat-rounded rows"
+printf '%s\n' "$full" | sed -n 2p | grep -q "^flat_over_a,Q_over_fP,sigma_over_fp0,regime,status,b1,b1_digits" && ok || ko "table flat-rounded header"
+printf '%s\n' "$full" | awk -F, 'NR > 2 && ($5 != 0 || $7 != 20 || $13 != 20) { bad = 1 } END { exit bad }' && ok || ko "table flat-rounded: status 0 and 20 certified digits"
 printf '%s\n' "$full" | grep -q "^0.8,0.6,1.5,opposite-sign,0," && ok || ko "table flat-rounded: grid over b_f/a"
 cat_shards=$( for k in 1 2 3; do "$cli" table --geometry flat-rounded --flat-over-a 0.2:0.3:3 --Q-over-fP 0.3,0.6 --sigma-over-fp0 0,1.5 --digits 20 --no-energy --threads 1 --shard $k/3; done )
 [ "$full" = "$cat_shards" ] && ok || ko "flat-rounded shards concatenate to the full table"
-jl=$("$cli" table --geometry power-law --exponent 1.5,3 --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 15 --format jsonl --no-energy) && echo "$jl" | python3 -c 'import json,sys; r=[json.loads(l) for l in sys.stdin]; assert [x["exponent"] for x in r] == ["1.5", "3"] and all(x["b1_digits"] == 15 for x in r), r' && ok || ko "table power-law jsonl"
+jl=$("$cli" table --geometry power-law --exponent 1.5,3 --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 15 --format jsonl --no-energy) && echo "$jl" | python3 -c 'import json,sys; r=[json.loads(l) for l in sys.stdin]; assert r[0]["provenance"]["digits"] == 15; r = r[1:]; assert [x["exponent"] for x in r] == ["1.5", "3"] and all(x["b1_digits"] == 15 for x in r), r' && ok || ko "table power-law jsonl"
 "$cli" table --geometry power-law --exponent 2,0.5 --Q-over-fP 0.4 --sigma-over-fp0 0.5 >/dev/null 2>&1 && ko "table: bad exponent accepted" || ok
 "$cli" table --geometry flat-rounded --Q-over-fP 0.4 --sigma-over-fp0 0.5 --digits 171 >/dev/null 2>&1 && ko "table: digits above the non-Hertz cap accepted" || ok
 
@@ -97,6 +141,22 @@ js=$("$cli" asymptotic-error --loading bulk --b-over-a 0.9 --json) && echo "$js"
 # bitwise reproducible run to run (separate processes)
 r1=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json); r2=$("$cli" solve --Q-over-fP 0.7 --sigma-over-fp0 3 --points 4 --json)
 [ "$r1" = "$r2" ] && ok || ko "run-to-run reproducibility"
+
+# --opt=value, "did you mean", --no-energy, units, progress
+a=$("$cli" solve --Q-over-fP=0.3 --sigma-over-fp0=2 --json); b=$("$cli" solve --Q-over-fP 0.3 --sigma-over-fp0 2 --json)
+[ -n "$a" ] && [ "$a" = "$b" ] && ok || ko "--opt=value equals --opt value"
+err=$("$cli" solve --q-over-fp 0.3 2>&1 >/dev/null); echo "$err" | grep -q "did you mean --Q-over-fP?" && ok || ko "did you mean (case): $err"
+err=$("$cli" solve --sigma-over-fpo 1 2>&1 >/dev/null); echo "$err" | grep -q "did you mean --sigma-over-fp0?" && ok || ko "did you mean (typo): $err"
+err=$("$cli" table --no-enrgy 2>&1 >/dev/null); echo "$err" | grep -q "did you mean --no-energy?" && ok || ko "did you mean (table): $err"
+err=$("$cli" solve --frobnicate 1 2>&1 >/dev/null); echo "$err" | grep -q "did you mean" && ko "suggestion for a far-off flag: $err" || ok
+"$cli" solve --json=1 >/dev/null 2>&1 && ko "--json=1 accepted" || ok
+js=$("$cli" solve --no-energy --json) && echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["energy1"] is None and d["energy2"] is None and d["b1"] > 0' && ok || ko "solve --no-energy --json"
+out=$("$cli" solve --no-energy) && echo "$out" | grep -q "not computed (--no-energy)" && ok || ko "solve --no-energy report"
+out=$("$cli" solve --digits 20 --no-energy) && ! echo "$out" | grep -q energy1 && echo "$out" | grep -q "d2       = " && ok || ko "solve --digits --no-energy"
+out=$("$cli" solve --P 1000 --R 0.05 --E-star 1.15e11 --f 0.6 --Q 300 --sigma 2e6) && echo "$out" | grep -q "P = 1000 \[force per unit length\]" && echo "$out" | grep -q "b1 = .* \[length\]" && ok || ko "units in the report"
+"$cli" --help | grep -q "forces per unit length" && ok || ko "--help: P and Q per unit length"
+err=$("$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --digits 15 --no-energy --progress 2>&1 >/dev/null); echo "$err" | grep -q "1/1 rows" && ok || ko "table --progress: $err"
+err=$("$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --digits 15 --no-energy 2>&1 >/dev/null </dev/null); [ -z "$err" ] && ok || ko "no progress when stderr is not a terminal: $err"
 
 echo "cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]

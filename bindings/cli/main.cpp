@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <atomic>
 #include <map>
+#include <mutex>
 #include <string>
 #include <thread>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -24,12 +26,15 @@ const char *kUsage =
     "  --geometry G            hertz (default), flat-rounded, power-law, samples\n"
     "  --flat-over-a B         flat-rounded: flat half-width over contact half-width (default 0.5)\n"
     "  --exponent N            power-law: profile g = A|x|^N, N > 1 (default 2)\n"
-    "  --pressure-file F       samples: two columns x p, sqrt edge behaviour, x in [-a, a]\n"
+    "  --pressure-file F       samples: the pressure p at x, one sample per line (see below)\n"
     "  --Q-over-fP X           shear force ratio Q/(fP), |X| < 1   (default 0.5)\n"
     "  --sigma-over-fp0 Y      bulk tension ratio sigma/(f p0)      (default 0.5)\n"
     "  --a A --p0 P0 --f F --E-star E   scales\n"
-    "options (dimensional Hertz; all six together):\n"
+    "options (dimensional Hertz; all six together, in one consistent set of units, e.g. SI):\n"
     "  --P P --R R --E-star E --f F --Q Q --sigma S\n"
+    "  (plane strain: P and Q are forces per unit length of the contact, e.g. N/m; R a length;\n"
+    "   E* and sigma stresses, e.g. Pa; the report gives lengths, stresses and energies per\n"
+    "   unit length in the same units)\n"
     "  (flat-rounded: the same with R the corner radius, plus --flat-width b_f;\n"
     "   power-law: --P --A A --exponent N --E-star E --f F --Q Q --sigma S, profile g = A|x|^N)\n"
     "model (docs/models.md):\n"
@@ -46,18 +51,28 @@ const char *kUsage =
     "  --fields FILE           write the stresses of both bodies on a grid |x| <= 2a, |y| <= 2a\n"
     "                          (and the surface, y = 0) as CSV: body,x,y,sxx,syy,sxy,max_principal,\n"
     "                          max_shear,von_mises (plane strain, nu = 0.3)\n"
+    "  --no-energy             skip the zone energies (the slow part with --digits; null in JSON)\n"
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
     "                          (hertz: N <= 390; flat-rounded, power-law: N <= 170, dimensionless)\n"
+    "pressure file (--geometry samples --pressure-file F):\n"
+    "  two columns x p per line, separated by spaces, tabs or one comma (CSV); '#' starts a\n"
+    "  comment; blank lines are skipped; the first line may be a header (e.g. 'x,p'). Rules:\n"
+    "  at least 6 samples; x finite and strictly increasing within [-a, a]; p finite, > 0\n"
+    "  inside the contact, 0 at x = -a or a if sampled, sqrt-like near the edges. A file\n"
+    "  breaking a rule is rejected with its line number and the rule.\n"
     "\n"
     "usage: halfslip table --Q-over-fP LIST --sigma-over-fp0 LIST [--digits N] [--format csv|jsonl]\n"
-    "                      [--threads T] [--shard K/N] [--no-energy] [--a A --p0 P0 --f F --E-star E]\n"
+    "                      [--threads T] [--shard K/N] [--no-energy] [--progress] [--a A --p0 P0 --f F --E-star E]\n"
     "                      [--geometry flat-rounded --flat-over-a LIST | --geometry power-law --exponent LIST]\n"
     "  High-precision benchmark table over the grid LIST x LIST (reference backend);\n"
     "  for a non-Hertz geometry also over its parameter (first column, outermost loop).\n"
     "  LIST is v1,v2,... or start:step:count (exact decimal arithmetic).\n"
     "  --shard K/N writes the K-th of N contiguous blocks of rows; the N outputs\n"
     "  concatenated in order equal the unsharded output (CSV header in shard 1 only).\n"
+    "  The first line records the provenance: CSV '# halfslip VERSION, N significant digits ...,\n"
+    "  command: ...', JSONL {\"provenance\": {\"halfslip\", \"digits\", \"energy\", \"command\"}}.\n"
+    "  --progress (or stderr being a terminal) prints rows done on stderr.\n"
     "\n"
     "usage: halfslip history (--path \"Q1,S1;Q2,S2;...\" | --cycle Qm,Qa,Sm,Sa,phase_deg [--cycles N]) [options]\n"
     "  Load history at constant normal load (docs/history.md): from (0, 0), (Q, sigma) moves along\n"
@@ -76,7 +91,9 @@ const char *kUsage =
     "\n"
     "usage: halfslip asymptotic-error --loading shear|bulk --b-over-a X [--json]\n"
     "  Energy dissipated in one slip zone: asymptotic edge model vs full Hertz solution\n"
-    "  at the same load (the load that gives slip zone b/a in the full solution).\n";
+    "  at the same load (the load that gives slip zone b/a in the full solution).\n"
+    "\n"
+    "Every option is given as --opt value or --opt=value. halfslip --version prints the version.\n";
 
 [[noreturn]] void die(const std::string &msg) {
   std::fprintf(stderr, "halfslip: %s\n", msg.c_str());
@@ -97,6 +114,12 @@ std::string num(double v) {
   return buf;
 }
 
+std::string g10(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
 const char *regime_name(int r) {
   switch (r) {
     case HS_REGIME_STUCK: return "stuck";
@@ -113,24 +136,89 @@ void check(int st, const std::string &what) {
 
 using Args = std::map<std::string, std::string>;
 
-// Parse "--key value" pairs (and the boolean flags given) after argv[first].
+// Edit distance, ignoring case (for "did you mean").
+size_t edit_distance(const std::string &a, const std::string &b) {
+  std::vector<size_t> d(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) d[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t prev = d[0];
+    d[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t cur = d[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+      d[j] = std::min({d[j] + 1, d[j - 1] + 1, prev + (same ? 0 : 1)});
+      prev = cur;
+    }
+  }
+  return d[b.size()];
+}
+
+[[noreturn]] void unknown_option(const std::string &a, const std::vector<std::string> &keys,
+                                 const std::vector<std::string> &flags) {
+  std::string best;
+  size_t bd = std::string::npos;
+  for (const auto *list : {&keys, &flags})
+    for (const auto &k : *list) {
+      const size_t d = edit_distance(a, k);
+      if (d < bd) { bd = d; best = k; }
+    }
+  const size_t tol = std::max<size_t>(2, a.size() / 4);
+  die("unknown option '" + a + "'" + (bd <= tol ? "; did you mean " + best + "?" : "") + " (see halfslip --help)");
+}
+
+// The command line as one string (for provenance), leaving out the options in skip.
+std::string command_line(int argc, char **argv, const std::vector<std::string> &skip) {
+  std::string out = "halfslip";
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    const std::string key = a.substr(0, a.find('='));
+    if (std::find(skip.begin(), skip.end(), key) != skip.end()) {
+      if (key == a && i + 1 < argc) ++i;  // "--key value": skip the value too
+      continue;
+    }
+    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                         "0123456789_./:=,+-@%") == std::string::npos;
+    if (!plain) {  // shell-quoted, so that the line can be run again
+      std::string q = "'";
+      for (const char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      a = q + "'";
+    }
+    out += " " + a;
+  }
+  return out;
+}
+
+// Parse "--key value" and "--key=value" pairs (and the boolean flags given) after argv[first].
 Args parse_args(int argc, char **argv, int first, const std::vector<std::string> &keys,
                 const std::vector<std::string> &flags) {
   Args args;
   for (int i = first; i < argc; ++i) {
-    const std::string a = argv[i];
+    std::string a = argv[i];
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);
     }
+    std::string value;
+    bool inline_value = false;
+    const size_t eq = a.find('=');
+    if (a.compare(0, 2, "--") == 0 && eq != std::string::npos) {
+      value = a.substr(eq + 1);
+      a.erase(eq);
+      inline_value = true;
+    }
     if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
+      if (inline_value) die("option " + a + " takes no value");
       args[a] = "1";
       continue;
     }
-    if (std::find(keys.begin(), keys.end(), a) == keys.end()) die("unknown option '" + a + "'");
-    if (i + 1 >= argc) die("option " + a + " needs a value");
+    if (std::find(keys.begin(), keys.end(), a) == keys.end()) unknown_option(a, keys, flags);
     if (args.count(a)) die("option " + a + " given twice");
-    args[a] = argv[++i];
+    if (!inline_value) {
+      if (i + 1 >= argc) die("option " + a + " needs a value");
+      value = argv[++i];
+    }
+    args[a] = value;
   }
   if (args.count("--geometry")) {
     const std::string g = args["--geometry"];
@@ -157,6 +245,21 @@ std::string decimal_arg(const Args &args, const char *k, const char *def) {
 
 std::string json_str(const std::string &s) { return "\"" + s + "\""; }
 
+std::string json_escape(const std::string &s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
 // ---------------------------------------------------------------- solve
 const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
                                              "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
@@ -164,27 +267,125 @@ const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sig
                                              "--rtol", "--model", "--A",
                                              "--pad-bulk", "--fields"};  // issue 15
 
-// Pressure samples: two columns x p per line ('#' comments allowed).
-void read_samples(const std::string &path, std::vector<double> &xs, std::vector<double> &ps) {
+// Pressure samples (--pressure-file): two columns x p per line, separated by
+// whitespace or one comma; '#' starts a comment; blank lines are skipped; the
+// first non-comment line may be a header (its first field is not a number).
+// Every rejection names the file, the line and the rule broken.
+struct samples {
+  std::string path;
+  std::vector<double> x, p;
+  std::vector<int> line;  // line number of each sample
+  int last_line = 0;      // number of lines in the file
+};
+
+[[noreturn]] void bad_sample(const samples &s, int ln, const std::string &rule) {
+  die("bad --pressure-file '" + s.path + "', line " + std::to_string(ln) + ": " + rule);
+}
+
+std::string trim(const std::string &t) {
+  const size_t b = t.find_first_not_of(" \t"), e = t.find_last_not_of(" \t");
+  return b == std::string::npos ? "" : t.substr(b, e - b + 1);
+}
+
+// Fields of one line: comma-separated if it has a comma, else whitespace-separated.
+std::vector<std::string> split_fields(const std::string &t) {
+  std::vector<std::string> out;
+  if (t.find(',') != std::string::npos) {
+    size_t b = 0;
+    for (;;) {
+      const size_t c = t.find(',', b);
+      out.push_back(trim(t.substr(b, c == std::string::npos ? std::string::npos : c - b)));
+      if (c == std::string::npos) break;
+      b = c + 1;
+    }
+  } else {
+    size_t b = 0;
+    while ((b = t.find_first_not_of(" \t", b)) != std::string::npos) {
+      const size_t e = t.find_first_of(" \t", b);
+      out.push_back(t.substr(b, e == std::string::npos ? std::string::npos : e - b));
+      b = e;
+    }
+  }
+  return out;
+}
+
+bool is_number(const std::string &t, double &v) {
+  if (t.empty()) return false;
+  char *end = nullptr;
+  v = std::strtod(t.c_str(), &end);
+  return *end == '\0';
+}
+
+samples read_samples(const std::string &path) {
+  samples s;
+  s.path = path;
   FILE *f = std::fopen(path.c_str(), "r");
   if (!f) die("bad value for --pressure-file: cannot open '" + path + "'");
-  char line[512];
-  int ln = 0;
-  while (std::fgets(line, sizeof line, f)) {
-    ++ln;
-    char *p = line;
-    while (*p == ' ' || *p == '\t') ++p;
-    if (*p == '#' || *p == '\n' || *p == '\0') continue;
-    char *end = nullptr;
-    const double x = std::strtod(p, &end);
-    if (end == p) { std::fclose(f); die("bad value for --pressure-file: line " + std::to_string(ln) + " is not 'x p'"); }
-    char *end2 = nullptr;
-    const double v = std::strtod(end, &end2);
-    if (end2 == end) { std::fclose(f); die("bad value for --pressure-file: line " + std::to_string(ln) + " is not 'x p'"); }
-    xs.push_back(x);
-    ps.push_back(v);
-  }
+  std::string all;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) all.append(buf, n);
   std::fclose(f);
+  if (all.compare(0, 3, "\xEF\xBB\xBF") == 0) all.erase(0, 3);  // UTF-8 byte order mark
+  bool header_allowed = true;
+  size_t pos = 0;
+  while (pos < all.size()) {
+    size_t nl = all.find('\n', pos);
+    if (nl == std::string::npos) nl = all.size();
+    std::string t = all.substr(pos, nl - pos);
+    pos = nl + 1;
+    const int ln = ++s.last_line;
+    if (!t.empty() && t.back() == '\r') t.pop_back();
+    const size_t hash = t.find('#');
+    if (hash != std::string::npos) t.erase(hash);
+    t = trim(t);
+    if (t.empty()) continue;
+    const std::vector<std::string> fl = split_fields(t);
+    double x = 0, p = 0;
+    const bool xnum = is_number(fl[0], x);
+    if (!xnum && header_allowed && fl.size() >= 2) {  // a header such as "x p" or "x [m],p [Pa]"
+      header_allowed = false;
+      continue;
+    }
+    header_allowed = false;
+    if (fl.size() != 2)
+      bad_sample(s, ln, std::to_string(fl.size()) + " column" + (fl.size() == 1 ? "" : "s") +
+                            ", expected 2 (x p, separated by spaces, tabs or one comma)");
+    if (!xnum) bad_sample(s, ln, "x '" + fl[0] + "' is not a number");
+    if (!is_number(fl[1], p)) bad_sample(s, ln, "p '" + fl[1] + "' is not a number");
+    if (std::isnan(x) || std::isnan(p)) bad_sample(s, ln, std::string(std::isnan(x) ? "x" : "p") + " is NaN");
+    if (!std::isfinite(x) || !std::isfinite(p))
+      bad_sample(s, ln, std::string(!std::isfinite(x) ? "x" : "p") + " is not finite");
+    if (p < 0) bad_sample(s, ln, "negative pressure p = " + fl[1] + " (p must be >= 0)");
+    if (!s.x.empty() && !(x > s.x.back()))
+      bad_sample(s, ln, "x = " + fl[0] + " does not increase (previous sample, line " + std::to_string(s.line.back()) +
+                            ": x = " + g10(s.x.back()) + "; x must increase strictly)");
+    s.x.push_back(x);
+    s.p.push_back(p);
+    s.line.push_back(ln);
+  }
+  if (s.x.empty())
+    bad_sample(s, std::max(1, s.last_line), std::string(s.last_line ? "end of file, no samples (only blank, comment or header lines)"
+                                                       : "the file is empty") +
+                                   "; need at least 6 lines x p");
+  if (s.x.size() < 6)
+    bad_sample(s, s.last_line, "end of file after " + std::to_string(s.x.size()) + " samples; need at least 6");
+  return s;
+}
+
+// The rules that depend on the contact half-width a: x in [-a, a], p > 0
+// inside the contact and p = 0 at an edge sample (sqrt edge behaviour).
+void check_samples(const samples &s, double a) {
+  double pmax = 0;
+  for (double p : s.p) pmax = std::max(pmax, p);
+  for (size_t i = 0; i < s.x.size(); ++i) {
+    const double x = s.x[i], p = s.p[i];
+    if (!(x >= -a && x <= a))
+      bad_sample(s, s.line[i], "x = " + g10(x) + " is outside the contact [-a, a] = [" + g10(-a) + ", " + g10(a) + "]");
+    if ((x == -a || x == a) && p > 64 * 2.220446049250313e-16 * pmax)
+      bad_sample(s, s.line[i], "p = " + g10(p) + " at the contact edge x = " + g10(x) + " (p must vanish there)");
+    if (x > -a && x < a && !(p > 0))
+      bad_sample(s, s.line[i], "p = 0 inside the contact at x = " + g10(x) + " (p must be > 0 for |x| < a)");
+  }
 }
 
 bool is_dimensional(const Args &args) {
@@ -279,8 +480,12 @@ int solve_reference(const Args &args, int digits) {
   sm.struct_size = sizeof sm;
   check(hs_ref_solution_summary(sol, &sm), "summary");
   struct item { const char *key; int id; };
-  const item items[] = {{"a", HS_REF_A}, {"p0", HS_REF_P0}, {"b1", HS_REF_B1}, {"b2", HS_REF_B2}, {"d1", HS_REF_D1},
-                        {"d2", HS_REF_D2}, {"energy1", HS_REF_ENERGY1}, {"energy2", HS_REF_ENERGY2}};
+  std::vector<item> items = {{"a", HS_REF_A}, {"p0", HS_REF_P0}, {"b1", HS_REF_B1}, {"b2", HS_REF_B2},
+                             {"d1", HS_REF_D1}, {"d2", HS_REF_D2}};
+  if (!args.count("--no-energy")) {  // the zone energies are the slow part (docs/reference.md)
+    items.push_back({"energy1", HS_REF_ENERGY1});
+    items.push_back({"energy2", HS_REF_ENERGY2});
+  }
   std::vector<std::pair<std::string, int>> vals;
   std::vector<char> buf(size_t(digits) + 64);
   for (const auto &it : items) {
@@ -368,6 +573,7 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
   hs_geometry_default(&geo);
   hs_scene_default(&scene);
+  samples samp;
   if (geometry == "flat-rounded") {
     geo.kind = HS_GEOMETRY_FLAT_ROUNDED;
     if (args.count("--flat-over-a")) geo.flat_over_a = get("--flat-over-a", 0.5);
@@ -379,7 +585,9 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
   } else if (geometry == "samples") {
     geo.kind = HS_GEOMETRY_SAMPLES;
     if (!args.count("--pressure-file")) die("--geometry samples needs --pressure-file F (two columns x p)");
-    read_samples(args.at("--pressure-file"), sx, sp);
+    samp = read_samples(args.at("--pressure-file"));
+    sx = samp.x;
+    sp = samp.p;
     geo.n_samples = sx.size();
     geo.sample_x = sx.data();
     geo.sample_p = sp.data();
@@ -438,11 +646,12 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
     if (!(scene.p0 > 0)) die("bad value for --p0: must be > 0");
     if (!(scene.f > 0)) die("bad value for --f: must be > 0");
     if (!(scene.E_star > 0)) die("bad value for --E-star: must be > 0");
+    if (geometry == "samples") check_samples(samp, scene.a);
   }
 }
 
 int cmd_solve(int argc, char **argv) {
-  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json"});
+  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json", "--no-energy"});
   auto get = [&](const char *k, double def) {
     return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
   };
@@ -487,8 +696,9 @@ int cmd_solve(int argc, char **argv) {
   hs_summary sm;
   sm.struct_size = sizeof sm;
   check(hs_solution_summary(sol, &sm), "summary");
-  double energy[2];
-  check(hs_solution_energy(sol, energy), "energy");
+  const bool want_energy = !args.count("--no-energy");
+  double energy[2] = {NAN, NAN};
+  if (want_energy) check(hs_solution_energy(sol, energy), "energy");
 
   // Points: N per slip zone, from the stick boundary to the contact edge.
   std::vector<double> xs;
@@ -528,8 +738,8 @@ int cmd_solve(int argc, char **argv) {
                 geometry.c_str(), regime_name(sm.regime), num(sm.a).c_str(), num(sm.p0).c_str(), num(P).c_str(),
                 num(scene.f).c_str(), num(scene.E_star).c_str(), num(scene.Q_over_fP).c_str(),
                 num(scene.sigma_over_fp0).c_str(), num(sm.b1).c_str(), num(sm.b2).c_str(), num(sm.d1).c_str(),
-                num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, num(energy[0]).c_str(), num(energy[1]).c_str(),
-                sm.iterations);
+                num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, want_energy ? num(energy[0]).c_str() : "null",
+                want_energy ? num(energy[1]).c_str() : "null", sm.iterations);
     std::printf(", \"quadrature_order\": %d, \"model\": \"%s\", \"error_estimate\": %s", sm.quadrature_order,
                 model_name(sm.model), num(sm.error_estimate).c_str());
     std::printf(", \"ramp_recedes\": %s, \"ramp_recedes_at_Q_over_fP\": %s", recedes ? "true" : "false",
@@ -555,15 +765,25 @@ int cmd_solve(int argc, char **argv) {
     if (geometry == "flat-rounded") std::printf("  flat half-width b_f/a = %.10g\n", geo.flat_over_a);
     if (geometry == "power-law") std::printf("  profile exponent n = %.10g\n", geo.exponent);
     if (geometry == "samples") std::printf("  %zu pressure samples\n", geo.n_samples);
-    std::printf("  a = %.10g, p0 = %.10g, P = %.10g, f = %.10g, E* = %.10g\n", sm.a, sm.p0, P, scene.f,
-                scene.E_star);
-    std::printf("  Q/fP = %.10g, sigma/(f p0) = %.10g\n", scene.Q_over_fP, scene.sigma_over_fp0);
+    // Units: whatever consistent set the inputs use (SI: m, Pa, N/m); without
+    // dimensional input, a = p0 = f = E* = 1 unless given (docs/conventions.md).
+    const bool dim = is_dimensional(args);
+    std::printf("  units: %s\n", dim ? "those of the inputs (SI inputs: lengths in m, p0 and E* in Pa, P in N/m)"
+                                     : "dimensionless (lengths in units of a, stresses in units of p0 unless given)");
+    std::printf("  a = %.10g [length], p0 = %.10g [stress], P = %.10g [force per unit length]\n", sm.a, sm.p0, P);
+    std::printf("  f = %.10g, E* = %.10g [stress]\n", scene.f, scene.E_star);
+    std::printf("  Q/fP = %.10g, sigma/(f p0) = %.10g (dimensionless)\n", scene.Q_over_fP, scene.sigma_over_fp0);
     std::printf("regime: %s\n", regime_name(sm.regime));
     std::printf("  stick zone (-b2, b1): b1/a = %.15g, b2/a = %.15g\n", sm.b1 / sm.a, sm.b2 / sm.a);
+    std::printf("                        b1 = %.15g, b2 = %.15g [length]\n", sm.b1, sm.b2);
     std::printf("  slip zone 1 (b1, a):  d1/a = %.15g, slip direction %+d\n", sm.d1 / sm.a, sm.slip_dir1);
     std::printf("  slip zone 2 (-a,-b2): d2/a = %.15g, slip direction %+d\n", sm.d2 / sm.a, sm.slip_dir2);
-    std::printf("energy dissipated (monotonic loading, per unit length):\n");
-    std::printf("  zone 1: %.10g, zone 2: %.10g, total: %.10g\n", energy[0], energy[1], energy[0] + energy[1]);
+    if (want_energy) {
+      std::printf("energy dissipated (monotonic loading) [energy per unit length = force]:\n");
+      std::printf("  zone 1: %.10g, zone 2: %.10g, total: %.10g\n", energy[0], energy[1], energy[0] + energy[1]);
+    } else {
+      std::printf("energy dissipated: not computed (--no-energy)\n");
+    }
     if (sm.iterations) std::printf("  (Newton iterations: %d)\n", sm.iterations);
     if (sm.quadrature_order) std::printf("  (quadrature: Gauss-Legendre order %d per panel)\n", sm.quadrature_order);
     std::printf("model: %s, estimated error %.2g (largest relative error of d1, d2 and the energies)\n",
@@ -580,7 +800,7 @@ int cmd_solve(int argc, char **argv) {
                     surf[b][1] / sm.a, surf[b][2], surf[b][3] / sm.a, surf[b][4]);
     }
     if (!xs.empty()) {
-      std::printf("%22s %22s %22s %22s\n", "x", "B_x", "h", "W");
+      std::printf("%22s %22s %22s %22s\n", "x [length]", "B_x", "h [length]", "W [force/length]");
       for (size_t i = 0; i < xs.size(); ++i)
         std::printf("%22.15g %22.15g %22.15g %22.15g\n", xs[i], B[i], h[i], W[i]);
     }
@@ -830,7 +1050,7 @@ int cmd_table(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2,
                                {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--digits", "--format", "--threads",
                                 "--shard", "--a", "--p0", "--f", "--E-star", "--flat-over-a", "--exponent"},
-                               {"--no-energy"});
+                               {"--no-energy", "--progress"});
   if (!args.count("--Q-over-fP") || !args.count("--sigma-over-fp0"))
     die("table needs --Q-over-fP LIST and --sigma-over-fp0 LIST");
   const auto qs = parse_list("--Q-over-fP", args.at("--Q-over-fP"));
@@ -873,6 +1093,10 @@ int cmd_table(int argc, char **argv) {
     items.push_back({"energy2", HS_REF_ENERGY2});
   }
   std::vector<std::string> lines(hi - lo);
+  // progress on stderr: when it is a terminal, or with --progress
+  const bool progress = args.count("--progress") || isatty(2);
+  std::atomic<size_t> done(0);
+  std::mutex progress_mutex;
   std::atomic<size_t> next(lo);
   std::atomic<bool> failed(false);
   std::string first_error;
@@ -911,11 +1135,28 @@ int cmd_table(int argc, char **argv) {
       if (jsonl) line += "}";
       hs_ref_solution_free(sol);
       lines[r - lo] = line;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        std::fprintf(stderr, "\rhalfslip table: %zu/%zu rows", size_t(++done), hi - lo);
+        std::fflush(stderr);
+      }
     }
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto &t : pool) t.join();
+  if (progress) std::fprintf(stderr, "\n");
+  // provenance (first shard only, without --shard, --threads and --progress, so that
+  // the shards concatenate to the unsharded output): version, digits, command line
+  const std::string cmd = command_line(argc, argv, {"--shard", "--threads", "--progress"});
+  if (shard == 1) {
+    if (jsonl)
+      std::printf("{\"provenance\": {\"halfslip\": %s, \"digits\": %d, \"energy\": %s, \"command\": %s}}\n",
+                  json_str(hs_version_string()).c_str(), digits, energy ? "true" : "false", json_escape(cmd).c_str());
+    else
+      std::printf("# halfslip %s, %d significant digits (reference backend), command: %s\n", hs_version_string(),
+                  digits, cmd.c_str());
+  }
   if (!jsonl && shard == 1) {
     if (kind != HS_GEOMETRY_HERTZ) std::printf("%s,", pkey);
     std::printf("Q_over_fP,sigma_over_fp0,regime,status");

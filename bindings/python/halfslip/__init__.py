@@ -1,6 +1,7 @@
 """halfslip: half-plane partial-slip contact (Python binding of the C ABI).
 
-Pure Python (ctypes, standard library only). The shared library
+Pure Python (ctypes, standard library only; numpy arrays are accepted and
+returned when numpy is installed, but numpy is not required). The shared library
 libhalfslip.so.0 is looked for next to this package first (also in the
 library directory recorded by ``cmake --install``), then at the path in the
 environment variable ``HALFSLIP_LIBRARY``, then by the system loader
@@ -15,11 +16,14 @@ environment variable ``HALFSLIP_LIBRARY``, then by the system loader
 
 Sign conventions: docs/conventions.md. Errors raise HalfslipError, whose
 status is the C status code and whose message is the C library's
-hs_strerror text.
+hs_strerror text followed by the arguments concerned (e.g. "digits=1000");
+an argument that is not a number, or an unknown model or geometry name,
+raises ValueError naming the argument and its value.
 """
 
 import array
 import ctypes
+import enum
 import sys
 from ctypes import byref, c_double, c_int, c_size_t
 
@@ -27,7 +31,7 @@ from . import _clib
 
 __version__ = "0.3.0"
 __all__ = [
-    "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified",
+    "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified", "Model", "Regime",
     "solve", "from_hertz_loads", "from_power_law_loads", "from_flat_rounded_loads", "solve_reference", "ref_max_digits",
     "version", "library_version", "library_path", "strerror",
 ]
@@ -55,14 +59,50 @@ ERR_BAD_NUMBER = 15
 ERR_TOLERANCE = 16
 ERR_NOT_APPLICABLE = 17
 
-MODEL_DEFAULT = 0
-MODEL_AUTO = 1
-MODEL_ASYMPTOTIC = 2
-MODEL_CLOSED_FORM = 3
-MODEL_QUADRATURE = 4
-MODEL_REFERENCE = 5
-_MODEL_NAMES = {"default": MODEL_DEFAULT, "auto": MODEL_AUTO, "asymptotic": MODEL_ASYMPTOTIC,
-                "closed-form": MODEL_CLOSED_FORM, "quadrature": MODEL_QUADRATURE, "reference": MODEL_REFERENCE}
+
+class _NamedInt(enum.IntEnum):
+    """An int with a name: str() gives the name used by the command line and
+    the docs ("closed-form", "same-sign"); it compares equal to the C value."""
+
+    def __str__(self):
+        return self.name.lower().replace("_", "-")
+
+    def __format__(self, spec):
+        return format(str(self), spec)
+
+    @classmethod
+    def _parse(cls, value, what):
+        if isinstance(value, str):
+            try:
+                return cls[value.strip().upper().replace("-", "_")]
+            except KeyError:
+                pass
+        elif not isinstance(value, bool) and isinstance(value, int):
+            try:
+                return cls(value)
+            except ValueError:
+                pass
+        raise ValueError("halfslip: %s=%r is not a %s (one of %s)"
+                         % (what, value, cls.__name__.lower(), ", ".join(str(m) for m in cls)))
+
+
+class Model(_NamedInt):
+    """hs_options.model / hs_summary.model (HS_MODEL_*), docs/models.md."""
+    DEFAULT = 0
+    AUTO = 1
+    ASYMPTOTIC = 2
+    CLOSED_FORM = 3
+    QUADRATURE = 4
+    REFERENCE = 5
+
+
+MODEL_DEFAULT = Model.DEFAULT
+MODEL_AUTO = Model.AUTO
+MODEL_ASYMPTOTIC = Model.ASYMPTOTIC
+MODEL_CLOSED_FORM = Model.CLOSED_FORM
+MODEL_QUADRATURE = Model.QUADRATURE
+MODEL_REFERENCE = Model.REFERENCE
+_MODEL_NAMES = {str(m): m for m in Model}
 
 GEOMETRY_HERTZ = 1
 GEOMETRY_FLAT_ROUNDED = 2
@@ -70,14 +110,61 @@ GEOMETRY_POWER_LAW = 3
 GEOMETRY_SAMPLES = 4
 GEOMETRY_CALLBACK = 5
 
-REGIME_STUCK = 0
-REGIME_SAME_SIGN = 1
-REGIME_OPPOSITE_SIGN = 2
 
-_REGIME_NAMES = {REGIME_STUCK: "stuck", REGIME_SAME_SIGN: "same-sign", REGIME_OPPOSITE_SIGN: "opposite-sign"}
+
+class Regime(_NamedInt):
+    """hs_summary.regime (HS_REGIME_*): the slip zones' directions."""
+    STUCK = 0
+    SAME_SIGN = 1
+    OPPOSITE_SIGN = 2
+
+
+REGIME_STUCK = Regime.STUCK
+REGIME_SAME_SIGN = Regime.SAME_SIGN
+REGIME_OPPOSITE_SIGN = Regime.OPPOSITE_SIGN
+
+_REGIME_NAMES = {r: str(r) for r in Regime}
+
+
+def _enum_or_int(cls, v):
+    try:
+        return cls(v)
+    except ValueError:
+        return v
 _GEOMETRY_NAMES = {"hertz": GEOMETRY_HERTZ, "flat-rounded": GEOMETRY_FLAT_ROUNDED, "power-law": GEOMETRY_POWER_LAW,
                    "samples": GEOMETRY_SAMPLES, "callback": GEOMETRY_CALLBACK}
 _STATUS_NAMES = {v: "HS_" + k for k, v in list(globals().items()) if k == "OK" or k.startswith("ERR_")}
+
+# The arguments a status code is about, named in HalfslipError's message.
+_ALL = None
+_STATUS_ARGS = {
+    ERR_NOT_FINITE: _ALL,
+    ERR_BAD_SIZE: ("a", "p0", "E_star", "P", "R", "A", "flat_width", "samples"),
+    ERR_BAD_FRICTION: ("f",),
+    ERR_GROSS_SLIDING: ("Q_over_fP", "Q", "P", "f"),
+    ERR_BAD_GEOMETRY: ("geometry", "flat_over_a", "exponent", "n", "samples", "flat_width", "R", "A", "model"),
+    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry"),
+    ERR_BAD_NUMBER: _ALL,
+    ERR_TOLERANCE: ("rtol", "model"),
+    ERR_NOT_APPLICABLE: ("model", "geometry", "rtol"),
+    ERR_POINT_OUTSIDE: ("x",),
+}
+
+
+def _detail(status, values):
+    """'name=value, ...' for the given arguments that the status concerns."""
+    keys = _STATUS_ARGS.get(status, ())
+    items = [(k, v) for k, v in values.items() if v is not None and (keys is _ALL or k in keys)]
+    return ", ".join("%s=%r" % (k, v) for k, v in items)
+
+
+def _float(v, name, where):
+    """float(v), or ValueError naming the argument and its value."""
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise ValueError("halfslip.%s: %s=%r is not a number" % (where, name, v)) from None
+
 
 # quantity and evaluation selectors of hs_ref_value / hs_ref_eval
 _REF_QUANTITIES = {"b1": 1, "b2": 2, "d1": 3, "d2": 4, "energy1": 5, "energy2": 6, "a": 7, "p0": 8}
@@ -126,23 +213,27 @@ class HalfslipError(RuntimeError):
     """A halfslip C function returned an error status.
 
     Attributes: status (the HS_ERR_* code, also exported here as ERR_*),
-    message (hs_strerror's text) and function (the C function's name)."""
+    message (hs_strerror's text), function (the C function's name) and
+    detail (the arguments concerned with their values, e.g. "digits=1000",
+    or "")."""
 
-    def __init__(self, status, function=None):
+    def __init__(self, status, function=None, detail=""):
         self.status = int(status)
         self.message = strerror(self.status)
         self.function = function
+        self.detail = detail or ""
         name = _STATUS_NAMES.get(self.status, "unknown status")
         where = "%s: " % function if function else ""
-        super().__init__("%s%s (%s = %d)" % (where, self.message, name, self.status))
+        args = ", with %s" % self.detail if self.detail else ""
+        super().__init__("%s%s (%s = %d)%s" % (where, self.message, name, self.status, args))
 
     def __reduce__(self):  # picklable (multiprocessing)
-        return (HalfslipError, (self.status, self.function))
+        return (HalfslipError, (self.status, self.function, self.detail))
 
 
-def _check(status, function):
+def _check(status, function, values=None):
     if status != 0:
-        raise HalfslipError(status, function)
+        raise HalfslipError(status, function, _detail(status, values or {}))
 
 
 def version():
@@ -199,6 +290,14 @@ def _points(x):
     return (c_double * n).from_buffer(values), n, False
 
 
+def _numpy_of(x):
+    """The numpy module if x is a numpy array (numpy is never imported here)."""
+    np = sys.modules.get("numpy")
+    if np is not None and isinstance(x, np.ndarray):
+        return np
+    return None
+
+
 # ---- double-precision solves ---------------------------------------------------------------
 
 class Scene:
@@ -216,7 +315,7 @@ class Scene:
         given = dict(a=a, p0=p0, f=f, E_star=E_star, Q_over_fP=Q_over_fP, sigma_over_fp0=sigma_over_fp0)
         for k, v in given.items():
             if v is not None:
-                setattr(c, k, float(v))
+                setattr(c, k, _float(v, k, "Scene"))
         if geometry is not None:
             c.geometry = int(geometry)
         self._c = c
@@ -256,28 +355,35 @@ class Scene:
         "reference" or a MODEL_* value): with "auto", the cheapest model whose
         error estimate meets rtol (docs/models.md)."""
         opts = None
+        if model is not None:
+            model = Model._parse(model, "model")
         if max_iterations is not None or rtol is not None or model is not None:
             o = _clib.Options()
             _check(_lib.hs_options_default(byref(o)), "hs_options_default")
             if max_iterations is not None:
-                o.max_iterations = int(max_iterations)
+                if isinstance(max_iterations, bool) or not isinstance(max_iterations, int):
+                    raise ValueError("halfslip.solve: max_iterations=%r is not an integer" % (max_iterations,))
+                o.max_iterations = max_iterations
             if rtol is not None:
-                o.rtol = float(rtol)
+                o.rtol = _float(rtol, "rtol", "solve")
             if model is not None:
-                o.model = _MODEL_NAMES[model] if isinstance(model, str) else int(model)
+                o.model = model
             opts = byref(o)
         kind = _geometry_kind(geometry, flat_over_a, exponent, samples, pressure)
+        values = {k: getattr(self, k) for k in self._FIELDS}
+        values.update(geometry=geometry, flat_over_a=flat_over_a, exponent=exponent, rtol=rtol,
+                      max_iterations=max_iterations, model=None if model is None else str(model))
         h = _clib.SolutionP()
         if kind is None:
-            _check(_lib.hs_solve(byref(self._c), opts, byref(h)), "hs_solve")
+            _check(_lib.hs_solve(byref(self._c), opts, byref(h)), "hs_solve", values)
             return Solution(h)
         g = _clib.Geometry()
         _check(_lib.hs_geometry_default(byref(g)), "hs_geometry_default")
         g.kind = kind
         if flat_over_a is not None:
-            g.flat_over_a = float(flat_over_a)
+            g.flat_over_a = _float(flat_over_a, "flat_over_a", "solve")
         if exponent is not None:
-            g.exponent = float(exponent)
+            g.exponent = _float(exponent, "exponent", "solve")
         arrays = None
         if samples is not None:
             try:
@@ -288,6 +394,7 @@ class Scene:
             if nx != np_:
                 raise ValueError("halfslip: samples: %d abscissae but %d pressures" % (nx, np_))
             arrays = (xa, pa)   # alive during the call; the library copies them
+            values["samples"] = "(%d points)" % nx
             g.n_samples = nx
             if nx:
                 g.sample_x = ctypes.cast(xa, ctypes.POINTER(c_double))
@@ -299,7 +406,7 @@ class Scene:
         st = _lib.hs_solve_geometry(byref(self._c), byref(g), opts, byref(h))
         del arrays
         if st != 0:
-            _raise(st, "hs_solve_geometry", callback)
+            _raise(st, "hs_solve_geometry", callback, values)
         return Solution(h, callback)
 
 
@@ -344,20 +451,21 @@ class _PressureCallback:
             return float("nan")
 
 
-def _raise(status, function, callback=None):
+def _raise(status, function, callback=None, values=None):
     if callback is not None and callback.error is not None:
         err, callback.error = callback.error, None
         raise err
-    raise HalfslipError(status, function)
+    raise HalfslipError(status, function, _detail(status, values or {}))
 
 
 def from_hertz_loads(P, R, E_star, f, Q, sigma):
     """Scene of a cylinder (radius of relative curvature R) pressed by the
     normal load P (per unit length), with shear force Q and bulk tension
     sigma: a = sqrt(4PR/(pi E*)), p0 = 2P/(pi a). Returns a Scene."""
+    v = dict(P=P, R=R, E_star=E_star, f=f, Q=Q, sigma=sigma)
+    x = [_float(val, k, "from_hertz_loads") for k, val in v.items()]
     c = _clib.Scene()
-    _check(_lib.hs_scene_from_hertz_loads(float(P), float(R), float(E_star), float(f), float(Q),
-                                          float(sigma), byref(c)), "hs_scene_from_hertz_loads")
+    _check(_lib.hs_scene_from_hertz_loads(*x, byref(c)), "hs_scene_from_hertz_loads", v)
     return Scene._from_c(c)
 
 
@@ -365,9 +473,10 @@ def from_power_law_loads(P, A, n, E_star, f, Q, sigma):
     """Scene of a power-law profile g = A|x|^n (solve it with exponent=n)
     under the normal load P: a from P = (E*/2) n A a^n sqrt(pi)
     Gamma((n+1)/2)/Gamma(n/2+1), p0 = 2P/(pi a). Returns a Scene."""
+    v = dict(P=P, A=A, n=n, E_star=E_star, f=f, Q=Q, sigma=sigma)
+    x = [_float(val, k, "from_power_law_loads") for k, val in v.items()]
     c = _clib.Scene()
-    _check(_lib.hs_scene_from_power_law_loads(float(P), float(A), float(n), float(E_star), float(f), float(Q),
-                                              float(sigma), byref(c)), "hs_scene_from_power_law_loads")
+    _check(_lib.hs_scene_from_power_law_loads(*x, byref(c)), "hs_scene_from_power_law_loads", v)
     return Scene._from_c(c)
 
 
@@ -375,27 +484,28 @@ def from_flat_rounded_loads(P, R, flat_width, E_star, f, Q, sigma):
     """Scene of a flat punch (half-width flat_width) with corners of radius R
     under the normal load P. Returns (Scene, flat_over_a); solve the scene
     with flat_over_a=flat_over_a."""
+    v = dict(P=P, R=R, flat_width=flat_width, E_star=E_star, f=f, Q=Q, sigma=sigma)
+    x = [_float(val, k, "from_flat_rounded_loads") for k, val in v.items()]
     c = _clib.Scene()
     beta = ctypes.c_double(0.0)
-    _check(_lib.hs_scene_from_flat_rounded_loads(float(P), float(R), float(flat_width), float(E_star), float(f),
-                                                 float(Q), float(sigma), byref(c), byref(beta)),
-           "hs_scene_from_flat_rounded_loads")
+    _check(_lib.hs_scene_from_flat_rounded_loads(*x, byref(c), byref(beta)), "hs_scene_from_flat_rounded_loads", v)
     return Scene._from_c(c), beta.value
 
 
 def solve(Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None, scene=None,
           max_iterations=None, rtol=None, geometry=None, flat_over_a=None, exponent=None, samples=None,
-          pressure=None):
+          pressure=None, model=None):
     """Solve a scene given by its ratios (and optionally a, p0, f, E_star),
     or an existing Scene (scene=...). Unset values take the C defaults. The
-    pressure is Hertz unless a geometry is given (see Scene.solve). Returns
-    a Solution (a context manager that frees the C handle)."""
+    pressure is Hertz unless a geometry is given (see Scene.solve); model
+    ("auto" with rtol, "closed-form", ... or a Model) as in Scene.solve.
+    Returns a Solution (a context manager that frees the C handle)."""
     if scene is None:
         scene = Scene(Q_over_fP, sigma_over_fp0, a=a, p0=p0, f=f, E_star=E_star)
     elif any(v is not None for v in (Q_over_fP, sigma_over_fp0, a, p0, f, E_star)):
         raise TypeError("solve: give either scene or scene values, not both")
     return scene.solve(max_iterations=max_iterations, rtol=rtol, geometry=geometry, flat_over_a=flat_over_a,
-                       exponent=exponent, samples=samples, pressure=pressure)
+                       exponent=exponent, samples=samples, pressure=pressure, model=model)
 
 
 class _Handle:
@@ -438,7 +548,8 @@ class Solution(_Handle):
         self._s = s
 
     # summary
-    regime = property(lambda self: self._s.regime, doc="REGIME_STUCK, REGIME_SAME_SIGN or REGIME_OPPOSITE_SIGN")
+    regime = property(lambda self: _enum_or_int(Regime, self._s.regime),
+                      doc="a Regime (an int): STUCK, SAME_SIGN or OPPOSITE_SIGN; str() gives its name")
     regime_name = property(lambda self: _REGIME_NAMES.get(self._s.regime, "unknown"))
     a = property(lambda self: self._s.a, doc="contact half-width")
     b1 = property(lambda self: self._s.b1, doc="the stick zone is (-b2, b1)")
@@ -451,7 +562,9 @@ class Solution(_Handle):
     p0 = property(lambda self: self._s.p0, doc="reference pressure 2P/(pi a) used")
     quadrature_order = property(lambda self: self._s.quadrature_order,
                                 doc="Gauss-Legendre order per panel (0: closed forms)")
-    model = property(lambda self: self._s.model, doc="MODEL_* used (ASYMPTOTIC, CLOSED_FORM, QUADRATURE, REFERENCE)")
+    model = property(lambda self: _enum_or_int(Model, self._s.model),
+                     doc="the Model used (an int: ASYMPTOTIC, CLOSED_FORM, QUADRATURE, REFERENCE); str() gives its name")
+    model_name = property(lambda self: str(self.model), doc='"asymptotic", "closed-form", "quadrature" or "reference"')
     error_estimate = property(lambda self: self._s.error_estimate,
                               doc="estimated largest relative error of d1, d2 and the zone energies")
 
@@ -479,6 +592,18 @@ class Solution(_Handle):
 
     def _eval(self, fn, name, x):
         h = self._handle()
+        np = _numpy_of(x)
+        if np is not None:   # numpy in, numpy of the same shape out
+            try:
+                xs = np.asarray(x, dtype=np.float64, order="C")
+            except (TypeError, ValueError) as e:
+                raise TypeError("halfslip: points must be numbers: %s" % e) from None
+            out = np.empty(xs.shape, dtype=np.float64)
+            dp = ctypes.POINTER(c_double)
+            st = fn(h, xs.size, xs.ctypes.data_as(dp), out.ctypes.data_as(dp)) if xs.size else 0
+            if st != 0:
+                _raise(st, name, self._callback, {"x": "array of shape %s" % (xs.shape,)})
+            return out[()] if out.ndim == 0 else out
         xs, n, scalar = _points(x)
         out = array.array("d", bytes(n * ctypes.sizeof(c_double)))
         if n:
@@ -486,12 +611,13 @@ class Solution(_Handle):
         else:
             st = fn(h, 0, None, None)
         if st != 0:
-            _raise(st, name, self._callback)
+            _raise(st, name, self._callback, {"x": x if scalar else "%d points" % n})
         return out[0] if scalar else out
 
     def Bx(self, x):
         """Dislocation density B_x = dh/dx at x (a number or a sequence/buffer
-        of numbers, |x| <= a); a float or an array.array('d')."""
+        of numbers, |x| <= a): a float for a number, a numpy array of x's shape
+        for a numpy array, else an array.array('d')."""
         return self._eval(_lib.hs_eval_Bx, "hs_eval_Bx", x)
 
     def slip(self, x):
@@ -570,10 +696,16 @@ def ref_max_digits(geometry=None):
     return _lib.hs_ref_max_digits_geometry(_geometry_kind(geometry, None, None, None, None))
 
 
-def _decimal(v):
+def _decimal(v, name="value"):
     if v is None:
         return None
-    return (v if isinstance(v, str) else str(v)).encode("ascii")
+    if isinstance(v, bool) or not isinstance(v, (str, int, float)) and not hasattr(v, "as_tuple"):
+        raise ValueError("halfslip.solve_reference: %s=%r is not a decimal number (give a str, int, float "
+                         "or decimal.Decimal)" % (name, v))
+    try:
+        return (v if isinstance(v, str) else str(v)).encode("ascii")
+    except UnicodeEncodeError:
+        raise ValueError("halfslip.solve_reference: %s=%r is not a decimal number" % (name, v)) from None
 
 
 def solve_reference(digits, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None,
@@ -589,17 +721,25 @@ def solve_reference(digits, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=N
     are Certified strings."""
     c = _clib.RefScene()
     _check(_lib.hs_ref_scene_default(byref(c)), "hs_ref_scene_default")
+    if isinstance(digits, bool) or not isinstance(digits, int):
+        raise ValueError("halfslip.solve_reference: digits=%r is not an integer" % (digits,))
     keep = {}
-    for k, v in dict(a=a, p0=p0, f=f, E_star=E_star, Q_over_fP=Q_over_fP, sigma_over_fp0=sigma_over_fp0,
-                     P=P, R=R, Q=Q, sigma=sigma, flat_over_a=flat_over_a, exponent=exponent).items():
+    values = dict(a=a, p0=p0, f=f, E_star=E_star, Q_over_fP=Q_over_fP, sigma_over_fp0=sigma_over_fp0,
+                  P=P, R=R, Q=Q, sigma=sigma, flat_over_a=flat_over_a, exponent=exponent)
+    for k, v in values.items():
         if v is not None:
-            keep[k] = _decimal(v)
+            keep[k] = _decimal(v, k)
             setattr(c, k, keep[k])
     kind = _geometry_kind(geometry, flat_over_a, exponent, None, None)
     if kind is not None:
         c.geometry = kind
+    values.update(digits=digits, geometry=geometry)
     h = _clib.RefSolutionP()
-    _check(_lib.hs_ref_solve(byref(c), int(digits), byref(h)), "hs_ref_solve")
+    st = _lib.hs_ref_solve(byref(c), digits, byref(h))
+    if st == ERR_BAD_OPTION and not 1 <= digits <= ref_max_digits(c.geometry):
+        raise HalfslipError(st, "hs_ref_solve", "digits=%d (1 to %d for this geometry)"
+                            % (digits, ref_max_digits(c.geometry)))
+    _check(st, "hs_ref_solve", values)
     return ReferenceSolution(h)
 
 
@@ -632,7 +772,7 @@ class ReferenceSolution(_Handle):
             raise HalfslipError(st, "hs_ref_solution_summary")
         self._s = s
 
-    regime = property(lambda self: self._s.regime)
+    regime = property(lambda self: _enum_or_int(Regime, self._s.regime))
     regime_name = property(lambda self: _REGIME_NAMES.get(self._s.regime, "unknown"))
     slip_dir1 = property(lambda self: self._s.slip_dir1)
     slip_dir2 = property(lambda self: self._s.slip_dir2)

@@ -176,7 +176,11 @@ def _library_names():
 
 def _package_dirs():
     """Directories searched first: the package itself, then the library
-    directory recorded by `cmake --install` (halfslip/_install.py)."""
+    directory recorded by `cmake --install` (halfslip/_install.py), then the
+    library directory of the prefix the package is installed in (the nearest
+    ancestor named lib* within three levels: PREFIX/lib for
+    PREFIX/lib/python3.X/site-packages/halfslip), so that a package installed
+    by pip under the prefix of `cmake --install` finds that library."""
     here = os.path.dirname(os.path.abspath(__file__))
     dirs = [here]
     try:
@@ -185,6 +189,13 @@ def _package_dirs():
         _install = None
     if _install is not None:
         dirs.append(os.path.normpath(os.path.join(here, _install.LIBDIR)))
+    d = here
+    for _ in range(3):
+        d = os.path.dirname(d)
+        if os.path.basename(d).startswith("lib"):
+            if d not in dirs:
+                dirs.append(d)
+            break
     return dirs
 
 

@@ -390,14 +390,117 @@ class TestInputs(unittest.TestCase):
     @unittest.skipIf(numpy is None, "numpy not installed (optional)")
     def test_numpy(self):
         x = numpy.array(self.X)
-        self.assertEqual(self.sol.Bx(x), self.ref)
-        self.assertEqual(self.sol.Bx(x[::2]), self.sol.Bx(self.X[::2]))   # strided: converted
+        out = self.sol.Bx(x)
+        self.assertIsInstance(out, numpy.ndarray)
+        self.assertEqual(out.tolist(), list(self.ref))
+        self.assertEqual(self.sol.Bx(x[::2]).tolist(), list(self.sol.Bx(self.X[::2])))   # strided: converted
+        self.assertEqual(self.sol.Bx(x.astype(numpy.float32)).dtype, numpy.float64)
+
+    @unittest.skipIf(numpy is None, "numpy not installed (optional)")
+    def test_numpy_shape_kept(self):
+        x = numpy.linspace(-0.99, 0.99, 1000 * 100).reshape(1000, 100)
+        for fn in (self.sol.Bx, self.sol.slip, self.sol.work, self.sol.pressure):
+            out = fn(x)
+            self.assertIsInstance(out, numpy.ndarray)
+            self.assertEqual(out.shape, (1000, 100))
+            self.assertEqual(out[3].tolist(), list(fn(x[3].tolist())))
+        xt = x[:7, :5].T                                  # not contiguous, shape (5, 7)
+        self.assertEqual(self.sol.slip(xt).shape, (5, 7))
+        self.assertEqual(self.sol.slip(xt).tolist(), [list(self.sol.slip(list(r))) for r in xt.tolist()])
+        self.assertEqual(self.sol.Bx(numpy.zeros((0, 3))).shape, (0, 3))
+        v = self.sol.Bx(numpy.float64(0.9))               # numpy scalar: a float
+        self.assertEqual(float(v), self.ref[2])
+        v0 = self.sol.Bx(numpy.array(0.9))                # 0-d array: a numpy scalar
+        self.assertEqual(numpy.ndim(v0), 0)
+        self.assertEqual(float(v0), self.ref[2])
+        with self.assertRaises(HalfslipError) as cm:
+            self.sol.Bx(numpy.array([[0.5, 1.5]]))
+        self.assertEqual(cm.exception.status, halfslip.ERR_POINT_OUTSIDE)
+        self.assertIn("shape (1, 2)", str(cm.exception))
+        with halfslip.solve(samples=(numpy.cos(numpy.linspace(numpy.pi, 0, 61)),
+                                     numpy.sin(numpy.linspace(numpy.pi, 0, 61)))) as s:
+            self.assertAlmostEqual(s.b1, halfslip.solve().b1, places=3)
+
+    def test_without_numpy_results_are_arrays(self):
+        code = ("import sys; sys.modules['numpy'] = None\n"
+                "import array, halfslip\n"
+                "s = halfslip.solve()\n"
+                "assert isinstance(s.Bx([0.9, 0.95]), array.array)\n"
+                "assert isinstance(s.Bx(0.9), float)\n"
+                "print('ok')\n")
+        rc, out = run_python(code, {}, os.path.dirname(PACKAGE_DIR))
+        self.assertEqual((rc, out.strip()), (0, "ok"), out)
 
     def test_bad_inputs(self):
         with self.assertRaises(TypeError):
             self.sol.Bx(["a"])
         with self.assertRaises(TypeError):
             self.sol.Bx(None)
+
+
+class TestNamesAndMessages(unittest.TestCase):
+    def test_model_keyword_everywhere(self):
+        with halfslip.solve(model="auto") as sol:                  # README: model="auto"
+            self.assertIn(sol.model, (halfslip.Model.CLOSED_FORM, halfslip.Model.ASYMPTOTIC))
+        with halfslip.solve(Q_over_fP=1e-5, sigma_over_fp0=0, model="auto", rtol=1e-3) as sol:
+            self.assertEqual(sol.model, halfslip.MODEL_ASYMPTOTIC)
+            self.assertEqual(sol.model_name, "asymptotic")
+        for m in ("closed-form", "closed_form", "CLOSED-FORM", halfslip.Model.CLOSED_FORM, 3):
+            with halfslip.solve(model=m) as sol:
+                self.assertEqual(sol.model, halfslip.Model.CLOSED_FORM)
+        with halfslip.Scene(0.3, 2).solve(model="quadrature", exponent=3) as sol:
+            self.assertEqual(str(sol.model), "quadrature")
+
+    def test_names(self):
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2) as sol:
+            self.assertIs(sol.regime, halfslip.Regime.OPPOSITE_SIGN)
+            self.assertEqual(sol.regime, 2)                          # still the C value
+            self.assertEqual(str(sol.regime), "opposite-sign")
+            self.assertEqual("%s" % sol.regime, sol.regime_name)
+            self.assertEqual(str(sol.model), "closed-form")
+            self.assertIn("CLOSED_FORM", repr(sol.model))
+        self.assertEqual(halfslip.REGIME_STUCK, halfslip.Regime.STUCK)
+        self.assertEqual([str(m) for m in halfslip.Model],
+                         ["default", "auto", "asymptotic", "closed-form", "quadrature", "reference"])
+
+    def test_value_errors_name_the_argument(self):
+        cases = [
+            (lambda: halfslip.solve(model="fastest"), "model='fastest'"),
+            (lambda: halfslip.solve(model=42), "model=42"),
+            (lambda: halfslip.solve(Q_over_fP="abc"), "Q_over_fP='abc'"),
+            (lambda: halfslip.solve(rtol="tight"), "rtol='tight'"),
+            (lambda: halfslip.solve(flat_over_a="wide"), "flat_over_a='wide'"),
+            (lambda: halfslip.solve(max_iterations=2.5), "max_iterations=2.5"),
+            (lambda: halfslip.from_hertz_loads("1 kN", 0.05, 1e11, 0.6, 300, 0), "P='1 kN'"),
+            (lambda: halfslip.solve_reference("30"), "digits='30'"),
+            (lambda: halfslip.solve_reference(30, Q_over_fP=[0.3]), "Q_over_fP=[0.3]"),
+            (lambda: halfslip.solve(geometry="cube"), "'cube'"),
+        ]
+        for fn, text in cases:
+            with self.assertRaises(ValueError) as cm:
+                fn()
+            self.assertIn(text, str(cm.exception))
+
+    def test_halfslip_errors_name_the_argument(self):
+        cases = [
+            (lambda: halfslip.solve_reference(1000), halfslip.ERR_BAD_OPTION, "digits=1000"),
+            (lambda: halfslip.solve_reference(200, flat_over_a="0.5"), halfslip.ERR_BAD_OPTION, "digits=200"),
+            (lambda: halfslip.solve(Q_over_fP=1.5), halfslip.ERR_GROSS_SLIDING, "Q_over_fP=1.5"),
+            (lambda: halfslip.solve(f=-1), halfslip.ERR_BAD_FRICTION, "f=-1.0"),
+            (lambda: halfslip.solve(a=0), halfslip.ERR_BAD_SIZE, "a=0.0"),
+            (lambda: halfslip.solve(rtol=0.7), halfslip.ERR_BAD_OPTION, "rtol=0.7"),
+            (lambda: halfslip.solve(exponent=0.5), halfslip.ERR_BAD_GEOMETRY, "exponent=0.5"),
+            (lambda: halfslip.from_hertz_loads(1000, 0.05, 1.15e11, 0.6, 700, 0), halfslip.ERR_GROSS_SLIDING,
+             "Q=700"),
+            (lambda: halfslip.solve_reference(20, Q_over_fP="0.3x"), halfslip.ERR_BAD_NUMBER, "Q_over_fP='0.3x'"),
+            (lambda: halfslip.solve().Bx(1.5), halfslip.ERR_POINT_OUTSIDE, "x=1.5"),
+        ]
+        for fn, status, text in cases:
+            with self.assertRaises(HalfslipError) as cm:
+                fn()
+            self.assertEqual(cm.exception.status, status, str(cm.exception))
+            self.assertIn(text, str(cm.exception))
+            self.assertIn(text, cm.exception.detail)
 
 
 class TestErrors(unittest.TestCase):
