@@ -62,6 +62,7 @@ template <class T> struct history_vertex {
   T energy1{0}, energy2{0};  // dissipated over the segment that ends here
   size_t step_end = 0;       // number of steps up to this vertex
   int cycle = 0;             // 0: path; k >= 1: k-th cycle of add_cycles
+  size_t interior_merges = 0;  // interior slip patches merged so far (history::interior_merges)
 };
 
 namespace hdetail {
@@ -157,23 +158,30 @@ template <class T> class history {
     const T dq = qn - q_, ds = sn - s_;
     const T len = max(abs(dq), abs(ds) / 4);
     T E1 = 0, E2 = 0;
+    noop_erase_ = 0;
     if (len > 0) {
       decide(dq, ds);
       const T h = T(1) / max(T(1), ceil(len / opt_.max_step));
       T done = 0;  // fraction of the segment done
       T hrun = h;
+      // the ends may move at most max_step (units of a) per step: where an end runs
+      // fast the step shrinks (the knots of a run may be unequally spaced)
+      const T db_max = opt_.max_step;
+      size_t run_seen = size_t(-1);
+      T cur = h;
       while (done < 1) {
         if ((m1_ == rec && b1_ >= 1 - 16 * eps<T>()) || (m2_ == rec && b2_ >= 1 - 16 * eps<T>())) {
           after_event(m1_ == rec && b1_ >= 1 - 16 * eps<T>() ? 3 : 4);
           decide(dq, ds);
           run_start_ = steps_.size();
         }
-        // graded start of each run (its first steps use low-degree interpolation)
-        const size_t in_run = steps_.size() - run_start_;
-        T grade = 1;
-        if (int(in_run) < opt_.grade_steps)
-          grade = std::ldexp(T(1), std::max(int(in_run), 1) - 1 - opt_.grade_steps + 1);
-        T frac = min(hrun * grade, 1 - done);
+        // graded start of each run (its first steps use low-degree interpolation),
+        // then the step doubles back up to hrun
+        if (run_seen != run_start_) {
+          run_seen = run_start_;
+          cur = std::ldexp(hrun, -std::max(0, opt_.grade_steps - 1));
+        }
+        T frac = min(cur, 1 - done);
         if (1 - done - frac < hrun / 1024) frac = 1 - done;
         // a step that cannot keep an advancing end advancing ends beyond an
         // event: shorten it until it solves (the event is then located below)
@@ -181,6 +189,11 @@ template <class T> class history {
         for (int tries = 0;; ++tries) {
           try {
             st = take_step(dq, ds, frac);
+            const T moved = max(abs(st.e1.bb - b1_), abs(st.e2.bb - b2_));
+            if (moved > db_max && tries < 40 && frac > hrun / 65536) {
+              frac /= 2;
+              continue;
+            }
             break;
           } catch (const error &err) {
             if (err.code() != status::no_convergence || tries >= 40) throw;
@@ -189,6 +202,11 @@ template <class T> class history {
         }
         // events within the step
         int ev = event_in(st);
+        if ((ev == 7 || ev == 8) && abs(event_value(ev, nullptr, dq, ds, T(0))) <= 64 * eps<T>() * (abs(dq) + abs(ds))) {
+          after_event(ev);  // the zone opens at the start of the step (r_i was zero there)
+          run_start_ = steps_.size();
+          continue;
+        }
         if (ev != 0) {
           T lo = 0, hi = frac;
           // bisection/secant on the fraction at which the event happens
@@ -223,6 +241,7 @@ template <class T> class history {
         commit(st, dq, ds, frac);
         done += frac;
         E1 += st.E1; E2 += st.E2;
+        cur = min(2 * frac, hrun);
       }
     }
     history_vertex<T> v;
@@ -231,6 +250,7 @@ template <class T> class history {
     v.dir1 = s1_; v.dir2 = s2_;
     v.energy1 = E1; v.energy2 = E2;
     v.step_end = steps_.size();
+    v.interior_merges = interior_merges_;
     vertices_.push_back(v);
     run_start_ = steps_.size();
   }
@@ -257,6 +277,10 @@ template <class T> class history {
     return h;
   }
   size_t step_count() const { return steps_.size(); }
+  // Interior slip patches (the friction limit reached inside the stick zone, away
+  // from the ends) are merged at once with the nearer edge zone, the band between
+  // included: an approximation, counted here (0: every state is exact to the march).
+  size_t interior_merges() const { return interior_merges_; }
 
  private:
   enum mode { edge, adv, rec };
@@ -276,6 +300,9 @@ template <class T> class history {
     T j[4];
   };
   mutable jac_cache jac_;  // march state only (const evaluations never touch it)
+  int noop_erase_ = 0;     // limit events located short of the limit in this segment
+  size_t interior_merges_ = 0;  // interior slip patches merged with an edge zone (approximation)
+  mutable int open_sign_ = 0;  // direction of the zone that event 7/8 opens
 
   static int sgn(const T &v) { return (v > 0) - (v < 0); }
   static T r(int i, const T &dq, const T &ds, const T &e) { return i == 1 ? dq / 2 - ds * e / 4 : dq / 2 + ds * e / 4; }
@@ -565,7 +592,10 @@ template <class T> class history {
       }
       // an advancing end moves inwards (outwards the continuity condition holds
       // trivially: the receding case, decided by r_i instead)
-      if (!(c1 + c2 > 0) || !(c1 <= 1) || !(c2 <= 1) || (a1 && !(c1 <= b1_)) || (a2 && !(c2 <= b2_)))
+      // (a receding end may pass the contact edge within a trial step: the event
+      // search then finds where it reaches it)
+      const T lim1 = m1_ == rec ? T(1) + T(1) / 64 : T(1), lim2 = m2_ == rec ? T(1) + T(1) / 64 : T(1);
+      if (!(c1 + c2 > 0) || !(c1 <= lim1) || !(c2 <= lim2) || (a1 && !(c1 <= b1_)) || (a2 && !(c2 <= b2_)))
         return false;
       const history_step<T> st = make_step(dq, ds, frac, c1, c2);
       if (a1) f1 = residual_end(1, st);
@@ -665,13 +695,109 @@ template <class T> class history {
 
   // ---- events ---------------------------------------------------------------
   // 1/2: advancing end i reaches r_i = 0; 3/4: receding end i reaches the edge
+  // 5/6: the stick zone next to advancing end i reaches the friction limit
+  // (a loop of the path closes: the slip of an earlier zone of the same
+  // direction resumes at once, and the end jumps inwards; Masing's memory rule).
   int event_in(const history_step<T> &st) const {
     const T e = (st.e1.bb + st.e2.bb) / 2;
     if (m1_ == adv && T(s1_) * r(1, st.dq, st.ds, e) <= 0) return 1;
     if (m2_ == adv && T(s2_) * r(2, st.dq, st.ds, e) <= 0) return 2;
     if (m1_ == rec && st.e1.bb >= 1) return 3;
     if (m2_ == rec && st.e2.bb >= 1) return 4;
+    // 7/8: an end stuck at the contact edge whose rate coefficient r_i turns non-zero: a zone opens
+    {
+      const T e0 = (b1_ + b2_) / 2;
+      using std::abs;
+      const T small = 64 * eps<T>() * (abs(st.dq) + abs(st.ds));
+      auto turns = [&](int i) {  // r_i non-zero at the end, zero (to rounding) or of the other sign at the start
+        const T re = r(i, st.dq, st.ds, e), rs = r(i, st.dq, st.ds, e0);
+        return abs(re) > small && (abs(rs) <= small || sgn(re) != sgn(rs));
+      };
+      if (m1_ == edge && turns(1)) {
+        open_sign_ = sgn(r(1, st.dq, st.ds, e));
+        return 7;
+      }
+      if (m2_ == edge && turns(2)) {
+        open_sign_ = sgn(r(2, st.dq, st.ds, e));
+        return 8;
+      }
+    }
+    if (noop_erase_ < 3 && m1_ == adv && limit_margin(1, &st) > limit_tol()) return 5;
+    if (noop_erase_ < 3 && m2_ == adv && limit_margin(2, &st) > limit_tol()) return 6;
     return 0;
+  }
+  static T limit_tol() { using std::sqrt; return sqrt(eps<T>()) * 64; }
+  // v(x) = s_i q(x)/p(x) - 1 at a stuck point (<= 0 where the stick condition holds)
+  T limit_ratio(int i, const T &x, const history_step<T> *st) const {
+    const int si = i == 1 ? s1_ : s2_;
+    const T p = pm_->p(x);
+    if (!(p > 0)) return T(-1);
+    return T(si) * stick_traction(x, steps_.size(), st) / p - 1;
+  }
+  // largest v over sample points of the stick zone, quadratically spaced from end i inwards
+  T limit_margin(int i, const history_step<T> *st, int *first_violation = nullptr) const {
+    const T b1 = st ? st->e1.bb : b1_, b2 = st ? st->e2.bb : b2_;
+    const T L = b1 + b2;
+    const int M = 8;
+    T worst = -1;
+    // up to 3/4 of the way: near the other end (same direction) q tends to s p from below
+    for (int k = 1; k <= M; ++k) {
+      const T d = L * T(k * k) / T(M * M) * T(0.75);
+      const T x = i == 1 ? b1 - d : -b2 + d;
+      const T v = limit_ratio(i, x, st);
+      if (v > worst) worst = v;
+      if (first_violation && *first_violation < 0 && v > limit_tol()) *first_violation = k;
+    }
+    return worst;
+  }
+  // Jump end i inwards over the contiguous region next to it that is at the friction limit.
+  void erase_at_limit(int i) {
+    using std::abs;
+    const T b1 = b1_, b2 = b2_, L = b1 + b2;
+    const int M = 8;
+    const T below = -limit_tol();  // inside the friction cone
+    auto xat = [&](const T &d) { return i == 1 ? b1 - d : -b2 + d; };
+    T d_in = 0, d_out = -1;
+    if (!(limit_margin(i, nullptr) > limit_tol())) {  // located just short of the limit: nothing to do
+      ++noop_erase_;
+      return;
+    }
+    // the contiguous region at the limit next to the end; if the limit is reached
+    // only further in (an interior slip patch), the band between is merged with
+    // the zone: the patch and the band slip together (counted in interior_merges)
+    bool at_end = true;
+    for (int k = 1; k <= M; ++k) {
+      const T d = L * T(k * k) / T(M * M) * T(0.75);
+      const T v = limit_ratio(i, xat(d), nullptr);
+      if (v >= below) { d_in = d; continue; }
+      if (d_in == 0 && at_end) {
+        at_end = false;
+        // look further in for the patch
+        bool patch = false;
+        for (int j = k + 1; j <= M; ++j) {
+          const T dj = L * T(j * j) / T(M * M) * T(0.75);
+          if (limit_ratio(i, xat(dj), nullptr) >= below) { patch = true; d_in = dj; k = j; break; }
+        }
+        if (!patch) break;
+        ++interior_merges_;
+        continue;
+      }
+      d_out = d;
+      break;
+    }
+    if (d_in == 0) {
+      ++noop_erase_;
+      return;
+    }
+    if (d_out < 0) throw error(status::no_convergence, "history: the whole stick zone reached the friction limit");
+    for (int it = 0; it < 200 && d_out - d_in > 4 * eps<T>() * (1 + L); ++it) {
+      const T m = (d_in + d_out) / 2;
+      if (limit_ratio(i, xat(m), nullptr) >= below) d_in = m; else d_out = m;
+    }
+#ifdef HS_HISTORY_DEBUG2
+    fprintf(stderr, "erase end %d at q=%g s=%g: b %.6f -> %.6f\n", i, double(q_), double(s_), double(i == 1 ? b1 : b2), double((i == 1 ? b1 : b2) - d_in));
+#endif
+    if (i == 1) jump(b1 - d_in, b2_); else jump(b1_, b2 - d_in);
   }
   T event_value(int ev, const history_step<T> *st, const T &dq, const T &ds, const T &) const {
     const T b1 = st ? st->e1.bb : b1_, b2 = st ? st->e2.bb : b2_;
@@ -680,7 +806,11 @@ template <class T> class history {
       case 1: return T(s1_) * r(1, dq, ds, e);
       case 2: return T(s2_) * r(2, dq, ds, e);
       case 3: return 1 - b1;
-      default: return 1 - b2;
+      case 4: return 1 - b2;
+      case 5: return limit_tol() - limit_margin(1, st);
+      case 6: return limit_tol() - limit_margin(2, st);
+      case 7: return -T(open_sign_) * r(1, dq, ds, e);  // > 0 before r_1 takes the sign of the opening
+      default: return -T(open_sign_) * r(2, dq, ds, e);
     }
   }
   void apply_event_limit(int ev, history_step<T> &st) const {
@@ -688,8 +818,15 @@ template <class T> class history {
     if (ev == 4 && st.e2.bb > 1) st.e2.bb = 1;
   }
   void after_event(int ev) {
+#ifdef HS_HISTORY_DEBUG2
+    fprintf(stderr, "event %d at b1=%.9f b2=%.9f s=%d,%d m=%d,%d\n", ev, double(b1_), double(b2_), s1_, s2_, int(m1_), int(m2_));
+#endif
     if (ev == 3 && b1_ >= 1 - 16 * eps<T>()) { s1_ = 0; m1_ = edge; b1_ = 1; }
     if (ev == 4 && b2_ >= 1 - 16 * eps<T>()) { s2_ = 0; m2_ = edge; b2_ = 1; }
+    if (ev == 5) erase_at_limit(1);
+    if (ev == 6) erase_at_limit(2);
+    if (ev == 7 && m1_ == edge) { s1_ = open_sign_; m1_ = adv; }
+    if (ev == 8 && m2_ == edge) { s2_ = open_sign_; m2_ = adv; }
   }
 
   // ---- commit: energies ----------------------------------------------------

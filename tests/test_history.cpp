@@ -1,0 +1,286 @@
+// Load histories (issue #14): core/history.hpp against closed forms (monotonic
+// solutions, Ciavarella-Jager unloading, 4x the monotonic energy per steady
+// proportional cycle) and against the independent collocation BEM of
+// reference/bem_history.hpp (non-proportional paths, the receding ray).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "halfslip/core/general.hpp"
+#include "halfslip/core/hertz.hpp"
+#include "halfslip/core/history.hpp"
+#include "halfslip/reference/bem_history.hpp"
+
+using namespace hs::core;
+
+namespace {
+
+std::shared_ptr<const pressure_model<double>> hertz_pm() { return std::make_shared<hertz_pressure<double>>(); }
+
+history_options<double> opts(double step) {
+  history_options<double> o;
+  o.max_step = step;
+  return o;
+}
+
+// monotonic closed forms (canonical units)
+hertz_solution<double> mono(double q, double s) {
+  hertz_scene<double> sc;
+  sc.q = q;
+  sc.s = s;
+  return solve_hertz<double>(sc);
+}
+
+double bem_p(double x) { return std::sqrt(std::max(0.0, 1 - x * x)); }
+
+}  // namespace
+
+TEST_CASE("history: a ramp from zero that does not recede is the monotonic solution (Hertz)") {
+  // same sign, opposite sign short of receding (e > 2/lambda), pure bulk tension, negative loads
+  const double cases[][2] = {{0.5, 0.4}, {0.2, 0.6}, {0.0, 1.0}, {-0.3, 0.2}, {0.6, -0.1}};
+  for (const auto &c : cases) {
+    history<double> h(hertz_pm(), opts(1.0 / 128));
+    h.add_vertex(c[0], c[1]);
+    const auto &v = h.vertices().back();
+    const auto m = mono(c[0], c[1]);
+    CAPTURE(c[0]);
+    CAPTURE(c[1]);
+    CHECK(std::fabs(v.b1 - m.b1()) < 2e-8);
+    CHECK(std::fabs(v.b2 - m.b2()) < 2e-8);
+    CHECK(v.dir1 == m.dir1());
+    CHECK(v.dir2 == m.dir2());
+    CHECK(std::fabs(v.energy1 - m.energy(1)) <= 5e-7 * (m.energy(1) + m.energy(2)));
+    CHECK(std::fabs(v.energy2 - m.energy(2)) <= 5e-7 * (m.energy(1) + m.energy(2)));
+  }
+}
+
+TEST_CASE("history: the ramp of a general pressure is the monotonic general solution (flat punch)") {
+  auto pm = std::make_shared<flat_rounded_pressure<double>>(0.5);
+  for (const auto &c : {std::make_pair(0.3, 0.2), std::make_pair(0.1, 0.5)}) {
+    history<double> h(pm, opts(1.0 / 128));
+    h.add_vertex(c.first, c.second);
+    general_scene<double> sc;
+    sc.q = c.first;
+    sc.s = c.second;
+    const auto m = solve_general<double>(*pm, sc);
+    const auto &v = h.vertices().back();
+    CHECK(std::fabs(v.b1 - m.b1()) < 1e-7);
+    CHECK(std::fabs(v.b2 - m.b2()) < 1e-7);
+    CHECK(std::fabs(v.energy1 - m.energy(1)) <= 2e-6 * (m.energy(1) + m.energy(2)));
+    CHECK(std::fabs(v.energy2 - m.energy(2)) <= 2e-6 * (m.energy(1) + m.energy(2)));
+  }
+}
+
+TEST_CASE("history: unloading after monotonic loading (Ciavarella-Jager, Hertz, sigma = 0)") {
+  history<double> h(hertz_pm(), opts(1.0 / 128));
+  const double Qs = 0.6, Q = 0.2;
+  h.add_vertex(Qs, 0);
+  h.add_vertex(Q, 0);
+  const auto &v = h.vertices().back();
+  const double c = std::sqrt(1 - (Qs - Q) / 2), c1 = std::sqrt(1 - Qs);
+  CHECK(std::fabs(v.b1 - c) < 1e-8);
+  CHECK(std::fabs(v.b2 - c) < 1e-8);
+  CHECK(v.dir1 == -1);
+  CHECK(v.dir2 == -1);
+  // traction q* - q_{2f}(dQ): fp0 [sqrt(1-x^2) - sqrt(c1^2-x^2)] - 2 fp0 [sqrt(1-x^2) - sqrt(c^2-x^2)]
+  double worst = 0;
+  for (int i = -20; i <= 20; ++i) {
+    const double x = 0.999 * i / 20.0;
+    auto cap = [](double r, double y) { return std::fabs(y) < r ? std::sqrt(r * r - y * y) : 0.0; };
+    const double p = std::sqrt(1 - x * x);
+    const double expect = (p - cap(c1, x)) - 2 * (p - cap(c, x));
+    worst = std::max(worst, std::fabs(h.traction(x, v.step_end) - expect));
+  }
+  MESSAGE("unloading: largest traction error " << worst << " f p0");
+  CHECK(worst < 1e-7);
+  // energy of the unloading stroke: twice the monotonic energy at (Qs - Q)/2 (friction 2f)
+  const auto m = mono((Qs - Q) / 2, 0);
+  CHECK(std::fabs(v.energy1 - 2 * m.energy(1)) < 1e-7 * m.energy(1));
+}
+
+TEST_CASE("history: steady proportional cycles dissipate 4x the monotonic energy per zone") {
+  // in-phase cycles between -L and +L (no receding along the ray): every stroke is a
+  // monotonic problem with friction 2f at L; per cycle, per zone, 4 E_mono(L)
+  for (const auto &c : {std::make_pair(0.5, 0.4), std::make_pair(0.2, 0.6), std::make_pair(0.3, -0.3)}) {
+    history<double> h(hertz_pm(), opts(1.0 / 128));
+    const auto r = add_cycles<double>(h, 0, c.first, 0, c.second, 0, 3, ramp_order::sigma_first, 64, 1e-9);
+    const auto m = mono(c.first, c.second);
+    CAPTURE(c.first);
+    CAPTURE(c.second);
+    CHECK(r.cycles == 3);
+    CHECK(r.cycles_to_steady == 2);  // cycle 1 holds the first loading from zero
+    CHECK(!r.shakedown);
+    const double E = m.energy(1) + m.energy(2);
+    CHECK(std::fabs(r.energy1 - 4 * m.energy(1)) < 1e-6 * E);
+    CHECK(std::fabs(r.energy2 - 4 * m.energy(2)) < 1e-6 * E);
+    // the turning points have the monotonic zones, with alternating directions
+    const auto &vs = h.vertices();
+    const auto &peak = vs[vs.size() - 3], &trough = vs[vs.size() - 2];
+    CHECK(std::fabs(peak.b1 - m.b1()) < 1e-7);
+    CHECK(std::fabs(trough.b2 - m.b2()) < 1e-7);
+    CHECK(peak.dir2 == m.dir2());
+    CHECK(trough.dir2 == -m.dir2());
+  }
+}
+
+TEST_CASE("history: the march converges like step^3 or better") {
+  double prev = 0, prev_err = 0;
+  const auto m = mono(0.5, 0.4);
+  for (int k = 0; k < 4; ++k) {
+    history<double> h(hertz_pm(), opts(std::ldexp(1.0, -4 - k)));
+    h.add_vertex(0.5, 0.4);
+    const double err = std::fabs(h.vertices().back().b1 - m.b1());
+    if (k > 0) {
+      MESSAGE("step 2^-" << 4 + k << ": error " << err << ", ratio " << prev_err / err);
+      CHECK(prev_err / err > 7.0);  // 2^3 = 8 would be third order
+    }
+    prev = err;
+    prev_err = err;
+  }
+  (void)prev;
+}
+
+TEST_CASE("history: the proportional ray sigma/fp0 = 3 Q/fP recedes, re-sticks and reverses (vs BEM)") {
+  history<double> h(hertz_pm(), opts(1.0 / 128));
+  std::vector<std::pair<double, double>> path;
+  for (int k = 1; k <= 44; ++k) path.emplace_back(0.02 * k, 0.06 * k);
+  for (const auto &p : path) h.add_vertex(p.first, p.second);
+  hs::reference::bem::options bo;
+  bo.nodes = 400;
+  bo.steps_per_unit = 400;
+  const auto bem = hs::reference::bem::run(bem_p, path, bo);
+  const auto &vs = h.vertices();
+  // phases from the history solver: grows (dir -1, b1 decreasing) to ~0.46, recedes to b1 = 1, then dir +1
+  double bmin = 2, qmin = 0;
+  int first_rev = -1;
+  for (size_t i = 0; i < vs.size(); ++i) {
+    if (vs[i].dir1 == -1 && vs[i].b1 < bmin) { bmin = vs[i].b1; qmin = vs[i].q; }
+    if (first_rev < 0 && vs[i].dir1 == +1) first_rev = int(i);
+  }
+  MESSAGE("zone 1 smallest stick end b1 = " << bmin << " at Q/fP = " << qmin << "; slips +1 from Q/fP = "
+                                            << (first_rev >= 0 ? vs[first_rev].q : -1));
+  CHECK(qmin == doctest::Approx(0.46).epsilon(0.03));
+  CHECK(bmin == doctest::Approx(0.942).epsilon(1e-3));
+  REQUIRE(first_rev >= 0);
+  CHECK(vs[first_rev].q > 0.49);
+  CHECK(vs[first_rev].q < 0.56);
+  // receding: b1 grows between the minimum and the reversal, with dir -1
+  for (size_t i = 1; i < size_t(first_rev); ++i)
+    if (vs[i].q > qmin + 0.01) CHECK(vs[i].b1 > vs[i - 1].b1);
+  // against the BEM at every vertex: zone ends within 1.5 element widths, same directions where the zone is
+  // longer than the mesh
+  for (size_t i = 0; i < vs.size(); ++i) {
+    const double w1 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
+    const double w2 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
+    CAPTURE(vs[i].q);
+    CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1);
+    CHECK(std::fabs(vs[i].b2 - bem[i].b2) < w2);
+    if (1 - vs[i].b1 > 0.01) CHECK(vs[i].dir1 == bem[i].dir1);
+    CHECK(vs[i].dir2 == bem[i].dir2);
+  }
+  CHECK(vs.back().b1 == doctest::Approx(0.964).epsilon(1e-3));
+}
+
+namespace {
+
+// history vs BEM along a path: zone ends and energies per segment
+void compare_with_bem(const std::vector<std::pair<double, double>> &path, const char *what) {
+  history<double> h(hertz_pm(), opts(1.0 / 64));
+  for (const auto &p : path) h.add_vertex(p.first, p.second);
+  hs::reference::bem::options bo;
+  bo.nodes = 400;
+  bo.steps_per_unit = 400;
+  const auto bem = hs::reference::bem::run(bem_p, path, bo);
+  const auto &vs = h.vertices();
+  REQUIRE(vs.size() == bem.size());
+  double eb = 0, ee = 0, etot = 0;
+  for (size_t i = 0; i < vs.size(); ++i) etot = std::max(etot, vs[i].energy1 + vs[i].energy2);
+  for (size_t i = 0; i < vs.size(); ++i) {
+    CAPTURE(i);
+    const double w1 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
+    const double w2 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
+    CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1);
+    CHECK(std::fabs(vs[i].b2 - bem[i].b2) < w2);
+    if (1 - vs[i].b1 > 0.01) CHECK(vs[i].dir1 == bem[i].dir1);
+    if (1 - vs[i].b2 > 0.01) CHECK(vs[i].dir2 == bem[i].dir2);
+    eb = std::max(eb, std::max(std::fabs(vs[i].b1 - bem[i].b1), std::fabs(vs[i].b2 - bem[i].b2)));
+    const double de = std::max(std::fabs(vs[i].energy1 - bem[i].energy1), std::fabs(vs[i].energy2 - bem[i].energy2));
+    ee = std::max(ee, de / etot);
+    // the BEM's energy is second order in its mesh: 1e-3 of the largest segment energy
+    CHECK(de < 1e-3 * etot);
+  }
+  MESSAGE(what << ": largest |b - b_BEM| = " << eb << ", energy difference " << ee << " of the largest");
+}
+
+}  // namespace
+
+TEST_CASE("history: mean bulk tension, then shear cycling (non-proportional, vs BEM)") {
+  compare_with_bem({{0.0, 1.0}, {0.4, 1.0}, {-0.4, 1.0}, {0.4, 1.0}, {-0.4, 1.0}}, "sigma then Q cycles");
+}
+
+TEST_CASE("history: out-of-phase Q and sigma (vs BEM)") {
+  // Q = 0.4 sin(th), sigma = 0.8 + 0.6 sin(th + 90 deg), reached along sigma first; two cycles of 16 chords
+  std::vector<std::pair<double, double>> path{{0.0, 1.4}};
+  for (int c = 0; c < 2; ++c)
+    for (int k = 1; k <= 16; ++k) {
+      const double th = 2 * M_PI * k / 16;
+      path.emplace_back(0.4 * std::sin(th), 0.8 + 0.6 * std::cos(th));
+    }
+  compare_with_bem(path, "out of phase (90 degrees)");
+}
+
+TEST_CASE("history: degenerate vertices and bad input") {
+  history<double> h(hertz_pm(), opts(1.0 / 64));
+  h.add_vertex(0.3, 0.2);
+  const auto a = h.vertices().back();
+  h.add_vertex(0.3, 0.2);  // zero-length segment: nothing moves, nothing dissipated
+  const auto &b = h.vertices().back();
+  CHECK(b.b1 == a.b1);
+  CHECK(b.b2 == a.b2);
+  CHECK(b.energy1 == 0);
+  CHECK(b.energy2 == 0);
+  h.add_vertex(0, 0);  // back to zero: the zones reverse, locked-in slip stays
+  const auto &z = h.vertices().back();
+  CHECK(z.dir1 == -1);
+  CHECK(z.dir2 == -1);
+  CHECK(z.b1 < 1);
+  double lock = 0;
+  for (double x : {-0.3, 0.0, 0.3}) lock = std::max(lock, std::fabs(h.slip(x, z.step_end)));
+  CHECK(lock == 0);  // the central stick zone never slipped
+  CHECK(std::fabs(h.slip(0.99, z.step_end)) > 0);  // the edge keeps slip
+  CHECK_THROWS_AS(h.add_vertex(1.0, 0), error);
+  CHECK_THROWS_AS(h.add_vertex(std::nan(""), 0), error);
+}
+
+TEST_CASE("history: the same template in long double agrees with double") {
+  auto pmd = std::make_shared<hertz_pressure<double>>();
+  auto pml = std::make_shared<hertz_pressure<long double>>();
+  history_options<long double> ol;
+  ol.max_step = 1.0L / 64;
+  history<double> hd(pmd, opts(1.0 / 64));
+  history<long double> hl(pml, ol);
+  for (const auto &p : {std::make_pair(0.4, 0.3), std::make_pair(-0.2, 0.1), std::make_pair(0.1, 0.9)}) {
+    hd.add_vertex(p.first, p.second);
+    hl.add_vertex(p.first, p.second);
+  }
+  for (size_t i = 0; i < hd.vertices().size(); ++i) {
+    CHECK(std::fabs(hd.vertices()[i].b1 - double(hl.vertices()[i].b1)) < 1e-12);
+    CHECK(std::fabs(hd.vertices()[i].b2 - double(hl.vertices()[i].b2)) < 1e-12);
+    CHECK(hd.vertices()[i].dir1 == hl.vertices()[i].dir1);
+  }
+}
+
+TEST_CASE("history: ramp_recedes finds where e = 2/lambda along the ray") {
+  auto e_of = [](double q, double s) { return mono(q, s).half_width(); };
+  double at = 0;
+  CHECK(ramp_recedes<double>(0.88, 2.64, e_of, at));
+  CHECK(at == doctest::Approx(0.4603).epsilon(1e-3));
+  // the march recedes exactly there: dir -1 zone stops advancing at that Q/fP
+  CHECK(std::fabs(mono(at, 3 * at).half_width() - 2.0 / 3) < 1e-12);
+  CHECK(!ramp_recedes<double>(0.5, 0.5, e_of, at));   // lambda = 1 < 2: never
+  CHECK(!ramp_recedes<double>(0.2, 0.6, e_of, at));   // lambda = 3, but e(0.2) > 2/3
+  CHECK(ramp_recedes<double>(-0.88, -2.64, e_of, at));
+  CHECK(at == doctest::Approx(-0.4603).epsilon(1e-3));
+}
