@@ -10,10 +10,13 @@
 !   executes error stop.
 ! - On error, outputs are left untouched (as in C): output arguments are
 !   intent(inout) for that reason.
-! - Handles are type(c_ptr) inside hs_solution_t / hs_ref_solution_t, which
-!   start as C_NULL_PTR. Release them with hs_solution_free /
-!   hs_ref_solution_free (which reset them to C_NULL_PTR). A handle is
-!   immutable after the solve and may be evaluated from several threads.
+! - Handles are type(c_ptr) inside hs_solution_t / hs_ref_solution_t /
+!   hs_history_t, which start as C_NULL_PTR. Release them with
+!   hs_solution_free / hs_ref_solution_free / hs_history_free (which reset
+!   them to C_NULL_PTR). A solution handle is immutable after the solve and
+!   may be evaluated from several threads; a history grows with each
+!   hs_history_add_* call.
+! - History vertices are numbered as in C, from 0 to count - 1.
 ! - Arrays of points are explicit-shape real(c_double) arrays x(n), out(n),
 !   passed straight to the C pointers: no copy is made.
 ! - The status codes, regimes and quantity selectors are integer(c_int)
@@ -21,7 +24,7 @@
 ! The Fortran standard used is 2008 (error stop, c_sizeof); the interop itself
 ! is Fortran 2003.
 module halfslip
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_char, c_ptr, c_funptr, &
+  use, intrinsic :: iso_c_binding, only: c_int, c_long, c_double, c_size_t, c_char, c_ptr, c_funptr, &
                                          c_null_ptr, c_null_funptr, c_null_char, c_associated, c_f_pointer, &
                                          c_loc, c_funloc, c_sizeof
   use, intrinsic :: iso_fortran_env, only: error_unit
@@ -86,6 +89,14 @@ module halfslip
   integer(c_int), parameter, public :: HS_REF_EVAL_WORK     = 3
   integer(c_int), parameter, public :: HS_REF_EVAL_PRESSURE = 4
 
+  ! load histories (since 0.4)
+  integer(c_int), parameter, public :: HS_RAMP_SIGMA_FIRST = 0
+  integer(c_int), parameter, public :: HS_RAMP_TOGETHER    = 1
+  integer(c_int), parameter, public :: HS_RAMP_Q_FIRST     = 2
+
+  integer(c_int), parameter, public :: HS_FIELD_TRACTION = 1
+  integer(c_int), parameter, public :: HS_FIELD_SLIP     = 2
+
   ! ---- plain-data structs passed to C (layouts of halfslip.h) -------------------
   ! Fill them with hs_scene_default / hs_options_default, then set fields.
   type, bind(c), public :: hs_scene
@@ -146,6 +157,38 @@ module halfslip
     integer(c_int)    :: digits = 0, working_digits = 0, check_digits = 0
   end type hs_ref_summary
 
+  ! Load histories (since 0.4). Fill the options with hs_history_options_default,
+  ! then set fields. The vertex and the cycle summary are outputs: the wrappers
+  ! set their struct_size themselves.
+  type, bind(c), public :: hs_history_options
+    integer(c_size_t) :: struct_size = 0
+    real(c_double)    :: max_step = 0            ! largest load step (default 1/32)
+    integer(c_int)    :: max_steps = 0           ! limit on the total number of steps
+    integer(c_int)    :: segments_per_cycle = 0  ! chords per out-of-phase cycle
+    integer(c_int)    :: ramp_order = 0          ! HS_RAMP_*
+    real(c_double)    :: steady_rtol = 0         ! steady-cycle tolerance
+    real(c_double)    :: rtol = 0                ! march refined until steps h and 2h agree to rtol
+  end type hs_history_options
+
+  type, bind(c), public :: hs_history_vertex
+    integer(c_size_t) :: struct_size = 0
+    real(c_double)    :: Q_over_fP = 0, sigma_over_fp0 = 0
+    real(c_double)    :: b1 = 0, b2 = 0          ! stick zone (-b2, b1)
+    integer(c_int)    :: slip_dir1 = 0, slip_dir2 = 0  ! +1, -1, or 0 where that edge does not slip
+    real(c_double)    :: energy1 = 0, energy2 = 0      ! over the segment ending here
+    integer(c_int)    :: cycle = 0               ! 0: path or ramp; k >= 1: k-th cycle
+    integer(c_long)   :: steps = 0               ! load steps marched up to this vertex
+    real(c_double)    :: step = 0                ! load step after refinement
+    real(c_double)    :: error_estimate = 0      ! estimated error of the march
+    integer(c_long)   :: interior_merges = 0     ! interior slip patches merged so far
+  end type hs_history_vertex
+
+  type, bind(c), public :: hs_cycle_summary
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: cycles = 0, cycles_to_steady = -1, shakedown = 0
+    real(c_double)    :: energy_per_cycle1 = 0, energy_per_cycle2 = 0
+  end type hs_cycle_summary
+
   ! ---- handles ------------------------------------------------------------------
   type, public :: hs_solution_t
     type(c_ptr) :: ptr = c_null_ptr
@@ -154,6 +197,10 @@ module halfslip
   type, public :: hs_ref_solution_t
     type(c_ptr) :: ptr = c_null_ptr
   end type hs_ref_solution_t
+
+  type, public :: hs_history_t
+    type(c_ptr) :: ptr = c_null_ptr
+  end type hs_history_t
 
   ! Reference-backend scene: decimal strings. An unallocated component means
   ! the C default ("1" for a, p0, f, E_star; "0.5" for the two ratios). When P
@@ -192,10 +239,14 @@ module halfslip
   public :: hs_ref_max_digits, hs_ref_max_digits_geometry, hs_ref_solve, hs_ref_solution_free
   public :: hs_ref_solution_summary
   public :: hs_ref_value, hs_ref_eval
+  public :: hs_solution_ramp
+  public :: hs_history_options_default, hs_history_new, hs_history_free, hs_history_add_vertices
+  public :: hs_history_add_cycles, hs_history_vertex_count, hs_history_vertex_get, hs_history_eval
+  public :: hs_history_cycle_summary, hs_history_slip_range
   public :: hs_associated
 
   interface hs_associated
-    module procedure solution_associated, ref_solution_associated
+    module procedure solution_associated, ref_solution_associated, history_associated
   end interface hs_associated
 
   ! ---- the C ABI ----------------------------------------------------------------
@@ -400,6 +451,94 @@ module halfslip
       integer(c_int), intent(inout) :: certified
       integer(c_int) :: st
     end function c_hs_ref_eval
+
+    function c_hs_solution_ramp(sol, recedes, at_Q_over_fP) bind(c, name="hs_solution_ramp") result(st)
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value :: sol
+      integer(c_int), intent(inout) :: recedes
+      real(c_double), intent(inout) :: at_Q_over_fP
+      integer(c_int) :: st
+    end function c_hs_solution_ramp
+
+    function c_hs_history_options_default(opts) bind(c, name="hs_history_options_default") result(st)
+      import :: c_int, hs_history_options
+      type(hs_history_options), intent(inout) :: opts
+      integer(c_int) :: st
+    end function c_hs_history_options_default
+
+    function c_hs_history_new(scene, geometry, opts, out) bind(c, name="hs_history_new") result(st)
+      import :: c_int, c_ptr, hs_scene
+      type(hs_scene), intent(in) :: scene
+      type(c_ptr), value :: geometry ! const hs_geometry * (may be NULL)
+      type(c_ptr), value :: opts     ! const hs_history_options * (may be NULL)
+      type(c_ptr), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_history_new
+
+    subroutine c_hs_history_free(h) bind(c, name="hs_history_free")
+      import :: c_ptr
+      type(c_ptr), value :: h
+    end subroutine c_hs_history_free
+
+    function c_hs_history_add_vertices(h, n, Q_over_fP, sigma_over_fp0) &
+        bind(c, name="hs_history_add_vertices") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: h
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: Q_over_fP(*), sigma_over_fp0(*)
+      integer(c_int) :: st
+    end function c_hs_history_add_vertices
+
+    function c_hs_history_add_cycles(h, Qm, Qa, Sm, Sa, phase_deg, cycles) &
+        bind(c, name="hs_history_add_cycles") result(st)
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value :: h
+      real(c_double), value :: Qm, Qa, Sm, Sa, phase_deg
+      integer(c_int), value :: cycles
+      integer(c_int) :: st
+    end function c_hs_history_add_cycles
+
+    function c_hs_history_vertex_count(h, n) bind(c, name="hs_history_vertex_count") result(st)
+      import :: c_int, c_ptr, c_size_t
+      type(c_ptr), value :: h
+      integer(c_size_t), intent(inout) :: n
+      integer(c_int) :: st
+    end function c_hs_history_vertex_count
+
+    function c_hs_history_vertex_get(h, i, out) bind(c, name="hs_history_vertex_get") result(st)
+      import :: c_int, c_ptr, c_size_t, hs_history_vertex
+      type(c_ptr), value :: h
+      integer(c_size_t), value :: i
+      type(hs_history_vertex), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_history_vertex_get
+
+    function c_hs_history_eval(h, vertex, field, n, x, out) bind(c, name="hs_history_eval") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: h
+      integer(c_size_t), value :: vertex
+      integer(c_int), value :: field
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_history_eval
+
+    function c_hs_history_cycle_summary(h, out) bind(c, name="hs_history_cycle_summary") result(st)
+      import :: c_int, c_ptr, hs_cycle_summary
+      type(c_ptr), value :: h
+      type(hs_cycle_summary), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_history_cycle_summary
+
+    function c_hs_history_slip_range(h, n, x, out) bind(c, name="hs_history_slip_range") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: h
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_history_slip_range
   end interface
 
 contains
@@ -484,6 +623,11 @@ contains
     type(hs_ref_solution_t), intent(in) :: sol
     ref_solution_associated = c_associated(sol%ptr)
   end function ref_solution_associated
+
+  logical function history_associated(hist)
+    type(hs_history_t), intent(in) :: hist
+    history_associated = c_associated(hist%ptr)
+  end function history_associated
 
   ! ---- version and messages ---------------------------------------------------------
 
@@ -714,6 +858,141 @@ contains
     integer, intent(out), optional :: ierr
     call check(c_hs_eval_pressure(sol%ptr, int(max(n, 0), c_size_t), x, out), 'hs_eval_pressure', ierr)
   end subroutine hs_eval_pressure
+
+  ! Whether a proportional ramp from zero to the solution's (Q, sigma) makes a
+  ! slip zone recede on the way, and the Q/fP where that first happens (NaN if not).
+  subroutine hs_solution_ramp(sol, recedes, at_Q_over_fP, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    logical, intent(inout) :: recedes
+    real(c_double), intent(inout) :: at_Q_over_fP
+    integer, intent(out), optional :: ierr
+    integer(c_int) :: r, st
+    r = 0
+    st = c_hs_solution_ramp(sol%ptr, r, at_Q_over_fP)
+    if (st == HS_OK) recedes = r /= 0
+    call check(st, 'hs_solution_ramp', ierr)
+  end subroutine hs_solution_ramp
+
+  ! ---- load histories (since 0.4) --------------------------------------------------------
+
+  ! Defaults: max_step = 1/128, max_steps = 2000000, segments_per_cycle = 64,
+  ! ramp_order = HS_RAMP_SIGMA_FIRST, steady_rtol = 1e-9.
+  subroutine hs_history_options_default(opts, ierr)
+    type(hs_history_options), intent(inout) :: opts
+    integer, intent(out), optional :: ierr
+    call check(c_hs_history_options_default(opts), 'hs_history_options_default', ierr)
+  end subroutine hs_history_options_default
+
+  ! A new history of the scene's contact (a, p0, f, E*; its ratios are ignored)
+  ! into hist (free it with hs_history_free). Without geometry the contact is
+  ! the scene's Hertz one. hist is overwritten on success, untouched on error.
+  subroutine hs_history_new(scene, hist, geometry, opts, ierr)
+    type(hs_scene), intent(in) :: scene
+    type(hs_history_t), intent(inout) :: hist
+    type(hs_geometry), intent(in), target, optional :: geometry
+    type(hs_history_options), intent(in), target, optional :: opts
+    integer, intent(out), optional :: ierr
+    type(c_ptr) :: h, pg, po
+    integer(c_int) :: st
+    h = c_null_ptr
+    pg = c_null_ptr
+    po = c_null_ptr
+    if (present(geometry)) pg = c_loc(geometry)
+    if (present(opts)) po = c_loc(opts)
+    st = c_hs_history_new(scene, pg, po, h)
+    if (st == HS_OK) hist%ptr = h
+    call check(st, 'hs_history_new', ierr)
+  end subroutine hs_history_new
+
+  ! Release the handle (no-op for a null handle) and reset it to C_NULL_PTR.
+  subroutine hs_history_free(hist)
+    type(hs_history_t), intent(inout) :: hist
+    call c_hs_history_free(hist%ptr)
+    hist%ptr = c_null_ptr
+  end subroutine hs_history_free
+
+  ! Append n vertices (Q_over_fP(i), sigma_over_fp0(i)) and march to them. On
+  ! error the history keeps the vertices reached before the failing one.
+  subroutine hs_history_add_vertices(hist, n, Q_over_fP, sigma_over_fp0, ierr)
+    type(hs_history_t), intent(in) :: hist
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: Q_over_fP(n), sigma_over_fp0(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_history_add_vertices(hist%ptr, int(max(n, 0), c_size_t), Q_over_fP, sigma_over_fp0), &
+               'hs_history_add_vertices', ierr)
+  end subroutine hs_history_add_vertices
+
+  ! Q(t) = Qm + Qa sin(wt), sigma(t) = Sm + Sa sin(wt + phase), reached by the
+  ! options' ramp_order, then `cycles` cycles.
+  subroutine hs_history_add_cycles(hist, Qm_over_fP, Qa_over_fP, Sm_over_fp0, Sa_over_fp0, phase_deg, cycles, ierr)
+    type(hs_history_t), intent(in) :: hist
+    real(c_double), intent(in) :: Qm_over_fP, Qa_over_fP, Sm_over_fp0, Sa_over_fp0, phase_deg
+    integer, intent(in) :: cycles
+    integer, intent(out), optional :: ierr
+    call check(c_hs_history_add_cycles(hist%ptr, Qm_over_fP, Qa_over_fP, Sm_over_fp0, Sa_over_fp0, phase_deg, &
+                                       int(cycles, c_int)), 'hs_history_add_cycles', ierr)
+  end subroutine hs_history_add_cycles
+
+  subroutine hs_history_vertex_count(hist, n, ierr)
+    type(hs_history_t), intent(in) :: hist
+    integer, intent(inout) :: n
+    integer, intent(out), optional :: ierr
+    integer(c_size_t) :: cn
+    integer(c_int) :: st
+    cn = 0
+    st = c_hs_history_vertex_count(hist%ptr, cn)
+    if (st == HS_OK) n = int(cn)
+    call check(st, 'hs_history_vertex_count', ierr)
+  end subroutine hs_history_vertex_count
+
+  ! Vertex i, numbered as in C: 0 .. count - 1.
+  subroutine hs_history_vertex_get(hist, i, vertex, ierr)
+    type(hs_history_t), intent(in) :: hist
+    integer, intent(in) :: i
+    type(hs_history_vertex), intent(inout) :: vertex
+    integer, intent(out), optional :: ierr
+    type(hs_history_vertex) :: tmp
+    integer(c_int) :: st
+    tmp%struct_size = c_sizeof(tmp)
+    st = c_hs_history_vertex_get(hist%ptr, int(i, c_size_t), tmp)
+    if (st == HS_OK) vertex = tmp
+    call check(st, 'hs_history_vertex_get', ierr)
+  end subroutine hs_history_vertex_get
+
+  ! Field (HS_FIELD_TRACTION or HS_FIELD_SLIP) after vertex `vertex` (0-based)
+  ! at x(i), i = 1..n, |x(i)| <= a. No copies.
+  subroutine hs_history_eval(hist, vertex, field, n, x, out, ierr)
+    type(hs_history_t), intent(in) :: hist
+    integer, intent(in) :: vertex, field, n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_history_eval(hist%ptr, int(vertex, c_size_t), int(field, c_int), int(max(n, 0), c_size_t), &
+                                 x, out), 'hs_history_eval', ierr)
+  end subroutine hs_history_eval
+
+  ! Summary of the periodic loading (HS_ERR_NOT_APPLICABLE without one).
+  subroutine hs_history_cycle_summary(hist, summary, ierr)
+    type(hs_history_t), intent(in) :: hist
+    type(hs_cycle_summary), intent(inout) :: summary
+    integer, intent(out), optional :: ierr
+    type(hs_cycle_summary) :: tmp
+    integer(c_int) :: st
+    tmp%struct_size = c_sizeof(tmp)
+    st = c_hs_history_cycle_summary(hist%ptr, tmp)
+    if (st == HS_OK) summary = tmp
+    call check(st, 'hs_history_cycle_summary', ierr)
+  end subroutine hs_history_cycle_summary
+
+  ! Slip range max h - min h over the vertices of the last cycle, at x(1..n).
+  subroutine hs_history_slip_range(hist, n, x, out, ierr)
+    type(hs_history_t), intent(in) :: hist
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_history_slip_range(hist%ptr, int(max(n, 0), c_size_t), x, out), 'hs_history_slip_range', ierr)
+  end subroutine hs_history_slip_range
 
   ! ---- arbitrary-precision reference backend ---------------------------------------------
 

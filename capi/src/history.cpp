@@ -40,7 +40,7 @@ int hs_history_options_default(hs_history_options *o) {
     o->max_steps = 2000000;
     o->segments_per_cycle = 64;
     o->ramp_order = HS_RAMP_SIGMA_FIRST;
-    o->steady_rtol = 1e-9;
+    o->steady_rtol = 1e-6;
   });
 }
 
@@ -137,6 +137,7 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
     out->steps = long(v.step_end);
     out->step = h->h->step();
     out->error_estimate = h->h->error_estimate();
+    out->interior_merges = long(v.interior_merges);
   });
 }
 
@@ -188,9 +189,10 @@ int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double
     const auto &vs = h->h->fine().vertices();
     std::vector<double> tmp(n);
     for (size_t i = 0; i < n; ++i) {
+      // from the state before the cycle (the unloaded start when the cycle begins the history)
       double lo = 0, hi = 0;
-      bool first = true;
-      for (size_t k = c.last_cycle_first - 1; k < c.last_cycle_end; ++k) {
+      bool first = c.last_cycle_first > 0;
+      for (size_t k = c.last_cycle_first > 0 ? c.last_cycle_first - 1 : 0; k < c.last_cycle_end; ++k) {
         const double v = field_at(*h, vs[k].step_end, HS_FIELD_SLIP, x[i]);
         if (first || v < lo) lo = v;
         if (first || v > hi) hi = v;

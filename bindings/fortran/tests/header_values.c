@@ -14,6 +14,7 @@ static const int kValues[] = {
   HS_REGIME_STUCK, HS_REGIME_SAME_SIGN, HS_REGIME_OPPOSITE_SIGN,
   HS_REF_B1, HS_REF_B2, HS_REF_D1, HS_REF_D2, HS_REF_ENERGY1, HS_REF_ENERGY2, HS_REF_A, HS_REF_P0,
   HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_WORK, HS_REF_EVAL_PRESSURE,
+  HS_RAMP_SIGMA_FIRST, HS_RAMP_TOGETHER, HS_RAMP_Q_FIRST, HS_FIELD_TRACTION, HS_FIELD_SLIP,
 };
 
 int hstest_header_values(int *out, int n);
@@ -23,12 +24,16 @@ int hstest_header_values(int *out, int n) {
   return total;
 }
 
-/* sizeof of hs_scene, hs_options, hs_summary, hs_ref_summary, hs_geometry */
-void hstest_struct_sizes(size_t out[5]);
-void hstest_struct_sizes(size_t out[5]) {
+/* sizeof of hs_scene, hs_options, hs_summary, hs_ref_summary, hs_geometry,
+ * hs_history_options, hs_history_vertex, hs_cycle_summary */
+void hstest_struct_sizes(size_t out[8]);
+void hstest_struct_sizes(size_t out[8]) {
   out[0] = sizeof(hs_scene);
   out[1] = sizeof(hs_options);
   out[2] = sizeof(hs_summary);
   out[3] = sizeof(hs_ref_summary);
   out[4] = sizeof(hs_geometry);
+  out[5] = sizeof(hs_history_options);
+  out[6] = sizeof(hs_history_vertex);
+  out[7] = sizeof(hs_cycle_summary);
 }

@@ -1,7 +1,7 @@
 ! Test of the Fortran module halfslip against the C library: constants and
 ! struct layouts agree with the header, real results (same-sign closed form,
-! opposite-sign value, reference digits), error codes through ierr, outputs
-! untouched on error. Prints "fortran: N passed, M failed"; exit status 1 on
+! opposite-sign value, reference digits, load histories), error codes through
+! ierr, outputs untouched on error. Prints "fortran: N passed, M failed"; exit status 1 on
 ! any failure.
 ! Pressure callbacks for hs_solve_callback (bind(c) procedures of a module).
 module test_fortran_pressures
@@ -31,7 +31,7 @@ end module test_fortran_pressures
 
 program test_fortran
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_sizeof, c_loc, c_ptr
-  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf, ieee_is_nan
   use halfslip
   use test_fortran_pressures
   implicit none
@@ -45,12 +45,12 @@ program test_fortran
     end function hstest_header_values
     subroutine hstest_struct_sizes(out) bind(c, name="hstest_struct_sizes")
       import :: c_size_t
-      integer(c_size_t), intent(inout) :: out(5)
+      integer(c_size_t), intent(inout) :: out(8)
     end subroutine hstest_struct_sizes
   end interface
 
   ! Same order as kValues in header_values.c.
-  integer(c_int), parameter :: kConstants(47) = [ &
+  integer(c_int), parameter :: kConstants(52) = [ &
     HS_VERSION_MAJOR, HS_VERSION_MINOR, HS_VERSION_PATCH, &
     HS_OK, HS_ERR_NULL_POINTER, HS_ERR_STRUCT_SIZE, HS_ERR_NOT_FINITE, HS_ERR_BAD_SIZE, &
     HS_ERR_BAD_FRICTION, HS_ERR_GROSS_SLIDING, HS_ERR_BAD_GEOMETRY, HS_ERR_POINT_OUTSIDE, &
@@ -62,7 +62,8 @@ program test_fortran
     HS_GEOMETRY_CALLBACK, &
     HS_REGIME_STUCK, HS_REGIME_SAME_SIGN, HS_REGIME_OPPOSITE_SIGN, &
     HS_REF_B1, HS_REF_B2, HS_REF_D1, HS_REF_D2, HS_REF_ENERGY1, HS_REF_ENERGY2, HS_REF_A, HS_REF_P0, &
-    HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_WORK, HS_REF_EVAL_PRESSURE]
+    HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_WORK, HS_REF_EVAL_PRESSURE, &
+    HS_RAMP_SIGMA_FIRST, HS_RAMP_TOGETHER, HS_RAMP_Q_FIRST, HS_FIELD_TRACTION, HS_FIELD_SLIP]
 
   real(c_double), parameter :: pi = 3.141592653589793238462643383279503_c_double
   integer :: passed = 0, failed = 0
@@ -75,6 +76,7 @@ program test_fortran
   call test_hertz_loads()
   call test_geometries()
   call test_reference()
+  call test_history()
 
   write (*, '(a,i0,a,i0,a)') 'fortran: ', passed, ' passed, ', failed, ' failed'
   if (failed /= 0) error stop 1
@@ -133,12 +135,15 @@ contains
   ! the size of its C struct.
   subroutine test_header_agreement()
     integer(c_int) :: cvals(size(kConstants)), total
-    integer(c_size_t) :: sizes(5)
+    integer(c_size_t) :: sizes(8)
     type(hs_geometry) :: g
     type(hs_scene) :: sc
     type(hs_options) :: op
     type(hs_summary) :: sm
     type(hs_ref_summary) :: rsm
+    type(hs_history_options) :: ho
+    type(hs_history_vertex) :: hv
+    type(hs_cycle_summary) :: cs
     integer :: i
     cvals = -999
     total = hstest_header_values(cvals, int(size(cvals), c_int))
@@ -156,6 +161,12 @@ contains
     call expect(c_sizeof(sm) == sizes(3), 'sizeof(hs_summary)')
     call expect(c_sizeof(rsm) == sizes(4), 'sizeof(hs_ref_summary)')
     call expect(c_sizeof(g) == sizes(5), 'sizeof(hs_geometry)')
+    call expect(c_sizeof(ho) == sizes(6), 'sizeof(hs_history_options)')
+    call expect(c_sizeof(hv) == sizes(7), 'sizeof(hs_history_vertex)')
+    call expect(c_sizeof(cs) == sizes(8), 'sizeof(hs_cycle_summary)')
+    call hs_history_options_default(ho)
+    call expect(ho%struct_size == c_sizeof(ho) .and. ho%max_step == 1 / 128.0_c_double .and. &
+                ho%segments_per_cycle == 64 .and. ho%ramp_order == HS_RAMP_SIGMA_FIRST, 'hs_history_options_default')
     call hs_geometry_default(g)
     call expect(g%struct_size == c_sizeof(g) .and. g%kind == HS_GEOMETRY_HERTZ .and. &
                 g%flat_over_a == 0.5_c_double .and. g%exponent == 2, 'hs_geometry_default')
@@ -555,5 +566,142 @@ contains
     call expect(hs_ref_max_digits_geometry(HS_GEOMETRY_FLAT_ROUNDED) >= min(100, hs_ref_max_digits()) .and. &
                 hs_ref_max_digits_geometry(HS_GEOMETRY_SAMPLES) == 0, 'hs_ref_max_digits_geometry')
   end subroutine test_reference
+
+  ! Load histories (since 0.4): Mindlin unloading, the steady cycle of a
+  ! symmetric proportional loading, the ramp flag, errors through ierr.
+  subroutine test_history()
+    type(hs_scene) :: sc
+    type(hs_history_t) :: hist
+    type(hs_history_options) :: ho
+    type(hs_history_vertex) :: v0, v1, v
+    type(hs_cycle_summary) :: cs
+    type(hs_solution_t) :: sol
+    real(c_double) :: x(2), q(2), h(2), E(2), c, at
+    real(c_double) :: qs(2), ss(2)
+    logical :: recedes
+    integer :: ierr, n
+
+    ! loading to Q = 0.6 fP, then unloading to 0.2 fP (sigma = 0): stick zone
+    ! |x| < c', c'/a = sqrt(1 - (0.6 - 0.2)/2) (default max_step 1/128)
+    call hs_scene_default(sc)
+    call expect(.not. hs_associated(hist), 'history handle starts null')
+    call hs_history_new(sc, hist, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'hs_history_new')
+    call expect(hs_associated(hist), 'history handle set')
+    qs = [0.6_c_double, 0.2_c_double]
+    ss = 0
+    call hs_history_add_vertices(hist, 2, qs, ss, ierr)
+    call expect_code(ierr, HS_OK, 'history: add vertices')
+    n = -1
+    call hs_history_vertex_count(hist, n, ierr)
+    call expect(ierr == HS_OK .and. n == 2, 'history: vertex count')
+    call hs_history_vertex_get(hist, 0, v0, ierr)
+    call expect_code(ierr, HS_OK, 'history: vertex 0')
+    call hs_history_vertex_get(hist, 1, v1)
+    call expect(v0%Q_over_fP == 0.6_c_double .and. v1%Q_over_fP == 0.2_c_double .and. v1%cycle == 0, &
+                'history: vertex loads')
+    call expect_near(v0%b1, sqrt(0.4_c_double), 5e-5_c_double * sqrt(0.4_c_double), 'history: loaded stick zone')
+    c = sqrt(1 - 0.4_c_double / 2)
+    call expect_near(v1%b1, c, 1e-5_c_double * c, 'history: unloaded stick zone b1')
+    call expect_near(v1%b2, c, 1e-5_c_double * c, 'history: unloaded stick zone b2')
+    call expect(v0%slip_dir1 == 1 .and. v0%slip_dir2 == 1 .and. v1%slip_dir1 == -1 .and. v1%slip_dir2 == -1, &
+                'history: slip directions reverse on unloading')
+    call expect(v1%steps > v0%steps .and. v0%steps > 0 .and. v1%energy1 > 0, 'history: steps and energy')
+    x = [0.0_c_double, 0.95_c_double]
+    call hs_history_eval(hist, 1, HS_FIELD_TRACTION, 2, x, q, ierr)
+    call expect_code(ierr, HS_OK, 'history: traction')
+    call expect_near(q(1), 2 * c - 1 - sqrt(0.4_c_double), 1e-5_c_double, 'history: traction in the stick zone')
+    call expect_near(q(2), -sqrt(1 - 0.95_c_double**2), 1e-7_c_double, 'history: traction in the slip zone')
+    call hs_history_eval(hist, 1, HS_FIELD_SLIP, 2, x, h, ierr)
+    call expect(ierr == HS_OK .and. h(1) == 0 .and. h(2) > 0, 'history: locked-in slip')
+    ! errors: outputs untouched, the vertices before a failing one kept
+    q = 42
+    x(2) = 1.5_c_double
+    call hs_history_eval(hist, 1, HS_FIELD_TRACTION, 2, x, q, ierr)
+    call expect_code(ierr, HS_ERR_POINT_OUTSIDE, 'history: point outside')
+    call expect(all(q == 42), 'history: output untouched on error')
+    call hs_history_eval(hist, 2, HS_FIELD_SLIP, 1, x, q, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'history: vertex out of range')
+    call hs_history_eval(hist, 1, 7, 1, x, q, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'history: unknown field')
+    v = v1
+    call hs_history_vertex_get(hist, 5, v, ierr)
+    call expect(ierr == HS_ERR_BAD_OPTION .and. v%Q_over_fP == v1%Q_over_fP, 'history: vertex get out of range')
+    qs = [0.5_c_double, 1.0_c_double]
+    call hs_history_add_vertices(hist, 2, qs, ss, ierr)
+    call expect_code(ierr, HS_ERR_GROSS_SLIDING, 'history: |Q| >= fP')
+    call hs_history_vertex_count(hist, n)
+    call expect(n == 3, 'history: vertices before the failing one kept')
+    call hs_history_cycle_summary(hist, cs, ierr)
+    call expect_code(ierr, HS_ERR_NOT_APPLICABLE, 'history: no cycles yet')
+    call hs_history_slip_range(hist, 1, x, q, ierr)
+    call expect_code(ierr, HS_ERR_NOT_APPLICABLE, 'history: slip range without cycles')
+    call hs_history_free(hist)
+    call expect(.not. hs_associated(hist), 'history free resets the handle')
+    call hs_history_free(hist)   ! null handle: no-op
+    call hs_history_vertex_count(hist, n, ierr)
+    call expect_code(ierr, HS_ERR_NULL_POINTER, 'history: null handle')
+
+    ! symmetric proportional cycle between +(0.5, 0.4) and -(0.5, 0.4): each
+    ! zone dissipates 4 times its monotonic energy at (0.5, 0.4) per cycle
+    call hs_solve(scene_qs(0.5_c_double, 0.4_c_double), sol)
+    call hs_solution_energy(sol, E)
+    call hs_solution_free(sol)
+    call hs_history_options_default(ho)
+    call hs_history_new(sc, hist, opts=ho, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'hs_history_new with options')
+    call hs_history_add_cycles(hist, 0.0_c_double, 0.5_c_double, 0.0_c_double, 0.4_c_double, 0.0_c_double, 3, ierr)
+    call expect_code(ierr, HS_OK, 'history: add cycles')
+    call hs_history_cycle_summary(hist, cs, ierr)
+    call expect_code(ierr, HS_OK, 'history: cycle summary')
+    call expect(cs%cycles == 3 .and. cs%shakedown == 0, 'history: cycles computed, no shakedown')
+    call expect_near(cs%energy_per_cycle1, 4 * E(1), 1e-4_c_double * 4 * E(1), 'history: energy per cycle, zone 1')
+    call expect_near(cs%energy_per_cycle2, 4 * E(2), 1e-4_c_double * 4 * E(2), 'history: energy per cycle, zone 2')
+    x = [0.0_c_double, 0.99_c_double]
+    call hs_history_slip_range(hist, 2, x, h, ierr)
+    call expect(ierr == HS_OK .and. h(1) == 0 .and. h(2) > 0, 'history: slip range')
+    call hs_history_add_cycles(hist, 0.0_c_double, 0.5_c_double, 0.0_c_double, 0.4_c_double, 0.0_c_double, 0, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'history: zero cycles')
+    call hs_history_free(hist)
+    ! cycles_to_steady, "the first cycle that the next repeats": cycle 1 starts
+    ! with the first loading from zero, so it is cycle 2. (With the default
+    ! steady_rtol = 1e-9 it is not reached in 3 cycles: the stick-zone ends
+    ! drift by ~3e-8 a cycle at max_step 1/128.)
+    ho%steady_rtol = 1e-8_c_double
+    call hs_history_new(sc, hist, opts=ho)
+    call hs_history_add_cycles(hist, 0.0_c_double, 0.5_c_double, 0.0_c_double, 0.4_c_double, 0.0_c_double, 3)
+    call hs_history_cycle_summary(hist, cs)
+    call expect_code(int(cs%cycles_to_steady), 2, 'history: cycles to steady')
+    call hs_history_free(hist)
+
+    ! bad contacts and options
+    ho%max_step = 0
+    call hs_history_new(sc, hist, opts=ho, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'history: max_step = 0')
+    call hs_history_options_default(ho)
+    ho%ramp_order = 3
+    call hs_history_new(sc, hist, opts=ho, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'history: unknown ramp order')
+    sc%f = 0
+    call hs_history_new(sc, hist, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_FRICTION, 'history: f = 0')
+    call expect(.not. hs_associated(hist), 'history handle untouched on error')
+
+    ! the ramp flag: the ray sigma = 3Q to (0.88, 2.64) makes a zone recede near Q = 0.46 fP
+    call hs_solve(scene_qs(0.88_c_double, 2.64_c_double), sol)
+    recedes = .false.
+    at = 0
+    call hs_solution_ramp(sol, recedes, at, ierr)
+    call expect_code(ierr, HS_OK, 'hs_solution_ramp')
+    call expect(recedes .and. at > 0.44_c_double .and. at < 0.48_c_double, 'ramp recedes near Q = 0.46')
+    call hs_solution_free(sol)
+    call hs_solve(scene_qs(0.5_c_double, 0.5_c_double), sol)
+    recedes = .true.
+    call hs_solution_ramp(sol, recedes, at)
+    call expect(.not. recedes .and. ieee_is_nan(at), 'ramp does not recede at (0.5, 0.5); NaN')
+    call hs_solution_free(sol)
+    call hs_solution_ramp(sol, recedes, at, ierr)
+    call expect_code(ierr, HS_ERR_NULL_POINTER, 'hs_solution_ramp: null handle')
+  end subroutine test_history
 
 end program test_fortran

@@ -22,6 +22,7 @@ raises ValueError naming the argument and its value.
 """
 
 import array
+import collections
 import ctypes
 import enum
 import sys
@@ -31,7 +32,8 @@ from . import _clib
 
 __version__ = "0.3.0"
 __all__ = [
-    "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified", "Model", "Regime",
+    "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified", "Model", "Regime", "History",
+    "HistoryVertex", "CycleSummary", "Ramp",
     "solve", "from_hertz_loads", "from_power_law_loads", "from_flat_rounded_loads", "solve_reference", "ref_max_digits",
     "version", "library_version", "library_path", "strerror",
 ]
@@ -131,6 +133,15 @@ def _enum_or_int(cls, v):
         return cls(v)
     except ValueError:
         return v
+# load histories (since 0.4)
+RAMP_SIGMA_FIRST = 0
+RAMP_TOGETHER = 1
+RAMP_Q_FIRST = 2
+_RAMP_NAMES = {"sigma-first": RAMP_SIGMA_FIRST, "together": RAMP_TOGETHER, "q-first": RAMP_Q_FIRST}
+
+FIELD_TRACTION = 1
+FIELD_SLIP = 2
+
 _GEOMETRY_NAMES = {"hertz": GEOMETRY_HERTZ, "flat-rounded": GEOMETRY_FLAT_ROUNDED, "power-law": GEOMETRY_POWER_LAW,
                    "samples": GEOMETRY_SAMPLES, "callback": GEOMETRY_CALLBACK}
 _STATUS_NAMES = {v: "HS_" + k for k, v in list(globals().items()) if k == "OK" or k.startswith("ERR_")}
@@ -377,37 +388,44 @@ class Scene:
         if kind is None:
             _check(_lib.hs_solve(byref(self._c), opts, byref(h)), "hs_solve", values)
             return Solution(h)
-        g = _clib.Geometry()
-        _check(_lib.hs_geometry_default(byref(g)), "hs_geometry_default")
-        g.kind = kind
-        if flat_over_a is not None:
-            g.flat_over_a = _float(flat_over_a, "flat_over_a", "solve")
-        if exponent is not None:
-            g.exponent = _float(exponent, "exponent", "solve")
-        arrays = None
-        if samples is not None:
-            try:
-                xs, ps = samples
-            except (TypeError, ValueError):
-                raise TypeError("halfslip: samples must be a pair (x, p) of sequences") from None
-            (xa, nx, _), (pa, np_, _) = _points(xs), _points(ps)
-            if nx != np_:
-                raise ValueError("halfslip: samples: %d abscissae but %d pressures" % (nx, np_))
-            arrays = (xa, pa)   # alive during the call; the library copies them
-            values["samples"] = "(%d points)" % nx
-            g.n_samples = nx
-            if nx:
-                g.sample_x = ctypes.cast(xa, ctypes.POINTER(c_double))
-                g.sample_p = ctypes.cast(pa, ctypes.POINTER(c_double))
-        callback = None
-        if pressure is not None:
-            callback = _PressureCallback(pressure)
-            g.pressure = callback.cfunc
+        g, arrays, callback = _geometry_struct(kind, flat_over_a, exponent, samples, pressure, values)
         st = _lib.hs_solve_geometry(byref(self._c), byref(g), opts, byref(h))
         del arrays
         if st != 0:
             _raise(st, "hs_solve_geometry", callback, values)
         return Solution(h, callback)
+
+
+def _geometry_struct(kind, flat_over_a, exponent, samples, pressure, values=None):
+    """(hs_geometry, arrays to keep alive during the call, _PressureCallback or None)."""
+    g = _clib.Geometry()
+    _check(_lib.hs_geometry_default(byref(g)), "hs_geometry_default")
+    g.kind = kind
+    if flat_over_a is not None:
+        g.flat_over_a = _float(flat_over_a, "flat_over_a", "solve")
+    if exponent is not None:
+        g.exponent = _float(exponent, "exponent", "solve")
+    arrays = None
+    if samples is not None:
+        try:
+            xs, ps = samples
+        except (TypeError, ValueError):
+            raise TypeError("halfslip: samples must be a pair (x, p) of sequences") from None
+        (xa, nx, _), (pa, np_, _) = _points(xs), _points(ps)
+        if nx != np_:
+            raise ValueError("halfslip: samples: %d abscissae but %d pressures" % (nx, np_))
+        arrays = (xa, pa)   # alive during the call; the library copies them
+        if values is not None:
+            values["samples"] = "(%d points)" % nx
+        g.n_samples = nx
+        if nx:
+            g.sample_x = ctypes.cast(xa, ctypes.POINTER(c_double))
+            g.sample_p = ctypes.cast(pa, ctypes.POINTER(c_double))
+    callback = None
+    if pressure is not None:
+        callback = _PressureCallback(pressure)
+        g.pressure = callback.cfunc
+    return g, arrays, callback
 
 
 def _geometry_kind(geometry, flat_over_a, exponent, samples, pressure):
@@ -670,6 +688,205 @@ class Solution(_Handle):
         if st != 0:
             _raise(st, "hs_surface_stress_extremes", self._callback)
         return dict(zip(("max", "x_max", "min", "x_min", "bulk"), out))
+
+    def ramp(self):
+        """Ramp(recedes, at_Q_over_fP) of hs_solution_ramp: whether a
+        proportional ramp from zero to this (Q, sigma) makes a slip zone
+        recede on the way (the monotonic solution then is not the state such
+        a ramp reaches), and the Q/fP where that first happens (NaN if not)."""
+        recedes, at = c_int(0), c_double(0.0)
+        st = _lib.hs_solution_ramp(self._handle(), byref(recedes), byref(at))
+        if st != 0:
+            _raise(st, "hs_solution_ramp", self._callback)
+        return Ramp(bool(recedes.value), at.value)
+
+
+Ramp = collections.namedtuple("Ramp", "recedes at_Q_over_fP")
+Ramp.__doc__ = "Result of Solution.ramp() (hs_solution_ramp)."
+
+
+# ---- load histories (since 0.4) ----------------------------------------------------------------
+
+HistoryVertex = collections.namedtuple(
+    "HistoryVertex", "Q_over_fP sigma_over_fp0 b1 b2 slip_dir1 slip_dir2 energy1 energy2 cycle steps step "
+    "error_estimate interior_merges")
+HistoryVertex.__doc__ = """State after a vertex of a History (struct hs_history_vertex): the loads,
+the stick zone (-b2, b1), the slip direction of each edge zone (+1, -1, or 0
+where that edge does not slip at the vertex), the energy dissipated in zone 1
+(x > b1) and zone 2 over the segment that ends here, the cycle (0: path or
+ramp; k >= 1: the k-th cycle of add_cycles), the load steps marched so far, the
+load step after refinement, the march's error estimate (rtol) and the number of
+interior slip patches merged with an edge zone so far (an approximation)."""
+
+CycleSummary = collections.namedtuple(
+    "CycleSummary", "cycles cycles_to_steady shakedown energy_per_cycle1 energy_per_cycle2")
+CycleSummary.__doc__ = """Periodic loading of a History (struct hs_cycle_summary): cycles computed,
+the first cycle that the next repeats (-1: not reached), whether the last
+cycle dissipates nothing, and the energy of each zone over the last cycle."""
+
+
+class History(_Handle):
+    """A load history (hs_history): the normal load is applied first and held;
+    then (Q, sigma) moves along straight segments between vertices, starting
+    from (0, 0). The contact is given as to solve(): a, p0, f, E_star (or
+    scene=, whose ratios are ignored) and optionally a geometry (geometry=,
+    flat_over_a=, exponent=, samples=, pressure=; see Scene.solve). Options
+    (unset: the C defaults of hs_history_options_default): max_step (largest
+    load step, default 1/128), max_steps, segments_per_cycle, ramp_order
+    ("sigma-first" (default), "together", "q-first" or a RAMP_* value) and
+    steady_rtol. Use as a context manager, or call close(); the handle is
+    also freed when the object is garbage collected.
+
+    Vertices are numbered from 0 in the order they were reached (vertex_count
+    of them, add_cycles' ramp and cycle vertices included)."""
+
+    def __init__(self, *, a=None, p0=None, f=None, E_star=None, scene=None, geometry=None, flat_over_a=None,
+                 exponent=None, samples=None, pressure=None, max_step=None, max_steps=None,
+                 segments_per_cycle=None, ramp_order=None, steady_rtol=None, rtol=None):
+        self._h = None
+        self._callback = None
+        if scene is None:
+            scene = Scene(a=a, p0=p0, f=f, E_star=E_star)
+        elif any(v is not None for v in (a, p0, f, E_star)):
+            raise TypeError("History: give either scene or scene values, not both")
+        opts = None
+        given = dict(max_step=max_step, max_steps=max_steps, segments_per_cycle=segments_per_cycle,
+                     ramp_order=ramp_order, steady_rtol=steady_rtol, rtol=rtol)
+        if any(v is not None for v in given.values()):
+            o = _clib.HistoryOptions()
+            _check(_lib.hs_history_options_default(byref(o)), "hs_history_options_default")
+            if max_step is not None:
+                o.max_step = float(max_step)
+            if max_steps is not None:
+                o.max_steps = int(max_steps)
+            if segments_per_cycle is not None:
+                o.segments_per_cycle = int(segments_per_cycle)
+            if ramp_order is not None:
+                if isinstance(ramp_order, str):
+                    try:
+                        o.ramp_order = _RAMP_NAMES[ramp_order]
+                    except KeyError:
+                        raise ValueError("halfslip: unknown ramp_order %r (one of %s)"
+                                         % (ramp_order, ", ".join(_RAMP_NAMES))) from None
+                else:
+                    o.ramp_order = int(ramp_order)
+            if steady_rtol is not None:
+                o.steady_rtol = float(steady_rtol)
+            if rtol is not None:
+                o.rtol = float(rtol)
+            opts = byref(o)
+        kind = _geometry_kind(geometry, flat_over_a, exponent, samples, pressure)
+        g, arrays, callback = None, None, None
+        if kind is not None:
+            g, arrays, callback = _geometry_struct(kind, flat_over_a, exponent, samples, pressure)
+        h = _clib.HistoryP()
+        st = _lib.hs_history_new(byref(scene._c), None if g is None else byref(g), opts, byref(h))
+        del arrays
+        if st != 0:
+            _raise(st, "hs_history_new", callback)
+        self._h = h
+        self._callback = callback   # a pressure callback the C history calls
+
+    def _handle(self):
+        if not self._h:
+            raise ValueError("halfslip: the history has been closed")
+        return self._h
+
+    def _release(self, h):
+        if h:
+            _lib.hs_history_free(h)
+        self._callback = None
+
+    def _status(self, st, name):
+        if st != 0:
+            _raise(st, name, self._callback)
+
+    def __repr__(self):
+        if not self._h:
+            return "<halfslip.History (closed)>"
+        return "<halfslip.History %d vertices>" % self.vertex_count
+
+    def add_vertices(self, Q_over_fP, sigma_over_fp0):
+        """Append vertices (Q/fP, sigma/fp0), two numbers or two sequences of
+        the same length, and march to them (hs_history_add_vertices). On error
+        the history keeps the vertices reached before the failing one."""
+        h = self._handle()
+        (qa, nq, _), (sa, ns, _) = _points(Q_over_fP), _points(sigma_over_fp0)
+        if nq != ns:
+            raise ValueError("halfslip: add_vertices: %d values of Q_over_fP but %d of sigma_over_fp0" % (nq, ns))
+        self._status(_lib.hs_history_add_vertices(h, nq, qa, sa), "hs_history_add_vertices")
+
+    def add_path(self, points):
+        """add_vertices from a sequence of pairs [(Q/fP, sigma/fp0), ...]."""
+        pts = [(float(q), float(s)) for q, s in points]
+        self.add_vertices([p[0] for p in pts], [p[1] for p in pts])
+
+    def add_cycles(self, Qm_over_fP, Qa_over_fP, Sm_over_fp0, Sa_over_fp0, phase_deg, cycles):
+        """Periodic loading Q(t) = Qm + Qa sin(wt), sigma(t) = Sm + Sa sin(wt + phase),
+        reached from the current state by the ramp_order option, then `cycles`
+        cycles (hs_history_add_cycles)."""
+        self._status(_lib.hs_history_add_cycles(self._handle(), float(Qm_over_fP), float(Qa_over_fP),
+                                                float(Sm_over_fp0), float(Sa_over_fp0), float(phase_deg),
+                                                int(cycles)), "hs_history_add_cycles")
+
+    @property
+    def vertex_count(self):
+        """Number of vertices reached."""
+        n = c_size_t(0)
+        self._status(_lib.hs_history_vertex_count(self._handle(), byref(n)), "hs_history_vertex_count")
+        return n.value
+
+    def vertex(self, i):
+        """The HistoryVertex i (0 <= i < vertex_count)."""
+        v = _clib.HistoryVertex()
+        v.struct_size = ctypes.sizeof(v)
+        self._status(_lib.hs_history_vertex_get(self._handle(), int(i), byref(v)), "hs_history_vertex_get")
+        return HistoryVertex(*(getattr(v, k) for k in HistoryVertex._fields))
+
+    @property
+    def vertices(self):
+        """All vertices, a list of HistoryVertex."""
+        return [self.vertex(i) for i in range(self.vertex_count)]
+
+    def _eval(self, vertex, field, x):
+        h = self._handle()
+        xs, n, scalar = _points(x)
+        out = array.array("d", bytes(n * ctypes.sizeof(c_double)))
+        if n:
+            st = _lib.hs_history_eval(h, int(vertex), field, n, xs, (c_double * n).from_buffer(out))
+        else:
+            st = _lib.hs_history_eval(h, int(vertex), field, 0, None, None)
+        self._status(st, "hs_history_eval")
+        return out[0] if scalar else out
+
+    def traction(self, vertex, x):
+        """Shear traction q(x) in the state after vertex `vertex` (x as in
+        Solution.Bx: a number or numbers, |x| <= a)."""
+        return self._eval(vertex, FIELD_TRACTION, x)
+
+    def slip(self, vertex, x):
+        """Accumulated slip h(x), locked-in slip included, after vertex `vertex`."""
+        return self._eval(vertex, FIELD_SLIP, x)
+
+    def cycle_summary(self):
+        """CycleSummary of the last add_cycles (HalfslipError ERR_NOT_APPLICABLE without one)."""
+        c = _clib.CycleSummary()
+        c.struct_size = ctypes.sizeof(c)
+        self._status(_lib.hs_history_cycle_summary(self._handle(), byref(c)), "hs_history_cycle_summary")
+        return CycleSummary(c.cycles, c.cycles_to_steady, bool(c.shakedown), c.energy_per_cycle1,
+                            c.energy_per_cycle2)
+
+    def slip_range(self, x):
+        """Slip range max h - min h over the vertices of the last cycle, at x."""
+        h = self._handle()
+        xs, n, scalar = _points(x)
+        out = array.array("d", bytes(n * ctypes.sizeof(c_double)))
+        if n:
+            st = _lib.hs_history_slip_range(h, n, xs, (c_double * n).from_buffer(out))
+        else:
+            st = _lib.hs_history_slip_range(h, 0, None, None)
+        self._status(st, "hs_history_slip_range")
+        return out[0] if scalar else out
 
 
 # ---- arbitrary-precision reference backend ---------------------------------------------------

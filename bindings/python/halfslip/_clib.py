@@ -1,10 +1,11 @@
 """Loading of the halfslip C library and its ctypes signatures.
 
 Only the structs that are passed by value to or from C are declared here
-(hs_scene, hs_options, hs_summary, hs_geometry, hs_ref_scene, hs_ref_summary), from
+(hs_scene, hs_options, hs_summary, hs_geometry, hs_ref_scene, hs_ref_summary,
+and since 0.4 hs_history_options, hs_history_vertex, hs_cycle_summary), from
 capi/include/halfslip/halfslip.h; their sizes are checked against the
 library's struct_size when the library is loaded. Solutions are opaque
-handles read through getters.
+handles read through getters, as are load histories (hs_history).
 """
 
 import ctypes
@@ -116,6 +117,51 @@ class RefSummary(ctypes.Structure):
     ]
 
 
+class HistoryOptions(ctypes.Structure):
+    """struct hs_history_options (since 0.4)"""
+    _fields_ = [
+        ("struct_size", c_size_t),
+        ("max_step", c_double),
+        ("max_steps", c_int),
+        ("segments_per_cycle", c_int),
+        ("ramp_order", c_int),
+        ("steady_rtol", c_double),
+        ("rtol", c_double),
+    ]
+
+
+class HistoryVertex(ctypes.Structure):
+    """struct hs_history_vertex (since 0.4)"""
+    _fields_ = [
+        ("struct_size", c_size_t),
+        ("Q_over_fP", c_double),
+        ("sigma_over_fp0", c_double),
+        ("b1", c_double),
+        ("b2", c_double),
+        ("slip_dir1", c_int),
+        ("slip_dir2", c_int),
+        ("energy1", c_double),
+        ("energy2", c_double),
+        ("cycle", c_int),
+        ("steps", ctypes.c_long),
+        ("step", c_double),
+        ("error_estimate", c_double),
+        ("interior_merges", ctypes.c_long),
+    ]
+
+
+class CycleSummary(ctypes.Structure):
+    """struct hs_cycle_summary (since 0.4)"""
+    _fields_ = [
+        ("struct_size", c_size_t),
+        ("cycles", c_int),
+        ("cycles_to_steady", c_int),
+        ("shakedown", c_int),
+        ("energy_per_cycle1", c_double),
+        ("energy_per_cycle2", c_double),
+    ]
+
+
 class _Solution(ctypes.Structure):
     """opaque struct hs_solution"""
 
@@ -124,7 +170,12 @@ class _RefSolution(ctypes.Structure):
     """opaque struct hs_ref_solution"""
 
 
+class _History(ctypes.Structure):
+    """opaque struct hs_history"""
+
+
 SolutionP = POINTER(_Solution)
+HistoryP = POINTER(_History)
 RefSolutionP = POINTER(_RefSolution)
 _DoubleP = POINTER(c_double)
 _CharP = POINTER(ctypes.c_char)  # output buffers (create_string_buffer)
@@ -154,6 +205,17 @@ _SIGNATURES = {
     "hs_eval_surface_stress": (c_int, [SolutionP, c_int, c_double, c_size_t, _DoubleP, _DoubleP]),
     "hs_eval_stress": (c_int, [SolutionP, c_int, c_double, c_size_t, _DoubleP, _DoubleP, _DoubleP]),
     "hs_surface_stress_extremes": (c_int, [SolutionP, c_int, c_double, c_double, _DoubleP]),
+    "hs_solution_ramp": (c_int, [SolutionP, POINTER(c_int), _DoubleP]),
+    "hs_history_options_default": (c_int, [POINTER(HistoryOptions)]),
+    "hs_history_new": (c_int, [POINTER(Scene), POINTER(Geometry), POINTER(HistoryOptions), POINTER(HistoryP)]),
+    "hs_history_free": (None, [HistoryP]),
+    "hs_history_add_vertices": (c_int, [HistoryP, c_size_t, _DoubleP, _DoubleP]),
+    "hs_history_add_cycles": (c_int, [HistoryP, c_double, c_double, c_double, c_double, c_double, c_int]),
+    "hs_history_vertex_count": (c_int, [HistoryP, POINTER(c_size_t)]),
+    "hs_history_vertex_get": (c_int, [HistoryP, c_size_t, POINTER(HistoryVertex)]),
+    "hs_history_eval": (c_int, [HistoryP, c_size_t, c_int, c_size_t, _DoubleP, _DoubleP]),
+    "hs_history_cycle_summary": (c_int, [HistoryP, POINTER(CycleSummary)]),
+    "hs_history_slip_range": (c_int, [HistoryP, c_size_t, _DoubleP, _DoubleP]),
     "hs_ref_scene_default": (c_int, [POINTER(RefScene)]),
     "hs_ref_max_digits": (c_int, []),
     "hs_ref_max_digits_geometry": (c_int, [c_int]),
@@ -251,7 +313,8 @@ def check_struct_sizes(lib, path):
     """The structs filled by the library's *_default functions have the size
     the library expects (catches a layout drift between this file and C)."""
     for cls, fn in ((Scene, lib.hs_scene_default), (Options, lib.hs_options_default),
-                    (Geometry, lib.hs_geometry_default), (RefScene, lib.hs_ref_scene_default)):
+                    (Geometry, lib.hs_geometry_default), (RefScene, lib.hs_ref_scene_default),
+                    (HistoryOptions, lib.hs_history_options_default)):
         s = cls()
         st = fn(ctypes.byref(s))
         if st != 0 or s.struct_size != ctypes.sizeof(cls):
@@ -276,6 +339,23 @@ def check_struct_sizes(lib, path):
         st = lib.hs_ref_solution_summary(rh, ctypes.byref(rsm))
         lib.hs_ref_solution_free(rh)
     _summary_status(lib, path, "hs_ref_summary", st)
+    # The history's vertex and cycle summary, likewise: one cycle of a small
+    # shear amplitude (a few load steps).
+    hh, v, cs = HistoryP(), HistoryVertex(), CycleSummary()
+    struct = "hs_history"
+    st = lib.hs_history_new(ctypes.byref(sc), None, None, ctypes.byref(hh))
+    if st == 0:
+        st = lib.hs_history_add_cycles(hh, 0.0, 0.01, 0.0, 0.0, 0.0, 1)
+        if st == 0:
+            struct = "hs_history_vertex"
+            v.struct_size = ctypes.sizeof(v)
+            st = lib.hs_history_vertex_get(hh, 0, ctypes.byref(v))
+        if st == 0:
+            struct = "hs_cycle_summary"
+            cs.struct_size = ctypes.sizeof(cs)
+            st = lib.hs_history_cycle_summary(hh, ctypes.byref(cs))
+        lib.hs_history_free(hh)
+    _summary_status(lib, path, struct, st)
 
 
 def _summary_status(lib, path, struct, st):

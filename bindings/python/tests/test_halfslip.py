@@ -54,12 +54,12 @@ class TestLibraryAndVersion(unittest.TestCase):
         checked = 0
         for name, value in macros.items():
             short = name[3:]
-            if short.startswith(("OK", "ERR_", "REGIME_", "GEOMETRY_", "MODEL_")):
+            if short.startswith(("OK", "ERR_", "REGIME_", "GEOMETRY_", "MODEL_", "RAMP_", "FIELD_")):
                 self.assertEqual(getattr(halfslip, short), int(value), name)
                 checked += 1
         self.assertGreaterEqual(checked, 20)
         for name in dir(halfslip):
-            if re.match(r"^(OK|ERR_\w+|REGIME_\w+|GEOMETRY_\w+|MODEL_\w+)$", name):
+            if re.match(r"^(OK|ERR_\w+|REGIME_\w+|GEOMETRY_\w+|MODEL_\w+|RAMP_\w+|FIELD_\w+)$", name):
                 self.assertIn("HS_" + name, macros, "constant %s is not in the header" % name)
 
     def test_version(self):
@@ -86,6 +86,9 @@ class TestLibraryAndVersion(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(halfslip._clib.Options), 8 + 4 + 4 + 8 + 4 + 4)
         self.assertEqual(ctypes.sizeof(halfslip._clib.Geometry), 8 + 4 + 4 + 2 * 8 + 8 + 4 * 8)
         self.assertEqual(ctypes.sizeof(halfslip._clib.RefScene), 2 * 8 + 12 * ctypes.sizeof(ctypes.c_void_p))
+        self.assertEqual(ctypes.sizeof(halfslip._clib.HistoryOptions), 8 + 8 + 3 * 4 + 4 + 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.HistoryVertex), 8 + 4 * 8 + 2 * 4 + 2 * 8 + 4 + 4 + 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.CycleSummary), 8 + 3 * 4 + 4 + 2 * 8)
         # a drifted layout is caught at load time: a copy of the package whose
         # hs_scene has one field too many does not import
         with tempfile.TemporaryDirectory() as tmp:
@@ -541,6 +544,158 @@ class TestErrors(unittest.TestCase):
             self.assertEqual(e.function, "hs_eval_Bx")
             self.assertStatus(halfslip.ERR_NOT_FINITE, sol.slip, [float("nan")])
             self.assertStatus(halfslip.ERR_POINT_OUTSIDE, sol.pressure, -1.0000001)
+
+
+class TestHistory(unittest.TestCase):
+    """Load histories (since 0.4): Mindlin unloading, the steady cycle of a
+    symmetric proportional loading, the ramp flag, errors."""
+
+    def test_hertz_unloading(self):
+        # loading to Q = 0.6 fP then unloading to 0.2 fP (sigma = 0): the reversed
+        # slip zones leave the stick zone |x| < c', c'/a = sqrt(1 - (0.6 - 0.2)/2)
+        with halfslip.History() as h:
+            h.add_vertices([0.6, 0.2], [0.0, 0.0])
+            self.assertEqual(h.vertex_count, 2)
+            v0, v1 = h.vertices
+            self.assertIsInstance(v1, halfslip.HistoryVertex)
+            self.assertEqual((v0.Q_over_fP, v0.sigma_over_fp0, v1.Q_over_fP, v1.cycle), (0.6, 0.0, 0.2, 0))
+            self.assertAlmostEqual(v0.b1, math.sqrt(0.4), delta=5e-5 * math.sqrt(0.4))   # 1.6e-5 at max_step 1/128
+            c = math.sqrt(1 - 0.4 / 2)
+            self.assertAlmostEqual(v1.b1, c, delta=1e-5 * c)
+            self.assertAlmostEqual(v1.b2, c, delta=1e-5 * c)
+            self.assertEqual((v0.slip_dir1, v0.slip_dir2, v1.slip_dir1, v1.slip_dir2), (1, 1, -1, -1))
+            self.assertTrue(v0.energy1 > 0 and v1.energy1 > 0 and v1.steps > v0.steps > 0)
+            self.assertEqual(h.vertex(1), v1)
+            # traction q/(f p0): in the stick zone q* - 2 (sqrt(1 - x^2) - sqrt(c'^2 - x^2)),
+            # in the reversed slip zones -sqrt(1 - x^2)
+            q = h.traction(1, [0.0, 0.95])
+            self.assertIsInstance(q, array.array)
+            self.assertAlmostEqual(q[0], 2 * c - 1 - math.sqrt(0.4), delta=1e-5)
+            self.assertAlmostEqual(q[1], -math.sqrt(1 - 0.95 ** 2), delta=1e-7)
+            self.assertIsInstance(h.traction(0, 0.0), float)
+            s = h.slip(1, [0.0, 0.99, -0.99])
+            self.assertEqual(s[0], 0.0)
+            self.assertTrue(s[1] > 0 and s[2] > 0)   # locked-in forward slip at the edges
+            self.assertEqual(len(h.slip(1, [])), 0)
+            self.assertIn("2 vertices", repr(h))
+
+    def test_symmetric_cycle_energy(self):
+        # between +(0.5, 0.4) and -(0.5, 0.4): each zone dissipates 4 times its
+        # monotonic energy at (0.5, 0.4) per cycle
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.4) as sol:
+            E1, E2 = sol.energy()
+        with halfslip.History() as h:
+            h.add_cycles(0.0, 0.5, 0.0, 0.4, 0.0, 3)
+            cs = h.cycle_summary()
+            self.assertIsInstance(cs, halfslip.CycleSummary)
+            self.assertEqual(cs.cycles, 3)
+            self.assertFalse(cs.shakedown)
+            self.assertAlmostEqual(cs.energy_per_cycle1, 4 * E1, delta=1e-4 * 4 * E1)
+            self.assertAlmostEqual(cs.energy_per_cycle2, 4 * E2, delta=1e-4 * 4 * E2)
+            vs = h.vertices
+            self.assertEqual([v.cycle for v in vs], [1, 1, 1, 2, 2, 2, 3, 3, 3])
+            r = h.slip_range([0.0, 0.99, -0.99])
+            self.assertEqual(r[0], 0.0)
+            self.assertTrue(r[1] > 0 and r[2] > 0)
+        # cycles_to_steady is "the first cycle that the next repeats": cycle 1
+        # starts with the first loading from zero, so cycle 2 is the first that
+        # the next repeats (default steady_rtol 1e-6: the march repeats itself to
+        # about its own error, rtol 1e-8 by default).
+        with halfslip.History() as h:
+            h.add_cycles(0.0, 0.5, 0.0, 0.4, 0.0, 3)
+            self.assertEqual(h.cycle_summary().cycles_to_steady, 2)
+        # the same path given as vertices
+        with halfslip.History() as h:
+            h.add_path([(0.5, 0.4), (-0.5, -0.4), (0.0, 0.0)] * 3)
+            self.assertEqual(len(h.vertices), 9)
+            with self.assertRaises(HalfslipError) as cm:
+                h.cycle_summary()
+            self.assertEqual(cm.exception.status, halfslip.ERR_NOT_APPLICABLE)
+            e = sum(v.energy1 for v in h.vertices[3:6])
+            self.assertAlmostEqual(e, 4 * E1, delta=1e-4 * 4 * E1)
+
+    def test_slip_range_of_a_single_cycle_from_zero(self):
+        # a cycle that starts the history (zero means, no ramp vertex): the
+        # range includes the unloaded start
+        with halfslip.History() as h:
+            h.add_cycles(0.0, 0.5, 0.0, 0.4, 0.0, 1)
+            self.assertGreater(h.slip_range(0.99), 0)
+
+    def test_options(self):
+        with halfslip.History(a=2, p0=3, f=0.5, E_star=7, max_step=1 / 64, ramp_order="q-first",
+                              segments_per_cycle=16, steady_rtol=1e-6, max_steps=100000) as h:
+            h.add_vertices(0.6, 0.0)
+            self.assertAlmostEqual(h.vertices[0].b1, 2 * math.sqrt(0.4), delta=1e-4)
+        sc = halfslip.Scene(a=2)
+        with halfslip.History(scene=sc, ramp_order=halfslip.RAMP_TOGETHER) as h:
+            h.add_vertices([0.6], [0.0])
+            self.assertAlmostEqual(h.vertex(0).b1, 2 * math.sqrt(0.4), delta=1e-4)
+        with self.assertRaises(TypeError):
+            halfslip.History(scene=sc, a=1)
+        with self.assertRaises(ValueError):
+            halfslip.History(ramp_order="sideways")
+
+    def test_geometries(self):
+        # the geometry arguments of solve(): the first loading is the monotonic solution
+        for kw in (dict(exponent=4), dict(flat_over_a=0.6), dict(pressure=hertz_pressure)):
+            with halfslip.History(**kw) as h, halfslip.solve(0.6, 0.0, **kw) as sol:
+                h.add_vertices(0.6, 0.0)
+                self.assertAlmostEqual(h.vertex(0).b1, sol.b1, delta=5e-5 * sol.b1, msg=kw)
+
+        def bad(x):
+            raise ZeroDivisionError("boom")
+        with self.assertRaises(ZeroDivisionError):
+            halfslip.History(pressure=bad)
+
+    def test_ramp(self):
+        with halfslip.solve(Q_over_fP=0.88, sigma_over_fp0=2.64) as sol:
+            r = sol.ramp()
+            self.assertIsInstance(r, halfslip.Ramp)
+            self.assertIs(r.recedes, True)
+            self.assertTrue(0.44 < r.at_Q_over_fP < 0.48, r)
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.5) as sol:
+            recedes, at = sol.ramp()
+            self.assertIs(recedes, False)
+            self.assertTrue(math.isnan(at))
+        with self.assertRaises(ValueError):
+            sol.ramp()   # closed
+
+    def test_errors(self):
+        def status(fn, *args, **kw):
+            with self.assertRaises(HalfslipError) as cm:
+                fn(*args, **kw)
+            e = cm.exception
+            self.assertEqual(e.message, halfslip.strerror(e.status))
+            return e
+        h = halfslip.History()
+        h.add_vertices(0.3, 0.0)
+        e = status(h.add_vertices, [0.5, 1.0], [0.0, 0.0])
+        self.assertEqual((e.status, e.function), (halfslip.ERR_GROSS_SLIDING, "hs_history_add_vertices"))
+        self.assertIn("|Q| >= fP", str(e))
+        self.assertEqual(h.vertex_count, 2)   # the vertices before the failing one are kept
+        self.assertEqual(status(h.add_vertices, [float("nan")], [0.0]).status, halfslip.ERR_NOT_FINITE)
+        self.assertEqual(status(h.add_cycles, 0.5, 0.5, 0.0, 0.0, 0.0, 1).status, halfslip.ERR_GROSS_SLIDING)
+        self.assertEqual(status(h.add_cycles, 0.0, 0.1, 0.0, 0.0, 0.0, 0).status, halfslip.ERR_BAD_OPTION)
+        self.assertEqual(status(h.cycle_summary).status, halfslip.ERR_NOT_APPLICABLE)
+        self.assertEqual(status(h.slip_range, 0.5).status, halfslip.ERR_NOT_APPLICABLE)
+        self.assertEqual(status(h.vertex, 99).status, halfslip.ERR_BAD_OPTION)
+        self.assertEqual(status(h.traction, 99, 0.0).status, halfslip.ERR_BAD_OPTION)
+        e = status(h.slip, 0, [0.5, 1.5])
+        self.assertEqual((e.status, e.function), (halfslip.ERR_POINT_OUTSIDE, "hs_history_eval"))
+        with self.assertRaises(ValueError):
+            h.add_vertices([0.1, 0.2], [0.0])
+        h.close()
+        h.close()
+        self.assertIn("closed", repr(h))
+        with self.assertRaises(ValueError):
+            h.add_vertices(0.1, 0.0)
+        for kw, st in ((dict(f=0), halfslip.ERR_BAD_FRICTION), (dict(a=-1), halfslip.ERR_BAD_SIZE),
+                       (dict(max_step=0), halfslip.ERR_BAD_OPTION), (dict(max_step=2), halfslip.ERR_BAD_OPTION),
+                       (dict(segments_per_cycle=3), halfslip.ERR_BAD_OPTION),
+                       (dict(ramp_order=7), halfslip.ERR_BAD_OPTION),
+                       (dict(exponent=1.0), halfslip.ERR_BAD_GEOMETRY)):
+            e = status(halfslip.History, **kw)
+            self.assertEqual((e.status, e.function), (st, "hs_history_new"), kw)
 
 
 class TestReference(unittest.TestCase):

@@ -369,7 +369,7 @@ typedef struct hs_history_options {
   int max_steps;            /* limit on the total number of steps; default 2000000 */
   int segments_per_cycle;   /* periodic loading with Q and sigma out of phase: chords per cycle (default 64) */
   int ramp_order;           /* HS_RAMP_*: how the periodic loading is reached from zero */
-  double steady_rtol;       /* cycles are steady when the zone ends and energies repeat to this (default 1e-9) */
+  double steady_rtol;       /* cycles are steady when the zone ends and energies repeat to this (default 1e-6) */
   double rtol;              /* the step is halved (path replayed) until steps h and 2h agree to rtol at every
                                vertex (zone ends / a, energies / the largest one); 0: march at max_step
                                only. Default 1e-8. */
@@ -401,6 +401,8 @@ typedef struct hs_history_vertex {
   long steps;               /* load steps marched up to this vertex */
   double step;              /* the load step used (after refinement) */
   double error_estimate;    /* estimated error of the march (units as for rtol), whole history */
+  long interior_merges;     /* interior slip patches merged with an edge zone so far (an approximation;
+                               0: none; docs/history.md) */
 } hs_history_vertex;
 HS_EXPORT int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out);
 
