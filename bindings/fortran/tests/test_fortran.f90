@@ -165,7 +165,7 @@ contains
     call expect(c_sizeof(hv) == sizes(7), 'sizeof(hs_history_vertex)')
     call expect(c_sizeof(cs) == sizes(8), 'sizeof(hs_cycle_summary)')
     call hs_history_options_default(ho)
-    call expect(ho%struct_size == c_sizeof(ho) .and. ho%max_step == 1 / 128.0_c_double .and. &
+    call expect(ho%struct_size == c_sizeof(ho) .and. ho%max_step == 1 / 32.0_c_double .and. ho%rtol == 1e-8_c_double .and. &
                 ho%segments_per_cycle == 64 .and. ho%ramp_order == HS_RAMP_SIGMA_FIRST, 'hs_history_options_default')
     call hs_geometry_default(g)
     call expect(g%struct_size == c_sizeof(g) .and. g%kind == HS_GEOMETRY_HERTZ .and. &

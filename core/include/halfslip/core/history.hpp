@@ -734,19 +734,21 @@ template <class T> class history {
     if (!(p > 0)) return T(-1);
     return T(si) * stick_traction(x, steps_.size(), st) / p - 1;
   }
-  // largest v over sample points of the stick zone, quadratically spaced from end i inwards
-  T limit_margin(int i, const history_step<T> *st, int *first_violation = nullptr) const {
+  // Largest v over sample points of the stick zone, quadratically spaced from end i
+  // inwards over 3/4 of it (near the other end, with the same direction, q tends to
+  // s p from below). Positive: the friction limit is passed inside the stick zone,
+  // next to the end (a closed loop: Masing's memory rule) or further in (an
+  // interior slip patch); erase_at_limit then moves the end.
+  T limit_margin(int i, const history_step<T> *st) const {
     const T b1 = st ? st->e1.bb : b1_, b2 = st ? st->e2.bb : b2_;
     const T L = b1 + b2;
     const int M = 8;
     T worst = -1;
-    // up to 3/4 of the way: near the other end (same direction) q tends to s p from below
     for (int k = 1; k <= M; ++k) {
       const T d = L * T(k * k) / T(M * M) * T(0.75);
       const T x = i == 1 ? b1 - d : -b2 + d;
       const T v = limit_ratio(i, x, st);
       if (v > worst) worst = v;
-      if (first_violation && *first_violation < 0 && v > limit_tol()) *first_violation = k;
     }
     return worst;
   }
