@@ -37,7 +37,7 @@ int hs_history_options_default(hs_history_options *o) {
     o->struct_size = sizeof *o;
     o->max_step = 1.0 / 32;
     o->rtol = 1e-8;
-    o->max_steps = 2000000;
+    o->max_steps = 20000;
     o->segments_per_cycle = 64;
     o->ramp_order = HS_RAMP_SIGMA_FIRST;
     o->steady_rtol = 1e-6;

@@ -49,7 +49,7 @@ template <class T> struct history_options {
   T max_step = T(1) / 128;  // largest load step, in max(|dq|, |ds|/4)
   int degree = 3;           // interpolation degree of the stick-zone ends in time
   int order = 8;            // Gauss-Legendre nodes per step integral
-  int max_steps = 2000000;  // total steps over the whole history
+  int max_steps = 20000;    // total steps over the whole history (the march costs ~ steps^2)
   int max_newton = 60;      // Newton iterations per step
   int grade_steps = 4;      // first steps of each run at 2^-(G-1), 2^-(G-1), ..., 1/4, 1/2 of the step
 };
@@ -196,7 +196,7 @@ template <class T> class history {
             }
             break;
           } catch (const error &err) {
-            if (err.code() != status::no_convergence || tries >= 40) throw;
+            if (err.code() != status::no_convergence || tries >= 20) throw;
             frac /= 2;
           }
         }
@@ -1086,6 +1086,8 @@ template <class T> class refined_history {
   }
   const history<T> &fine() const { return *fine_; }
   T error_estimate() const { return est_; }
+  // a finer march did not converge: the result is the coarser one (error_estimate > rtol)
+  bool refinement_failed() const { return refine_failed_; }
   T step() const { return opt_.max_step; }
 
  private:
@@ -1102,6 +1104,7 @@ template <class T> class refined_history {
   std::unique_ptr<history<T>> fine_, coarse_;
   cycle_result<T> last_cycles_;
   T est_{0};
+  bool refine_failed_ = false;
 
   void run(history<T> &h, const op &o, cycle_result<T> *cr) {
     if (!o.cyc) { h.add_vertex(o.q, o.s); return; }
@@ -1145,9 +1148,24 @@ template <class T> class refined_history {
     }
     est_ = estimate();
     while (est_ > rtol_ && opt_.max_step / 2 >= min_step_) {
-      opt_.max_step /= 2;
-      rebuild();
-      est_ = estimate();
+      // a finer march that fails to converge leaves the coarser result, whose estimate
+      // (above rtol) is then what the caller sees
+      auto keep_f = std::move(fine_), keep_c = std::move(coarse_);
+      const auto keep_cyc = last_cycles_;
+      const T keep_step = opt_.max_step;
+      try {
+        opt_.max_step /= 2;
+        rebuild();
+        est_ = estimate();
+      } catch (const error &e) {
+        if (e.code() != status::no_convergence) throw;
+        fine_ = std::move(keep_f);
+        coarse_ = std::move(keep_c);
+        last_cycles_ = keep_cyc;
+        opt_.max_step = keep_step;
+        refine_failed_ = true;
+        break;
+      }
     }
   }
 };

@@ -1,0 +1,184 @@
+// Load histories (issue #14): speed and accuracy of the march, next to the
+// independent collocation BEM a user could write instead. Writes
+// bench/results/history.csv (one row per method and setting) and prints a
+// markdown summary (bench/results/history_summary.md via scripts/bench.sh).
+//   bench_history OUT.csv
+// Errors are against the same path marched at step 1/1024 (zone ends in units
+// of a, energies relative to the largest segment energy); times are medians of
+// 3 runs on this machine.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "halfslip/core/hertz.hpp"
+#include "halfslip/core/history.hpp"
+#include "halfslip/reference/bem_history.hpp"
+
+using namespace hs::core;
+using path_t = std::vector<std::pair<double, double>>;
+
+namespace {
+
+double median_time(const std::function<void()> &f, int reps = 3) {
+  std::vector<double> t;
+  for (int r = 0; r < reps; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+struct result {
+  std::vector<double> b1, b2, e1, e2;
+};
+
+result of(const std::vector<history_vertex<double>> &vs) {
+  result r;
+  for (const auto &v : vs) {
+    r.b1.push_back(v.b1); r.b2.push_back(v.b2); r.e1.push_back(v.energy1); r.e2.push_back(v.energy2);
+  }
+  return r;
+}
+
+void errors(const result &a, const result &ref, double &eb, double &ee) {
+  double emax = 0;
+  for (size_t i = 0; i < ref.e1.size(); ++i) emax = std::max(emax, std::max(ref.e1[i], ref.e2[i]));
+  eb = ee = 0;
+  for (size_t i = 0; i < ref.b1.size() && i < a.b1.size(); ++i) {
+    eb = std::max(eb, std::max(std::fabs(a.b1[i] - ref.b1[i]), std::fabs(a.b2[i] - ref.b2[i])));
+    ee = std::max(ee, std::max(std::fabs(a.e1[i] - ref.e1[i]), std::fabs(a.e2[i] - ref.e2[i])) / emax);
+  }
+}
+
+// a random non-proportional path of n vertices: |Q/fP| <= 0.5, sigma/fp0 in [0, 1.2], steps <= 0.15
+path_t random_path(int n, unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  path_t p;
+  double q = 0, s = 0;
+  for (int i = 0; i < n; ++i) {
+    q = std::max(-0.5, std::min(0.5, q + 0.15 * u(g)));
+    s = std::max(0.0, std::min(1.2, s + 0.15 * u(g)));
+    p.emplace_back(q, s);
+  }
+  return p;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  const char *out = argc > 1 ? argv[1] : "history.csv";
+  FILE *csv = std::fopen(out, "w");
+  if (!csv) return 1;
+  std::fprintf(csv, "case,method,setting,steps,seconds,err_b,err_E,error_estimate,interior_merges\n");
+  auto hertz = std::make_shared<hertz_pressure<double>>();
+  auto flat = std::make_shared<flat_rounded_pressure<double>>(0.5);
+
+  // 1. steady proportional Hertz cycle (+-(0.5, 0.4)): energy per cycle vs 4 x monotonic
+  {
+    hertz_scene<double> sc;
+    sc.q = 0.5;
+    sc.s = 0.4;
+    const auto m = solve_hertz<double>(sc);
+    const double E4 = 4 * m.energy(1);
+    double t_mono = median_time([&] {
+      volatile double e = 4 * solve_hertz<double>(sc).energy(1);
+      (void)e;
+    }, 101);
+    std::fprintf(csv, "steady_cycle,closed form 4 E_mono,,0,%.6g,0,0,0,0\n", t_mono);
+    std::printf("| steady in-phase Hertz cycle +-(0.5, 0.4), energy per cycle | closed form 4 E_mono | %.3g us | exact |\n",
+                t_mono * 1e6);
+    for (double rtol : {1e-6, 1e-8}) {
+      double err = 0, est = 0;
+      size_t steps = 0;
+      const double t = median_time([&] {
+        history_options<double> o;
+        o.max_step = 1.0 / 32;
+        refined_history<double> h(hertz, o, rtol);
+        const auto r = h.add_cycles(0, 0.5, 0, 0.4, 0, 2, ramp_order::sigma_first, 64, 1e-6);
+        err = std::fabs(r.energy1 - E4) / E4;
+        est = h.error_estimate();
+        steps = h.fine().step_count();
+      });
+      std::fprintf(csv, "steady_cycle,march rtol %g,,%zu,%.6g,0,%.3g,%.3g,0\n", rtol, steps, t, err, est);
+      std::printf("| | march, rtol %g (2 cycles) | %.3g ms | %.1e (estimate %.1e) |\n", rtol, t * 1e3, err, est);
+    }
+  }
+
+  // 2. speed-accuracy of the march and of the BEM on one non-proportional path
+  const path_t walk = random_path(20, 7);
+  for (int g = 0; g < 2; ++g) {
+    const auto pm = g == 0 ? std::shared_ptr<const pressure_model<double>>(hertz)
+                           : std::shared_ptr<const pressure_model<double>>(flat);
+    const char *name = g == 0 ? "hertz_walk20" : "flat0.5_walk20";
+    history_options<double> fo;
+    fo.max_step = 1.0 / 1024;
+    history<double> fine(pm, fo);
+    for (const auto &p : walk) fine.add_vertex(p.first, p.second);
+    const result ref = of(fine.vertices());
+    for (int k = 4; k <= 9; ++k) {
+      history_options<double> o;
+      o.max_step = std::ldexp(1.0, -k);
+      result r;
+      size_t steps = 0, merges = 0;
+      const double t = median_time([&] {
+        history<double> h(pm, o);
+        for (const auto &p : walk) h.add_vertex(p.first, p.second);
+        r = of(h.vertices());
+        steps = h.step_count();
+        merges = h.interior_merges();
+      });
+      double eb, ee;
+      errors(r, ref, eb, ee);
+      std::fprintf(csv, "%s,march,step 2^-%d,%zu,%.6g,%.3g,%.3g,0,%zu\n", name, k, steps, t, eb, ee, merges);
+    }
+    for (int nodes : {100, 200, 400}) {
+      hs::reference::bem::options bo;
+      bo.nodes = nodes;
+      bo.steps_per_unit = nodes;
+      std::vector<hs::reference::bem::vertex_state> vs;
+      const double t = median_time([&] {
+        vs = hs::reference::bem::run([&](double x) { return pm->p(x); }, walk, bo);
+      }, 1);
+      result r;
+      for (const auto &v : vs) {
+        r.b1.push_back(v.b1); r.b2.push_back(v.b2); r.e1.push_back(v.energy1); r.e2.push_back(v.energy2);
+      }
+      double eb, ee;
+      errors(r, ref, eb, ee);
+      std::fprintf(csv, "%s,collocation BEM,%d nodes,%d,%.6g,%.3g,%.3g,0,0\n", name, nodes, nodes, t, eb, ee);
+    }
+  }
+
+  // 3. 100-vertex non-proportional paths at rtol 1e-8 (the issue's targets: Hertz 20 ms, flat punch 50 ms)
+  const path_t walk100 = random_path(100, 11);
+  for (int g = 0; g < 2; ++g) {
+    const auto pm = g == 0 ? std::shared_ptr<const pressure_model<double>>(hertz)
+                           : std::shared_ptr<const pressure_model<double>>(flat);
+    const char *name = g == 0 ? "hertz_walk100" : "flat0.5_walk100";
+    size_t steps = 0, merges = 0;
+    double est = 0, step = 0;
+    const double t = median_time([&] {
+      history_options<double> o;
+      o.max_step = 1.0 / 32;
+      refined_history<double> h(pm, o, 1e-8);
+      for (const auto &p : walk100) h.add_vertex(p.first, p.second);
+      steps = h.fine().step_count();
+      merges = h.fine().interior_merges();
+      est = h.error_estimate();
+      step = h.step();
+    }, 1);
+    std::fprintf(csv, "%s,march rtol 1e-8,step %g,%zu,%.6g,0,0,%.3g,%zu\n", name, step, steps, t, est, merges);
+    std::printf("| 100-vertex random path, %s | march rtol 1e-8 (step %g, %zu steps) | %.3g s | estimate %.1e, %zu interior merges |\n",
+                g == 0 ? "Hertz" : "flat punch b_f/a = 0.5", step, steps, t, est, merges);
+  }
+  std::fclose(csv);
+  return 0;
+}
