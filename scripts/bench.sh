@@ -19,5 +19,7 @@ python3 "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$
   "$HS_ROOT/bench/results/reference.csv" "$HS_ROOT/docs/figures"
 # the sweep behind the asymptotic model's error estimate (core/select.hpp, docs/models.md)
 "$HS_BUILD/bench/asymptotic_sweep" "$HS_ROOT/bench/results/asymptotic_sweep.csv" 200
+# load histories: the march against the independent BEM, cycles, random paths (docs/history.md)
+"$HS_BUILD/bench/bench_history" "$HS_ROOT/bench/results/history.csv" | tee "$HS_ROOT/bench/results/history_summary.md"
 # point evaluations and energies on the general path
 "$HS_BUILD/bench/bench_points" | tee "$HS_ROOT/bench/results/points.txt"

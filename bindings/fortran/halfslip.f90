@@ -33,7 +33,7 @@ module halfslip
 
   ! ---- constants (same values as halfslip.h) ----------------------------------
   integer(c_int), parameter, public :: HS_VERSION_MAJOR = 0
-  integer(c_int), parameter, public :: HS_VERSION_MINOR = 3
+  integer(c_int), parameter, public :: HS_VERSION_MINOR = 4
   integer(c_int), parameter, public :: HS_VERSION_PATCH = 0
 
   integer(c_int), parameter, public :: HS_OK                   = 0

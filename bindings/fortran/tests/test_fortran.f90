@@ -187,7 +187,7 @@ contains
     call expect_code(ierr, HS_OK, 'hs_version status')
     call expect(ma == HS_VERSION_MAJOR .and. mi == HS_VERSION_MINOR .and. pa == HS_VERSION_PATCH, &
                 'hs_version numbers')
-    call expect(hs_version_string() == '0.3.0', 'hs_version_string')
+    call expect(hs_version_string() == '0.4.0', 'hs_version_string')
     msg = hs_strerror(HS_ERR_GROSS_SLIDING)
     call expect(index(msg, '|Q| >= fP') > 0, 'hs_strerror(HS_ERR_GROSS_SLIDING): ' // msg)
     call expect(hs_strerror(HS_OK) == 'success', 'hs_strerror(HS_OK)')

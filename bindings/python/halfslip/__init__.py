@@ -30,7 +30,7 @@ from ctypes import byref, c_double, c_int, c_size_t
 
 from . import _clib
 
-__version__ = "0.3.0"
+__version__ = "0.4.0"
 __all__ = [
     "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified", "Model", "Regime", "History",
     "HistoryVertex", "CycleSummary", "Ramp",

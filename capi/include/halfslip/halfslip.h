@@ -47,7 +47,7 @@ extern "C" {
 
 /* ---- version ------------------------------------------------------------ */
 #define HS_VERSION_MAJOR 0
-#define HS_VERSION_MINOR 3
+#define HS_VERSION_MINOR 4
 #define HS_VERSION_PATCH 0
 
 /* Version of the library actually loaded (may differ from the header's). */
