@@ -36,6 +36,15 @@ hertz_solution<double> mono(double q, double s) {
 
 double bem_p(double x) { return std::sqrt(std::max(0.0, 1 - x * x)); }
 
+// the independent BEM on the Hertz contact, 400 elements and 400 increments per unit of load
+const int bem_nodes = 400;
+std::vector<hs::reference::bem::vertex_state> bem_run(const std::vector<std::pair<double, double>> &path) {
+  hs::reference::bem::options bo;
+  bo.nodes = bem_nodes;
+  bo.steps_per_unit = bem_nodes;
+  return hs::reference::bem::run(bem_p, path, bo);
+}
+
 }  // namespace
 
 TEST_CASE("history: a ramp from zero that does not recede is the monotonic solution (Hertz)") {
@@ -164,10 +173,7 @@ TEST_CASE("history: the proportional ray sigma/fp0 = 3 Q/fP recedes, re-sticks a
   std::vector<std::pair<double, double>> path;
   for (int k = 1; k <= 44; ++k) path.emplace_back(0.02 * k, 0.06 * k);
   for (const auto &p : path) h.add_vertex(p.first, p.second);
-  hs::reference::bem::options bo;
-  bo.nodes = 400;
-  bo.steps_per_unit = 400;
-  const auto bem = hs::reference::bem::run(bem_p, path, bo);
+  const auto bem = bem_run(path);
   const auto &vs = h.vertices();
   // phases from the history solver: grows (dir -1, b1 decreasing) to ~0.46, recedes to b1 = 1, then dir +1
   double bmin = 2, qmin = 0;
@@ -194,8 +200,8 @@ TEST_CASE("history: the proportional ray sigma/fp0 = 3 Q/fP recedes, re-sticks a
     // 4e-3 a at 400 elements and close in on ours as the mesh refines (0.9663, 0.9694, 0.9693 at
     // 400/800/1600 elements against 0.9702 at Q/fP = 0.48): a band of 5e-3 a in that phase
     const bool receding = vs[i].dir1 == -1 && vs[i].q > qmin + 1e-9;
-    const double w1 = receding ? 5e-3 : M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
-    const double w2 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
+    const double w1 = receding ? 5e-3 : M_PI / bem_nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
+    const double w2 = M_PI / bem_nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
     CAPTURE(vs[i].q);
     CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1);
     CHECK(std::fabs(vs[i].b2 - bem[i].b2) < w2);
@@ -212,10 +218,7 @@ void compare_with_bem(const std::vector<std::pair<double, double>> &path, const 
                       bool interior_patch) {
   history<double> h(hertz_pm(), opts(1.0 / 256));
   for (const auto &p : path) h.add_vertex(p.first, p.second);
-  hs::reference::bem::options bo;
-  bo.nodes = 400;
-  bo.steps_per_unit = 400;
-  const auto bem = hs::reference::bem::run(bem_p, path, bo);
+  const auto bem = bem_run(path);
   const auto &vs = h.vertices();
   REQUIRE(vs.size() == bem.size());
   double eb = 0, ee = 0, etot = 0;
@@ -229,8 +232,8 @@ void compare_with_bem(const std::vector<std::pair<double, double>> &path, const 
     auto merged_at = [&](size_t k) { return vs[k].interior_merges != (k ? vs[k - 1].interior_merges : 0); };
     const bool merged = merged_at(i);
     const bool after = (i > 0 && merged_at(i - 1)) || (i > 1 && merged_at(i - 2));
-    const double w1 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
-    const double w2 = M_PI / bo.nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
+    const double w1 = M_PI / bem_nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
+    const double w2 = M_PI / bem_nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
     const double wm = merged || after ? 1e-2 : 0.0;
     CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1 + wm);
     CHECK(std::fabs(vs[i].b2 - bem[i].b2) < w2 + wm);
