@@ -1204,7 +1204,11 @@ template <class T, class EOf> bool ramp_recedes(const T &q, const T &s, const EO
 template <class T> class refined_history {
  public:
   using pressure_ptr = typename history<T>::pressure_ptr;
-  refined_history(pressure_ptr pm, const history_options<T> &o, const T &rtol, const T &min_step = T(1) / 65536)
+  // Refinement stops at min_step (default 1/512: the march's cost grows like the
+  // square of its step count, and near a fast end sweep (an end running through a
+  // region close to the friction limit) it converges erratically); the estimate
+  // then stays above rtol and each vertex reports it.
+  refined_history(pressure_ptr pm, const history_options<T> &o, const T &rtol, const T &min_step = T(1) / 512)
       : pm_(std::move(pm)), opt_(o), rtol_(rtol), min_step_(min_step) {
     if (!(rtol_ >= 0)) throw error(status::bad_option, "history: rtol must be >= 0");
     rebuild();
