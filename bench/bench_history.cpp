@@ -218,6 +218,40 @@ int main(int argc, char **argv) {
     std::printf("| 8 random 100-vertex paths, %s | march rtol 1e-8 | %d of 8 complete; %.3g s in all |\n",
                 g == 0 ? "Hertz" : "flat punch b_f/a = 0.5", ok, tsum);
   }
+  // 4. robustness on periodic loading: 162 cycles (Q_a 0.1-0.6, Q_m 0-0.15, sigma_m 0-1.5,
+  // sigma_a 0-1, phase 0-180 degrees; 3 cycles of 16 chords after sigma first), Hertz, the march at
+  // max_step 1/32 without refinement
+  {
+    int ok = 0, n = 0, ok_low = 0, n_low = 0;
+    double tsum = 0;
+    for (double qa : {0.1, 0.3, 0.6})
+      for (double qm : {0.0, 0.15})
+        for (double sm : {0.0, 0.5, 1.5})
+          for (double sa : {0.0, 0.3, 1.0})
+            for (double ph : {0.0, 45.0, 90.0, 180.0}) {
+              if (sa == 0 && ph != 0) continue;
+              ++n;
+              const bool low = sm + sa <= 1.0;
+              if (low) ++n_low;
+              history_options<double> o;
+              o.max_step = 1.0 / 32;
+              history<double> h(hertz, o);
+              const auto t0 = std::chrono::steady_clock::now();
+              bool done = false;
+              try {
+                add_cycles<double>(h, qm, qa, sm, sa, ph, 3, ramp_order::sigma_first, 16, 1e-6);
+                done = true;
+              } catch (const error &) {
+              }
+              const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+              tsum += t;
+              if (done) { ++ok; if (low) ++ok_low; }
+              std::fprintf(csv, "hertz_cycle_qa%g_qm%g_sm%g_sa%g_ph%g,march step 1/32,,%zu,%.6g,0,0,0,%d\n", qa, qm,
+                           sm, sa, ph, h.step_count(), t, int(done));
+            }
+    std::printf("| %d periodic loadings, Hertz (3 cycles) | march, step 1/32 | %d of %d complete (%d of %d with "
+                "sigma_m + sigma_a <= 1); %.3g s in all |\n", n, ok, n, ok_low, n_low, tsum);
+  }
   std::fclose(csv);
   return 0;
 }
