@@ -451,10 +451,19 @@ int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *
 // issue 15: the contact state of a solution (bulk2: stress the pad carries)
 namespace {
 hs::core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
-  if (h.hertz) return hs::core::hertz_state(*h.hertz, bulk2);
-  if (h.general) return hs::core::general_state_of(*h.general, bulk2);
-  if (h.edge) return hs::core::make_state<double>(*h.edge, bulk2);
-  return hs::core::make_state<double>(*h.ref, bulk2);
+  auto make = [&] {
+    if (h.hertz) return hs::core::hertz_state(*h.hertz, bulk2);
+    if (h.general) return hs::core::general_state_of(*h.general, bulk2);
+    if (h.edge) return hs::core::make_state<double>(*h.edge, bulk2);
+    return hs::core::make_state<double>(*h.ref, bulk2);
+  };
+  auto st = make();
+  // the panels do not depend on bulk2: one set per solution, made on first use
+  std::call_once(h.panels_once, [&] {
+    if (hs::core::needs_panels(st)) h.panels = hs::core::make_panels(st);
+  });
+  st.panels = h.panels;
+  return st;
 }
 void check_fields_input(const hs_solution *sol, int body, double bulk2) {
   require(sol != nullptr, core::status::null_pointer, "solution is NULL");

@@ -28,16 +28,13 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "field_panels.hpp"
 #include "general.hpp"
 #include "hertz.hpp"
 #include "numerics.hpp"
 #include "status.hpp"
 
 namespace hs { namespace core {
-
-template <class T> struct cauchy_pair {
-  std::complex<T> F0{0, 0}, F1{0, 0};
-};
 
 // Adds the Cauchy integrals of amp * sqrt(c^2 - (s - e)^2) on [e - c, e + c]
 // (closed form: pi amp c (X - nu), pi amp (nu/X - 1), nu = (zeta - e)/c,
@@ -135,6 +132,14 @@ template <class T> struct contact_state {
   // optional: (2/pi) PV int q(t)/(x - t) dt for |x| <= a (for a solution:
   // E* B_x + sigma/2, exact); needed for the surface stress on the contact
   std::function<T(const T &)> hilbert_q;
+  // hilbert_q is cheap everywhere (closed forms); otherwise it is used only on
+  // the stick zone (stick_lo, stick_hi), where it is sigma/2, and at breakpoints
+  bool hilbert_fast = false;
+  T stick_lo{0}, stick_hi{0};
+  std::vector<T> kinks;  // breakpoints where p is log-singular (graded panels)
+  // optional: p and q cached on graded panels (make_panels), shared between
+  // states of the same solution; used instead of quadrature from scratch
+  std::shared_ptr<const traction_panels<T>> panels;
 
   std::vector<T> points() const {
     std::vector<T> v{-a, a};
@@ -148,6 +153,7 @@ template <class T> struct contact_state {
     P = {}; Q = {};
     if (closed && closed(zeta, P, Q)) return;
     P = {}; Q = {};
+    if (panels) { panels->cauchy(zeta, P, Q); return; }
     cauchy_numeric<T>([&](const T &s, T &pv, T &qv) { pv = p(s); qv = q(s); }, points(), zeta, P, Q);
   }
 };
@@ -196,7 +202,16 @@ template <class T> T surface_sxx(const contact_state<T> &st, int body, const T &
   const T sg = body == 1 ? T(-1) : T(1);
   const T bulk = body == 1 ? st.bulk1 : st.bulk2;
   T H;
-  if (abs(x) <= st.a) {
+  const bool on = abs(x) <= st.a;
+  if (st.panels && !(on && st.hilbert_q && st.hilbert_fast)) {
+    const bool breakpoint = abs(x) == st.a || std::find(st.breaks.begin(), st.breaks.end(), x) != st.breaks.end();
+    const bool stick = x > st.stick_lo && x < st.stick_hi;
+    if (!(on && st.hilbert_q && (breakpoint || stick))) {
+      H = -2 * st.panels->re_f0_q(x) / pi<T>();  // (2/pi) PV int q/(x - t)
+      return (on ? -st.p(x) : T(0)) + sg * H + bulk;
+    }
+  }
+  if (on) {
     if (st.hilbert_q) return -st.p(x) + sg * st.hilbert_q(x) + bulk;
     cauchy_pair<T> P, Q;  // closed forms: the boundary values from z = +0
     if (st.closed && st.closed(std::complex<T>(x, T(0)), P, Q))
@@ -273,6 +288,8 @@ template <class T, class S> contact_state<T> make_state(const S &sol, const T &b
     return v;
   };
   st.breaks = {-sol.b2(), sol.b1()};
+  st.stick_lo = -sol.b2();
+  st.stick_hi = sol.b1();
   const T E = sol.scene.Estar;
   st.hilbert_q = [&sol, E, sigma](const T &x) { return E * sol.Bx(x) + sigma / 2; };
   return st;
@@ -287,6 +304,7 @@ template <class T> contact_state<T> hertz_state(const hertz_solution<T> &sol, co
   const bool q_closed = sol.reg != regime::opposite_sign;
   const T c = (sol.b1() + sol.b2()) / 2, e = (sol.b1() - sol.b2()) / 2;
   const T sf = sol.reg == regime::stuck ? T(0) : sol.sign() * f;
+  st.hilbert_fast = true;  // B_x in closed form
   st.closed = [=](const std::complex<T> &zeta, cauchy_pair<T> &P, cauchy_pair<T> &Q) {
     if (!q_closed) return false;
     add_semi_ellipse<T>(p0 / a, a, T(0), zeta, P);
@@ -300,8 +318,20 @@ template <class T> contact_state<T> hertz_state(const hertz_solution<T> &sol, co
 // General pressures: the pressure's kinks are quadrature split points too.
 template <class T> contact_state<T> general_state_of(const general_solution<T> &sol, const T &bulk2 = T(0)) {
   contact_state<T> st = make_state<T>(sol, bulk2);
-  for (const T &k : sol.user_kinks()) st.breaks.push_back(k);
+  for (const T &k : sol.user_kinks()) { st.breaks.push_back(k); st.kinks.push_back(k); }
   return st;
+}
+
+// The panels of a state (p and q at ~10^3 cached nodes; costs that many
+// evaluations of q). Not needed where the state has closed forms.
+template <class T> std::shared_ptr<const traction_panels<T>> make_panels(const contact_state<T> &st) {
+  return std::make_shared<const traction_panels<T>>(
+      [&](const T &s, T &pv, T &qv) { pv = st.p(s); qv = st.q(s); }, st.points(), st.kinks);
+}
+// Whether the state's Cauchy integrals need quadrature (no closed forms).
+template <class T> bool needs_panels(const contact_state<T> &st) {
+  cauchy_pair<T> P, Q;
+  return !(st.closed && st.closed(std::complex<T>(0, 1), P, Q));
 }
 
 }}  // namespace hs::core
