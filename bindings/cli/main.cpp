@@ -50,7 +50,8 @@ const char *kUsage =
     "                          (default 0). Surface stress peaks are in the report and the JSON\n"
     "  --fields FILE           write the stresses of both bodies on a grid |x| <= 2a, |y| <= 2a\n"
     "                          (and the surface, y = 0) as CSV: body,x,y,sxx,syy,sxy,max_principal,\n"
-    "                          max_shear,von_mises (plane strain, nu = 0.3)\n"
+    "                          max_shear,von_mises (plane strain)\n"
+    "  --nu V                  Poisson's ratio for von Mises in --fields (default 0.3)\n"
     "  --no-energy             skip the zone energies (the slow part with --digits; null in JSON)\n"
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
@@ -265,7 +266,7 @@ const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sig
                                              "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
                                              "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
                                              "--rtol", "--model", "--A",
-                                             "--pad-bulk", "--fields"};  // issue 15
+                                             "--pad-bulk", "--fields", "--nu"};  // issue 15
 
 // Pressure samples (--pressure-file): two columns x p per line, separated by
 // whitespace or one comma; '#' starts a comment; blank lines are skipped; the
@@ -536,30 +537,34 @@ const char *model_name(int m) {
 }
 
 
-// issue 15: --fields FILE, the stresses of both bodies on a grid as CSV
-void write_fields(const hs_solution *sol, double a, double pad_bulk, const std::string &path) {
-  FILE *out = std::fopen(path.c_str(), "w");
-  if (!out) die("cannot write '" + path + "'");
-  std::fprintf(out, "body,x,y,sxx,syy,sxy,max_principal,max_shear,von_mises\n");
+// issue 15: --fields FILE, the stresses of both bodies on a grid as CSV (every
+// number from the C library: components and scalars)
+void write_fields(const hs_solution *sol, double a, double pad_bulk, double nu, const std::string &path) {
   const int nx = 81, ny = 41;
+  const int kinds[3] = {HS_STRESS_MAX_PRINCIPAL, HS_STRESS_MAX_SHEAR, HS_STRESS_VON_MISES};
+  std::vector<double> x(nx), y(nx), s(3 * nx), sc(3 * nx);
+  std::string text = "body,x,y,sxx,syy,sxy,max_principal,max_shear,von_mises\n";
+  char line[512];
   for (int b = 1; b <= 2; ++b)
     for (int j = 0; j < ny; ++j) {
-      std::vector<double> x(nx), y(nx), s(3 * nx);
       for (int i = 0; i < nx; ++i) {
         x[i] = -2 * a + 4 * a * i / (nx - 1);
         y[i] = (b == 1 ? 1 : -1) * 2 * a * j / (ny - 1);
       }
       check(hs_eval_stress(sol, b, pad_bulk, nx, x.data(), y.data(), s.data()), "stress");
+      for (int k = 0; k < 3; ++k)
+        check(hs_eval_stress_scalar(sol, b, pad_bulk, kinds[k], nu, nx, x.data(), y.data(), sc.data() + k * nx),
+              "--nu " + g10(nu));
       for (int i = 0; i < nx; ++i) {
-        const double xx = s[3 * i], yy = s[3 * i + 1], xy = s[3 * i + 2];
-        const double r = std::hypot((xx - yy) / 2, xy), zz = 0.3 * (xx + yy);
-        const double vm = std::sqrt(((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx)) / 2 +
-                                    3 * xy * xy);
-        std::fprintf(out, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", b, x[i], y[i], xx, yy, xy,
-                     (xx + yy) / 2 + r, r, vm);
+        std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", b, x[i], y[i],
+                      s[3 * i], s[3 * i + 1], s[3 * i + 2], sc[i], sc[nx + i], sc[2 * nx + i]);
+        text += line;
       }
     }
-  std::fclose(out);
+  FILE *out = std::fopen(path.c_str(), "w");
+  if (!out) die("--fields: cannot write '" + path + "'");
+  const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+  if (std::fclose(out) != 0 || !ok) die("--fields: error writing '" + path + "'");
 }
 
 // The scene and geometry of the solve/history options (geometry, sizes, loads);
@@ -728,7 +733,8 @@ int cmd_solve(int argc, char **argv) {
   double surf[2][5] = {};
   if (have_surface)
     for (int b = 0; b < 2; ++b) check(hs_surface_stress_extremes(sol, b + 1, pad_bulk, 0.0, surf[b]), "surface stress");
-  if (args.count("--fields")) write_fields(sol, sm.a, pad_bulk, args.at("--fields"));
+  const double nu = args.count("--nu") ? parse_number("--nu", args.at("--nu").c_str()) : 0.3;
+  if (args.count("--fields")) write_fields(sol, sm.a, pad_bulk, nu, args.at("--fields"));
 
   if (json) {
     std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "

@@ -97,6 +97,15 @@ module halfslip
   integer(c_int), parameter, public :: HS_FIELD_TRACTION = 1
   integer(c_int), parameter, public :: HS_FIELD_SLIP     = 2
 
+  ! stress scalars of hs_eval_stress_scalar
+  integer(c_int), parameter, public :: HS_STRESS_XX            = 1
+  integer(c_int), parameter, public :: HS_STRESS_YY            = 2
+  integer(c_int), parameter, public :: HS_STRESS_XY            = 3
+  integer(c_int), parameter, public :: HS_STRESS_VON_MISES     = 4
+  integer(c_int), parameter, public :: HS_STRESS_MAX_PRINCIPAL = 5
+  integer(c_int), parameter, public :: HS_STRESS_MIN_PRINCIPAL = 6
+  integer(c_int), parameter, public :: HS_STRESS_MAX_SHEAR     = 7
+
   ! ---- plain-data structs passed to C (layouts of halfslip.h) -------------------
   ! Fill them with hs_scene_default / hs_options_default, then set fields.
   type, bind(c), public :: hs_scene
@@ -237,6 +246,7 @@ module halfslip
   public :: hs_geometry_default, hs_solve_geometry, hs_solve_samples, hs_solve_callback
   public :: hs_eval_Bx, hs_eval_slip, hs_eval_work, hs_eval_pressure
   public :: hs_eval_traction, hs_eval_surface_stress, hs_eval_stress, hs_surface_stress_extremes
+  public :: hs_eval_stress_scalar
   public :: hs_ref_max_digits, hs_ref_max_digits_geometry, hs_ref_solve, hs_ref_solution_free
   public :: hs_ref_solution_summary
   public :: hs_ref_value, hs_ref_eval
@@ -421,6 +431,18 @@ module halfslip
       real(c_double), intent(inout) :: out(*)
       integer(c_int) :: st
     end function c_hs_eval_stress
+
+    function c_hs_eval_stress_scalar(sol, body, bulk2, quantity, nu, n, x, y, out) &
+        bind(c, name="hs_eval_stress_scalar") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_int), value :: body, quantity
+      real(c_double), value :: bulk2, nu
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*), y(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_stress_scalar
 
     function c_hs_surface_stress_extremes(sol, body, bulk2, half_range, out) &
         bind(c, name="hs_surface_stress_extremes") result(st)
@@ -945,6 +967,24 @@ contains
     call check(c_hs_eval_stress(sol%ptr, int(body, c_int), b, int(max(n, 0), c_size_t), x, y, s), &
                'hs_eval_stress', ierr)
   end subroutine hs_eval_stress
+
+  ! A scalar of the stress (quantity: HS_STRESS_*) at (x(i), y(i)) into out(i); nu
+  ! (Poisson's ratio, optional, default 0.3) is used by HS_STRESS_VON_MISES only.
+  subroutine hs_eval_stress_scalar(sol, body, quantity, n, x, y, out, nu, bulk2, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: body, quantity, n
+    real(c_double), intent(in) :: x(n), y(n)
+    real(c_double), intent(inout) :: out(n)
+    real(c_double), intent(in), optional :: nu, bulk2
+    integer, intent(out), optional :: ierr
+    real(c_double) :: b, v
+    b = 0
+    v = 0.3_c_double
+    if (present(bulk2)) b = bulk2
+    if (present(nu)) v = nu
+    call check(c_hs_eval_stress_scalar(sol%ptr, int(body, c_int), b, int(quantity, c_int), v, &
+                                       int(max(n, 0), c_size_t), x, y, out), 'hs_eval_stress_scalar', ierr)
+  end subroutine hs_eval_stress_scalar
 
   ! Extremes of sigma_xx(x, 0) of a body over |x| <= half_range (absent or <= 0: 3a):
   ! ext = [max, x_max, min, x_min, bulk].

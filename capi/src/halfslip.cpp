@@ -506,6 +506,39 @@ int hs_eval_stress(const hs_solution *sol, int body, double bulk2, size_t n, con
   });
 }
 
+int hs_eval_stress_scalar(const hs_solution *sol, int body, double bulk2, int quantity, double nu, size_t n,
+                          const double *x, const double *y, double *out) {
+  return guard([&] {
+    check_fields_input(sol, body, bulk2);
+    require(quantity >= HS_STRESS_XX && quantity <= HS_STRESS_MAX_SHEAR, core::status::bad_option,
+            "quantity must be one of HS_STRESS_XX .. HS_STRESS_MAX_SHEAR");
+    require(std::isfinite(nu), core::status::not_finite, "Poisson's ratio nu is NaN or infinite");
+    require(nu >= -1 && nu <= 0.5, core::status::bad_option, "Poisson's ratio nu must lie in [-1, 0.5]");
+    if (n == 0) return;
+    require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+    for (size_t i = 0; i < n; ++i) {
+      require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
+      require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
+              "point outside the body (body 1: y >= 0, body 2: y <= 0)");
+    }
+    const auto st = state_of(*sol, bulk2);
+    std::vector<double> tmp(n);
+    for (size_t i = 0; i < n; ++i) {
+      const auto s = core::stress_at(st, body, x[i], std::fabs(y[i]));
+      switch (quantity) {
+        case HS_STRESS_XX: tmp[i] = s.xx; break;
+        case HS_STRESS_YY: tmp[i] = s.yy; break;
+        case HS_STRESS_XY: tmp[i] = s.xy; break;
+        case HS_STRESS_VON_MISES: tmp[i] = s.von_mises(nu); break;
+        case HS_STRESS_MAX_PRINCIPAL: tmp[i] = s.max_principal(); break;
+        case HS_STRESS_MIN_PRINCIPAL: tmp[i] = s.min_principal(); break;
+        default: tmp[i] = s.max_shear(); break;
+      }
+    }
+    std::memcpy(out, tmp.data(), n * sizeof(double));
+  });
+}
+
 int hs_surface_stress_extremes(const hs_solution *sol, int body, double bulk2, double half_range, double out[5]) {
   return guard([&] {
     check_fields_input(sol, body, bulk2);
