@@ -32,8 +32,9 @@ def main(path, out):
                                "color": "C%d" % (i % 10), "label": "%s, %s" % (m, reg)})
     ax = hp.chart(series, title="Hertz solve: error vs time", xlabel="median time per solve [ns]",
                   ylabel="max |b - b_ref| / a (0 drawn at 1e-17)", logx=True, logy=True, legend="upper right",
-                  size=(8.5, 5))
+                  size=(10, 5))
     ax.set_ylim(floor / 3, 1e-13)
+    ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="x-small")
     hp.save(ax, out)
     print(f"chart written to {out}")
 

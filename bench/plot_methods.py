@@ -23,6 +23,9 @@ matplotlib.use("Agg")
 matplotlib.rcParams["svg.hashsalt"] = "halfslip"
 import halfslip.plot as hp  # noqa: E402
 
+# 20 distinct colours (tab20: the dark shades first, then the light ones)
+COLORS = [matplotlib.colormaps["tab20"](i) for i in list(range(0, 20, 2)) + list(range(1, 20, 2))]
+
 
 def speed_accuracy(methods_csv, reference_csv, out):
     rows = list(csv.DictReader(open(methods_csv)))
@@ -61,7 +64,7 @@ def speed_accuracy(methods_csv, reference_csv, out):
             sel = [p for p in pts if p[0] == m and (p[1] == g or (g == "flat-rounded" and p[1] != "hertz"))]
             if sel:
                 series.append({"x": [p[2] for p in sel], "y": [max(p[3], FLOOR) for p in sel], "marker": mk,
-                               "style": "hollow" if sel[0][5] else "marker", "color": "C%d" % (li % 10),
+                               "style": "hollow" if sel[0][5] else "marker", "color": COLORS[li % len(COLORS)],
                                "label": m if g == "hertz" or not any(p[0] == m and p[1] == "hertz" for p in pts)
                                else None})
     ax = hp.chart(series, title="Speed vs accuracy: Hertz (circles), flat punch b_f/a = 0.5 (diamonds)",
@@ -69,7 +72,7 @@ def speed_accuracy(methods_csv, reference_csv, out):
                   logx=True, logy=True, legend="center left", size=(11, 6.2))
     ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="x-small")
     for (m, g, t, e, fails, hollow, note) in pts:
-        c = "C%d" % (labels.index(m) % 10)
+        c = COLORS[labels.index(m) % len(COLORS)]
         y = max(e, FLOOR)
         if e < FLOOR:
             ax.annotate("↓", (t, y), textcoords="offset points", xytext=(-3, -14), color=c, fontsize=9)

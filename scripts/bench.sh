@@ -11,6 +11,7 @@
 # python3-matplotlib (HS_PYTHON overrides it).
 set -euo pipefail
 export HS_BENCH=ON
+export HS_EXTRA_PACKAGES="libbenchmark-dev python3-matplotlib"
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 mkdir -p "$HS_ROOT/bench/results"
 "$HS_BUILD/bench/bench_hertz" "$HS_ROOT/bench/results/hertz.csv"

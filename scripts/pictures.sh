@@ -4,6 +4,7 @@
 # Needs a Python with matplotlib: Debian's /usr/bin/python3 with python3-matplotlib
 # (HS_PYTHON overrides the interpreter).
 set -euo pipefail
+export HS_EXTRA_PACKAGES="python3-matplotlib"
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 py="${HS_PYTHON:-/usr/bin/python3}"
 "$py" -c "import matplotlib" 2>/dev/null || { echo "pictures.sh: $py has no matplotlib (apt install python3-matplotlib)" >&2; exit 1; }

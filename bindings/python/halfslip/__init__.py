@@ -166,7 +166,7 @@ _STATUS_ARGS = {
     ERR_BAD_FRICTION: ("f",),
     ERR_GROSS_SLIDING: ("Q_over_fP", "Q", "P", "f"),
     ERR_BAD_GEOMETRY: ("geometry", "flat_over_a", "exponent", "n", "samples", "flat_width", "R", "A", "model"),
-    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry"),
+    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry", "quantity", "nu", "body"),
     ERR_BAD_NUMBER: _ALL,
     ERR_TOLERANCE: ("rtol", "model"),
     ERR_NOT_APPLICABLE: ("model", "geometry", "rtol"),
@@ -718,7 +718,7 @@ class Solution(_Handle):
                                             xs.ctypes.data_as(dp), ys.ctypes.data_as(dp), out.ctypes.data_as(dp)) \
                 if xs.size else 0
             if st != 0:
-                _raise(st, "hs_eval_stress_scalar", self._callback, {"quantity": quantity, "nu": nu})
+                _raise(st, "hs_eval_stress_scalar", self._callback, {"quantity": quantity, "nu": nu, "body": body})
             return out[()] if out.ndim == 0 else out
         xs, n, scalar = _points(x)
         ys, m, _ = _points(y)
@@ -730,7 +730,7 @@ class Solution(_Handle):
         st = _lib.hs_eval_stress_scalar(h, int(body), float(pad_bulk), int(q), float(nu), n, xs if n else None,
                                         ys if n else None, (c_double * n).from_buffer(out) if n else None)
         if st != 0:
-            _raise(st, "hs_eval_stress_scalar", self._callback, {"quantity": quantity, "nu": nu})
+            _raise(st, "hs_eval_stress_scalar", self._callback, {"quantity": quantity, "nu": nu, "body": body})
         return out[0] if scalar else out
 
     def surface_stress_extremes(self, body=1, pad_bulk=0.0, half_range=0.0):

@@ -844,6 +844,7 @@ class TestFields(unittest.TestCase):
             with self.assertRaises(halfslip.HalfslipError) as cm:
                 sol.stress_scalar(0.0, 0.5, "von_mises", nu=0.6)
             self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
+            self.assertIn("nu=0.6", str(cm.exception))
 
 
 try:
