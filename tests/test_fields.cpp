@@ -335,3 +335,42 @@ TEST_CASE("panels: surface limit at the contact edges, the stick boundaries and 
     CHECK(std::fabs(s.xx - surface_sxx(st, 1, x)) < tol);
   }
 }
+
+TEST_CASE("panels: q on the stick zone as a Chebyshev series in theta (flat punch, Hertz opposite sign)") {
+  // q is analytic on the stick zone, kinks of p included, with square roots at both ends
+  auto check = [](const contact_state<double> &st, double fp0) {
+    stick_series<double> ser(st.q, st.stick_lo, st.stick_hi);
+    REQUIRE(ser.ok());
+    double worst = 0;
+    const double lo = st.stick_lo, hi = st.stick_hi;
+    for (int i = 1; i < 200; ++i) {
+      const double x = lo + (hi - lo) * i / 200;
+      worst = std::max(worst, std::fabs(ser(x) - st.q(x)));
+    }
+    for (double d : {1e-12, 1e-8, 1e-4}) {
+      worst = std::max(worst, std::fabs(ser(lo + d) - st.q(lo + d)));
+      worst = std::max(worst, std::fabs(ser(hi - d) - st.q(hi - d)));
+    }
+    CHECK(worst <= 64 * hs_test::eps<double>() * fp0);  // measured 4e-15
+  };
+  flat_rounded_pressure<double> pm(0.5);
+  for (double s : {0.1, 2.0}) {
+    general_scene<double> sc;
+    sc.q = 0.5; sc.s = s;
+    const auto sol = solve_general<double>(pm, sc);
+    CAPTURE(s);
+    check(general_state_of(sol), sc.f * sc.p0);
+  }
+  hertz_scene<double> hc;
+  hc.q = 0.5; hc.s = 2.0;
+  const auto hsol = solve_hertz(hc);
+  check(make_state<double>(hsol), hc.f * hc.p0);
+  // a tiny slip zone puts a singularity next to the real theta axis: no series (q is used directly)
+  hertz_scene<double> tc;
+  tc.q = 1e-4; tc.s = 0.0;  // d1 = d2 = 5e-5 a
+  const auto tsol = solve_hertz(tc);
+  const auto tst = make_state<double>(tsol);
+  stick_series<double> tser(tst.q, tst.stick_lo, tst.stick_hi);
+  CAPTURE(tsol.d1()); CAPTURE(tsol.d2());
+  CHECK(!tser.ok());
+}

@@ -322,11 +322,88 @@ template <class T> contact_state<T> general_state_of(const general_solution<T> &
   return st;
 }
 
-// The panels of a state (p and q at ~10^3 cached nodes; costs that many
-// evaluations of q). Not needed where the state has closed forms.
+// q on the stick zone (lo, hi) as a Chebyshev series in theta, x = m + w cos(theta),
+// m = (lo + hi)/2, w = (hi - lo)/2. q is analytic inside the stick zone (also
+// across the pressure's kinks: it is the Hilbert solution driven by the slip
+// zones) and behaves like sqrt(distance) at both ends, which theta makes
+// analytic: near theta = 0, sqrt(hi - x) = sqrt(2w) sin(theta/2). The degree
+// doubles from 32 until the last quarter of the coefficients falls below 64 eps
+// of the largest (q itself, a tanh-sinh integral, is good to about 4 eps: the
+// coefficients level off there, measured 2e-15 from degree 64 for the flat
+// punch); when that needs more than max_degree (small slip zones put a
+// singularity near the real theta axis), ok() is false and q is used directly.
+template <class T> class stick_series {
+ public:
+  template <class Q> stick_series(const Q &q, const T &lo, const T &hi, int max_degree = 256) : lo_(lo), hi_(hi) {
+    using std::abs; using std::cos;
+    m_ = (lo + hi) / 2; w_ = (hi - lo) / 2;
+    std::vector<T> g;
+    for (int N = 32; N <= max_degree; N *= 2) {
+      // values at the Chebyshev-Lobatto points u_j = cos(j pi/N), theta = (u + 1) pi/2
+      // (the points of N/2 are the even ones: reused)
+      std::vector<T> gn(N + 1);
+      for (int j = 0; j <= N; ++j) gn[j] = (j % 2 == 0 && !g.empty()) ? g[j / 2] : q(x_of(cos(pi<T>() * j / N)));
+      g.swap(gn);
+      c_.assign(N + 1, T(0));
+      for (int k = 0; k <= N; ++k) {
+        T sum = 0;
+        for (int j = 0; j <= N; ++j) sum += (j == 0 || j == N ? T(0.5) : T(1)) * g[j] * cos(pi<T>() * T(j * k % (2 * N)) / N);
+        c_[k] = sum * 2 / N * (k == 0 || k == N ? T(0.5) : T(1));
+      }
+      T big = 0, tail = 0;
+      for (int k = 0; k <= N; ++k) big = std::max(big, T(abs(c_[k])));
+      for (int k = 3 * N / 4; k <= N; ++k) tail = std::max(tail, T(abs(c_[k])));
+      tail_ = tail / big;
+      if (tail <= 64 * eps<T>() * big) { ok_ = true; return; }
+    }
+    c_.clear();
+  }
+  bool ok() const { return ok_; }
+  T tail() const { return tail_; }
+  bool inside(const T &x) const { return x > lo_ && x < hi_; }
+  T operator()(const T &x) const {
+    using std::asin; using std::sqrt;
+    // theta from the distance to the nearer end (accurate near both ends)
+    const T th = x >= m_ ? 2 * asin(sqrt((hi_ - x) / (2 * w_))) : pi<T>() - 2 * asin(sqrt((x - lo_) / (2 * w_)));
+    const T u = 2 * th / pi<T>() - 1;
+    T b1 = 0, b2 = 0;  // Clenshaw
+    for (std::size_t k = c_.size(); k-- > 1;) {
+      const T b0 = 2 * u * b1 - b2 + c_[k];
+      b2 = b1; b1 = b0;
+    }
+    return u * b1 - b2 + c_[0];
+  }
+
+ private:
+  T x_of(const T &u) const {
+    using std::cos; using std::sin;
+    const T th = (u + 1) * pi<T>() / 2;
+    // ends from the distances (hi - x = 2w sin^2(theta/2)), exact at theta = 0, pi
+    if (th <= pi<T>() / 2) { const T sh = sin(th / 2); return hi_ - 2 * w_ * sh * sh; }
+    const T ch = cos(th / 2);
+    return lo_ + 2 * w_ * ch * ch;
+  }
+  T lo_, hi_, m_{0}, w_{0};
+  std::vector<T> c_;
+  bool ok_ = false;
+  T tail_{1};
+};
+
+// The panels of a state (p and q at ~10^3 cached nodes). On the stick zone q
+// comes from a stick_series (some 30 to 130 evaluations of q) when it
+// converges, elsewhere from the state. Not needed where the state has closed forms.
 template <class T> std::shared_ptr<const traction_panels<T>> make_panels(const contact_state<T> &st) {
+  std::unique_ptr<stick_series<T>> ser;
+  if (st.stick_hi > st.stick_lo) {
+    ser = std::make_unique<stick_series<T>>(st.q, st.stick_lo, st.stick_hi);
+    if (!ser->ok()) ser.reset();
+  }
   return std::make_shared<const traction_panels<T>>(
-      [&](const T &s, T &pv, T &qv) { pv = st.p(s); qv = st.q(s); }, st.points(), st.kinks);
+      [&](const T &s, T &pv, T &qv) {
+        pv = st.p(s);
+        qv = ser && ser->inside(s) ? (*ser)(s) : st.q(s);
+      },
+      st.points(), st.kinks);
 }
 // Whether the state's Cauchy integrals need quadrature (no closed forms).
 template <class T> bool needs_panels(const contact_state<T> &st) {
