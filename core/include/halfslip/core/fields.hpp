@@ -42,6 +42,16 @@ namespace hs { namespace core {
 template <class T> void add_semi_ellipse(const T &amp, const T &c, const T &e, const std::complex<T> &zeta,
                                          cauchy_pair<T> &out) {
   if (!(c > 0) || amp == 0) return;
+  if (zeta.imag() == 0) {  // the real axis outside the support: all real (the surface off the contact)
+    using std::abs; using std::sqrt;
+    const T nu = (zeta.real() - e) / c;
+    if (abs(nu) > 1) {
+      const T X = nu > 0 ? T(sqrt((nu - 1) * (nu + 1))) : T(-sqrt((nu - 1) * (nu + 1)));
+      out.F0 += std::complex<T>(pi<T>() * amp * c * (X - nu), T(0));
+      out.F1 += std::complex<T>(pi<T>() * amp * (nu / X - 1), T(0));
+      return;
+    }
+  }
   const std::complex<T> nu = (zeta - e) / c;
   const std::complex<T> X = std::sqrt(nu - T(1)) * std::sqrt(nu + T(1));
   out.F0 += pi<T>() * amp * c * (X - nu);
