@@ -10,8 +10,9 @@
 // usage: bench_fields ACCURACY.csv [--benchmark_out=FILE --benchmark_out_format=csv ...]
 //   ACCURACY.csv: per scene, the largest difference over the grid and the surface points
 //   against quadrature from scratch (core stress_at without the cached panels: q from
-//   traction.hpp at every node, panels graded around each point) on every 10th grid column,
-//   divided by the peak |stress| on the grid; and the cost of the first call (panels built).
+//   traction.hpp at every node, panels graded around each point; for Hertz same sign the
+//   closed forms in long double) on every 10th grid column, divided by the peak |stress| on
+//   the grid; and the cost of the first call (panels built).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -151,10 +152,23 @@ void accuracy(const char *path) {
     hs_eval_stress(sol, 1, 0.0, pts().gx.size(), pts().gx.data(), pts().gy.data(), out.data());
     double peak = 0, err = 0;
     int n = 0;
+    // Hertz same sign: the closed forms in long double (the double path is the same closed forms)
+    const bool ld = !d.flat && h->reg != hs::core::regime::opposite_sign;
+    hs::core::hertz_scene<long double> lsc;
+    lsc.q = d.q; lsc.s = d.s;
+    const auto lsol = hs::core::solve_hertz(lsc);
+    const auto lst = hs::core::hertz_state(lsol);
+    auto reference = [&](double x, double y) {
+      if (!ld) return hs::core::stress_at(ref, 1, x, y);
+      const auto t = hs::core::stress_at<long double>(lst, 1, x, y);
+      hs::core::stress_tensor<double> r;
+      r.xx = double(t.xx); r.yy = double(t.yy); r.xy = double(t.xy);
+      return r;
+    };
     for (std::size_t k = 0; k < pts().gx.size(); ++k) {
       for (int c = 0; c < 3; ++c) peak = std::max(peak, std::fabs(out[3 * k + c]));
       if (k % 10) continue;  // every 10th column against the slow reference
-      const auto s = hs::core::stress_at(ref, 1, pts().gx[k], pts().gy[k]);
+      const auto s = reference(pts().gx[k], pts().gy[k]);
       err = std::max({err, std::fabs(s.xx - out[3 * k]), std::fabs(s.yy - out[3 * k + 1]),
                       std::fabs(s.xy - out[3 * k + 2])});
       ++n;
@@ -164,7 +178,9 @@ void accuracy(const char *path) {
     double speak = 0, serr = 0;
     for (std::size_t k = 0; k < sv.size(); ++k) {
       speak = std::max(speak, std::fabs(sv[k]));
-      serr = std::max(serr, std::fabs(sv[k] - hs::core::surface_sxx(ref, 1, pts().sx[k])));
+      const double r = ld ? double(hs::core::surface_sxx<long double>(lst, 1, pts().sx[k]))
+                          : hs::core::surface_sxx(ref, 1, pts().sx[k]);
+      serr = std::max(serr, std::fabs(sv[k] - r));
     }
     std::fprintf(f, "%s,%d,%.6g,%.3g,%zu,%.6g,%.3g,%.3f\n", d.name, n, peak, err / peak, sv.size(), speak,
                  serr / speak, 1e3 * first);

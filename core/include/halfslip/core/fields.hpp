@@ -66,7 +66,7 @@ template <class T> void add_semi_ellipse(const T &amp, const T &c, const T &e, c
 // at least its own length from the pole (20-point rule: error < 1e-16).
 template <class T, class G>
 void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex<T> &zeta, cauchy_pair<T> &P,
-                    cauchy_pair<T> &Q) {
+                    cauchy_pair<T> &Q, const std::vector<T> &kinks = {}) {
   using std::abs;
   using gl = boost::math::quadrature::gauss<T, 20>;
   const auto &xs = gl::abscissa();
@@ -101,6 +101,9 @@ void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex
       const T t0 = std::min(std::max(tau.real(), T(0)), T(1));
       const T delta = abs(tau - t0);
       std::vector<T> cuts{T(0), T(1)};
+      // a log-singular kink of p at this end: panels graded towards it (t^2 log t)
+      if (std::find(kinks.begin(), kinks.end(), end) != kinks.end())
+        for (int k = 1; k <= 12; ++k) cuts.push_back(std::ldexp(T(1), -k));
       if (delta < T(0.5)) {
         const T dmin = std::max(delta, T(64) * eps<T>());
         cuts.push_back(t0);
@@ -108,8 +111,8 @@ void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex
           if (t0 - d > 0) cuts.push_back(t0 - d);
           if (t0 + d < 1) cuts.push_back(t0 + d);
         }
-        std::sort(cuts.begin(), cuts.end());
       }
+      std::sort(cuts.begin(), cuts.end());
       for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
         if (cuts[k + 1] > cuts[k]) panel(end, h, cuts[k], cuts[k + 1]);
     }
@@ -164,7 +167,7 @@ template <class T> struct contact_state {
     if (closed && closed(zeta, P, Q)) return;
     P = {}; Q = {};
     if (panels) { panels->cauchy(zeta, P, Q); return; }
-    cauchy_numeric<T>([&](const T &s, T &pv, T &qv) { pv = p(s); qv = q(s); }, points(), zeta, P, Q);
+    cauchy_numeric<T>([&](const T &s, T &pv, T &qv) { pv = p(s); qv = q(s); }, points(), zeta, P, Q, kinks);
   }
 };
 
