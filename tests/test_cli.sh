@@ -197,6 +197,20 @@ for r in rows:
     assert abs(float(r["von_mises"]) - vm) < 1e-13 * (1 + vm), r
     assert abs(float(r["max_shear"]) - math.hypot((sxx - syy) / 2, sxy)) < 1e-13, r
 assert n == 80, n' "$dir/f.csv" && ok || ko "--fields CSV (McEwen on the axis, scalars)"
+# --fields-at: a point list (header, comments, commas or spaces); y < 0 is the pad
+printf 'x y\n0 0.5   # below the centre\n0,-0.5\n0.25 1e-6\n' > "$dir/pts.txt"
+"$cli" solve --Q-over-fP 0 --sigma-over-fp0 0 --fields "$dir/p.csv" --fields-at "$dir/pts.txt" >/dev/null && python3 -c '
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert [(r["body"], float(r["x"]), float(r["y"])) for r in rows] == [("1", 0, 0.5), ("2", 0, -0.5), ("1", 0.25, 1e-6)], rows
+for r in rows[:2]:
+    assert abs(float(r["syy"]) + 1 / math.sqrt(1.25)) < 1e-13 and abs(float(r["sxx"]) + 1.5 / math.sqrt(1.25) - 1) < 1e-13, r
+assert abs(float(rows[2]["syy"]) + math.sqrt(1 - 0.0625)) < 1e-5, rows[2]' "$dir/p.csv" && ok || ko "--fields-at point list"
+printf '0 0.5\n0.1 abc\n' > "$dir/bad.txt"
+err=$("$cli" solve --fields "$dir/q.csv" --fields-at "$dir/bad.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q "line 2: y 'abc' is not a number" && ok || ko "--fields-at bad line: $err"
+err=$("$cli" solve --fields-at "$dir/pts.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "--fields-at needs --fields" && ok || ko "--fields-at without --fields: $err"
 # the flat punch grid (6,642 points) is quick now (it took 1.7 s before the cached panels)
 "$cli" solve --geometry flat-rounded --Q-over-fP 0.4 --sigma-over-fp0 2 --fields "$dir/g.csv" >/dev/null && [ "$(wc -l < "$dir/g.csv")" -eq 6643 ] && ok || ko "--fields flat punch"
 err=$("$cli" solve --fields /nonexistent/dir/f.csv 2>&1 >/dev/null); rc=$?
