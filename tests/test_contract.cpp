@@ -86,7 +86,8 @@ TEST_CASE("C ABI input contract: every bad input has its status code and message
       {"a denormal", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.a = Den; })); }},
       {"a, p0 huge", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.a = Huge; s.p0 = Huge; })); }},
       {"Q/fP denormal", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.Q_over_fP = Den; })); }},
-      {"sigma huge", HS_ERR_OVERFLOW, [] { return solve_status(scene([](hs_scene &s) { s.sigma_over_fp0 = 1e300; })); }},
+      // issue 13: the Hertz solver carries ln(width), so a stick zone below the double range is answered
+      {"sigma huge", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.sigma_over_fp0 = 1e300; })); }},
       // options
       {"options struct_size", HS_ERR_STRUCT_SIZE, [&] { return with_opts([](hs_options &o) { o.struct_size = 1; }); }},
       {"max_iterations 0", HS_ERR_BAD_OPTION, [&] { return with_opts([](hs_options &o) { o.max_iterations = 0; }); }},

@@ -110,7 +110,7 @@ void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int m
   h.general.reset(new core::general_solution<double>(core::solve_general<double>(pm, sc, o)));
   h.model_used = HS_MODEL_QUADRATURE;
   h.error_estimate =
-      core::quadrature_estimate(rt, h.general->d1() / sc.a, h.general->d2() / sc.a, h.general->width).value();
+      core::quadrature_estimate(rt, h.general->d1() / sc.a, h.general->d2() / sc.a, h.general->width, sc.q).value();
 }
 
 void run_reference(hs_solution &h, const core::general_scene<double> &sc, const request &r,
@@ -142,7 +142,15 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
   if (hertz) {
     request cf = r;
     cf.rtol = 0;
-    run_closed_form(h, sc, cf);
+    try {
+      run_closed_form(h, sc, cf);
+    } catch (const core::error &e) {
+      // double cannot answer (issue 13: the reference solves what is left
+      // of the domain); the result says it took the reference route
+      if ((e.code() != core::status::overflow && e.code() != core::status::no_convergence) || !ref.available) throw;
+      run_reference(h, sc, r, ref);
+      return;
+    }
   } else {
     // the quadrature tolerance from the estimate's form 16 (eps + rt)(1 + a/d_min),
     // with d_min guessed by the Hertz closed form of the same loads

@@ -48,4 +48,19 @@ template <class T> T cel(T kc, T p, T a, T b) {
   return boost::math::constants::half_pi<T>() * (b + a * em) / (em * (em + p));
 }
 
+// cel for a modulus kc that may be below the range of T, given lkc = ln kc
+// (kc = exp(lkc), possibly 0). As kc -> 0 the integrand near t = pi/2 is
+// (b/p) / sqrt(cos^2 t + kc^2), so cel(kc) = (b/p) ln(1/kc) + C(p, a, b) +
+// O((kc^2/p) ln kc): below the switch ks = eps^0.6 min(1, sqrt(p)) the
+// remainder is under eps and the value is cel(ks) + (b/p)(ln ks - ln kc)
+// (tests/test_elliptic.cpp compares it with cel where both are defined).
+// A stick zone narrower than the range of T (large sigma) has such a modulus.
+template <class T> T cel_log(const T &kc, const T &lkc, const T &p, const T &a, const T &b) {
+  using std::log; using std::min; using std::pow; using std::sqrt;
+  if (!(p > 0)) throw error(status::internal, "cel: needs p > 0");
+  const T ks = pow(boost::math::tools::epsilon<T>(), T(0.6)) * min(T(1), sqrt(p));
+  if (kc > ks) return cel(kc, p, a, b);
+  return cel(ks, p, a, b) + b / p * (log(ks) - lkc);
+}
+
 }}  // namespace hs::core

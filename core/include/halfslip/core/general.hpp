@@ -10,7 +10,13 @@
 // sR = +1 (same sign) or -1 (opposite sign). Side conditions (docs/conventions.md):
 //   F1 = sL I1L - sR I1R - pi s/4                          = 0
 //   F2 = sL I2L - sR I2R - pi s (b1 - b2)/8 + pi q/2       = 0
-// with I_jZ = int_Z p_hat(t) t^(j-1) / sqrt(|t-b1||t+b2|) dt.
+// with I_jZ = int_Z p_hat(t) t^(j-1) / sqrt(|t-b1||t+b2|) dt. The solver uses
+// F2 - c F1 in place of F2, c = (b1 - b2)/2 the stick-zone centre: the
+// moment about the centre, sL K_L - sR K_R + pi q/2 with K_Z = int_Z p_hat
+// (t - c)/sqrt(|t-b1||t+b2|) dt. The pi s terms cancel exactly and t - c
+// = +-(distance to the stick edge + e/2) has no cancellation, so the second
+// condition keeps full accuracy as s grows (as s -> infinity it becomes the
+// balance q pi/2 = int_{-1}^{x0} p_hat - int_{x0}^{1} p_hat; issue 13).
 //
 // Unknowns. One Newton iteration covers both regimes: x1 = +d1 (same sign) or
 // -d1 (opposite sign), d1 = 1 - b1 the length of zone R, and x2 = ln e, e = b1 + b2
@@ -125,7 +131,11 @@ std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<
   if (epsr < half_pi / 2) {
     T g = epsr < 1 ? asin(epsr) : epsr;
     // a panel [g, 2g] is 1.5 of its half-lengths... from the singularity: ratio 2
-    const T tiny = eps<T>() * eps<T>();
+    // (no floor above the scale itself: a floor at eps^2 left one panel
+    // [0, eps^2] across the near-singularity once e < eps^4 d, sigma/(f p0)
+    // of a few hundred; issue 13)
+    using std::sqrt;
+    const T tiny = sqrt(boost::math::tools::min_value<T>());
     if (g < tiny) g = tiny;
     for (; g < half_pi / 2; g *= 2) pts.push_back({g, false});
   }
@@ -307,9 +317,16 @@ zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d,
 
 }  // namespace gdetail
 
-// Sums of the single-zone integrals and their derivatives in b1, b2.
+// Sums of the single-zone integrals (I2: the moment about the stick-zone
+// centre, int p_hat (t - c)/R(t) dt) and their derivatives in the zone length
+// d at fixed stick-zone length e (a translation of the stick zone) and in e
+// at fixed d. Derivatives in b1 and b2 separately are each O(1/e) and cancel
+// in the translation: formed that way, the Jacobian lost every digit once
+// e < ~1e-16 (large sigma; issue 13). The d-derivative below is O(ln(1/e));
+// the e-derivative is kept as e dI/de (the 1/e^(3/2) of each node times e
+// overflowed for e < 1e-205).
 template <class T> struct zone_sums {
-  T I1{0}, I2{0}, I1b1{0}, I1b2{0}, I2b1{0}, I2b2{0};
+  T I1{0}, I2{0}, I1d{0}, I2d{0}, I1le{0}, I2le{0};
 };
 
 // Single-zone integrals I_j = int_zone p_hat t^(j-1)/R(t) dt, j = 1, 2, and
@@ -345,33 +362,25 @@ zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, c
     const T psi = sf * ph;                 // p_hat / sqrt(distance to the near edge)
     const T rg = 1 / sqrt(g);
     const T base = 2 * d * c2 * psi * rg;  // integrand of I_1 (per dtheta)
+    // t - c: +(ds + e/2) in zone R, -(ds + e/2) in zone L
+    const T u = side > 0 ? ds + e / 2 : -(ds + e / 2);
     r.I1 += w * base;
-    r.I2 += w * base * t;
+    r.I2 += w * base * u;
     if (!jac) return;
     // psi' = d psi / dt
     const T dpsi = side > 0 ? ph / (2 * sf) + sf * dph : -ph / (2 * sf) + sf * dph;
-    // d/d(g) of base: -base/(2g)
-    const T bg = -base / (2 * g);
-    // G_j(t) = psi t^(j-1) g^(-1/2); dG/dt along the map (d fixed) with dg/dt = +1 (R) or -1 (L)
-    const T sg = side > 0 ? T(1) : T(-1);
-    const T G1p = dpsi * rg - sg * psi * rg / (2 * g);
-    const T G2p = (dpsi * t + psi) * rg - sg * psi * t * rg / (2 * g);
-    const T G1 = psi * rg, G2 = psi * t * rg;
-    if (side > 0) {
-      // b2 enters only through g = t + b2
-      r.I1b2 += w * bg;
-      r.I2b2 += w * bg * t;
-      // b1: d = 1 - b1, t = 1 - d cos^2 => dd/db1 = -1, dt/db1 = cos^2
-      r.I1b1 += w * (-2 * c2 * G1 + 2 * d * c2 * c2 * G1p);
-      r.I2b1 += w * (-2 * c2 * G2 + 2 * d * c2 * c2 * G2p);
-    } else {
-      // b1 enters only through g = b1 - t
-      r.I1b1 += w * bg;
-      r.I2b1 += w * bg * t;
-      // b2: d = 1 - b2, t = -1 + d cos^2 => dd/db2 = -1, dt/db2 = -cos^2
-      r.I1b2 += w * (-2 * c2 * G1 - 2 * d * c2 * c2 * G1p);
-      r.I2b2 += w * (-2 * c2 * G2 - 2 * d * c2 * c2 * G2p);
-    }
+    // at fixed theta: t = 1 - d cos^2 (R) or -1 + d cos^2 (L), g = e + d sin^2
+    const T dtdd = side > 0 ? -c2 : c2;
+    // d base/d e = -base/(2g); d base/d d = 2 c2 psi/sqrt(g) + 2 d c2 psi' t_d/sqrt(g)
+    // - base sin^2/(2g), whose last term is at most base/(2d): no 1/e
+    const T bd = 2 * c2 * psi * rg + 2 * d * c2 * dpsi * dtdd * rg - base * s2 / (2 * g);
+    const T ble = -base * (e / (2 * g));  // e d base/d e, at most base/2
+    // u_d = +-sin^2, e u_e = +-e/2
+    const T sgn = side > 0 ? T(1) : T(-1);
+    r.I1d += w * bd;
+    r.I2d += w * (bd * u + sgn * base * s2);
+    r.I1le += w * ble;
+    r.I2le += w * (ble * u + sgn * base * e / 2);
   });
   return r;
 }
@@ -398,19 +407,17 @@ general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const 
   const int sR = st.sR();
   const zone_sums<T> R = zone_integrals(pm, +1, d1, e, n, jac);
   const zone_sums<T> L = zone_integrals(pm, -1, d2, e, n, jac);
-  const T bdiff = d2 - d1;  // b1 - b2
   general_eval<T> r;
   r.F1 = L.I1 - sR * R.I1 - pi_ * s / 4;
-  r.F2 = L.I2 - sR * R.I2 - pi_ * s * bdiff / 8 + pi_ * q / 2;
+  r.F2 = L.I2 - sR * R.I2 + pi_ * q / 2;  // F2 - c F1 (see the top of this file)
   if (!jac) return r;
-  const T F1b1 = L.I1b1 - sR * R.I1b1, F1b2 = L.I1b2 - sR * R.I1b2;
-  const T F2b1 = L.I2b1 - sR * R.I2b1 - pi_ * s / 8, F2b2 = L.I2b2 - sR * R.I2b2 + pi_ * s / 8;
-  // b1 = 1 - |x1|, b2 = e - b1: d/dx1 = sign(x1)(-d/db1 + d/db2); d/dln e = e d/db2
+  // d1 = |x1|, d2 = 2 - d1 - e: at fixed e, d d1/d x1 = sg, d d2/d x1 = -sg;
+  // at fixed x1, d d2/d e = -1 (and b1 - b2 = d2 - d1)
   const T sg = T(sR);
-  r.J11 = sg * (F1b2 - F1b1);
-  r.J21 = sg * (F2b2 - F2b1);
-  r.J12 = e * F1b2;
-  r.J22 = e * F2b2;
+  r.J11 = -sg * L.I1d - R.I1d;
+  r.J21 = -sg * L.I2d - R.I2d;
+  r.J12 = L.I1le - sR * R.I1le - e * L.I1d;
+  r.J22 = L.I2le - sR * R.I2le - e * L.I2d;
   return r;
 }
 
@@ -832,6 +839,62 @@ general_state<T> shear_only_start(const pressure_model<T> &pm, const T &q, int n
   return {d, 2 * (1 - d)};
 }
 
+// Sliding stick point (issue 13): as s grows the stick zone shrinks onto the
+// point x0 where the limiting friction forces of the two slip zones balance
+// Q, q pi/2 = int_{-1}^{x0} p_hat - int_{x0}^{1} p_hat, i.e. the tail of p_hat
+// beyond x0 is pi (1 - q)/4. Returns d_inf = 1 - x0 (Illinois on the tail,
+// which grows monotonically with its length; false if the iteration limit is
+// reached).
+template <class T> bool sliding_point(const pressure_model<T> &pm, const T &q, T &d_inf) {
+  using std::abs;
+  const T target = pi<T>() * (1 - q) / 4;
+  T lo = 0, hi = 2, flo = -target, fhi = pi<T>() / 2 - target;
+  int side = 0;
+  for (int it = 0; it < 200; ++it) {
+    T d = (lo * fhi - hi * flo) / (fhi - flo);
+    if (!(d > lo && d < hi)) d = (lo + hi) / 2;
+    const T fd = pm.tail(+1, d) - target;
+    if (fd < 0) { lo = d; flo = fd; if (side == -1) fhi /= 2; side = -1; }
+    else { hi = d; fhi = fd; if (side == +1) flo /= 2; side = +1; }
+    if (hi - lo <= 4 * eps<T>() * hi || fd == 0) { d_inf = fd == 0 ? d : (lo + hi) / 2; return true; }
+  }
+  return false;
+}
+
+// Start for large s (issue 13): the stick zone centred on the sliding stick
+// point x0, its width e from F1 = 0 at that centre. F1 is nearly linear in
+// ln e once e << 1 (the zone integrals grow like ln(1/e)): secant steps in
+// ln e from two small widths. Newton in (x1, ln e) then follows x0 and the
+// width on a log scale. False if no such start exists (the stick zone would
+// be below the range of T: tiny_le is ln of the smallest width allowed).
+// below_range is set when the width would be below exp(tiny_le).
+template <class T>
+bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int n, const T &tiny_le,
+                       general_state<T> &out, bool &below_range) {
+  using std::abs; using std::exp; using std::log; using std::max; using std::min;
+  T d_inf;
+  if (!sliding_point(pm, q, d_inf) || !(d_inf > 0 && d_inf < 2)) return false;
+  auto F1 = [&](const T &le) {
+    const T e = exp(le);
+    return general_residual(pm, q, s, general_state<T>{-(d_inf - e / 2), e}, n, false).F1;
+  };
+  const T cap = log(min(min(T(1), T(d_inf / 2)), T((2 - d_inf) / 2)));
+  T l0 = min(T(-8), cap), l1 = l0 - 8;
+  T f0 = F1(l0), f1 = F1(l1);
+  for (int it = 0; it < 30; ++it) {
+    if (!(f1 != f0) || !(f0 == f0) || !(f1 == f1)) return false;
+    T l2 = l1 - f1 * (l1 - l0) / (f1 - f0);
+    l2 = min(l2, cap);
+    if (!(l2 > tiny_le)) { below_range = l2 <= tiny_le; return false; }
+    const T f2 = F1(l2);
+    l0 = l1; f0 = f1; l1 = l2; f1 = f2;
+    if (abs(l1 - l0) <= T(1e-3) * (1 + abs(l1))) break;
+  }
+  const T e = exp(l1);
+  out = {-(d_inf - e / 2), e};
+  return out.d2() > 0;
+}
+
 // Continuation in s from s = 0 with the tangent predictor dx/ds = -J^-1 dF/ds.
 template <class T>
 bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
@@ -855,7 +918,7 @@ bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_s
     const T det = r.J11 * r.J22 - r.J12 * r.J21;
     if (det != 0) {
       const T pi_ = pi<T>();
-      const T Fs1 = -pi_ / 4, Fs2 = -pi_ * (st.d2() - st.d1()) / 8;
+      const T Fs1 = -pi_ / 4, Fs2 = 0;  // F2 (the moment about the centre) has no s
       const T dx = -(Fs1 * r.J22 - Fs2 * r.J12) / det;
       const T dy = -(r.J11 * Fs2 - r.J21 * Fs1) / det;
       general_state<T> p2{st.x1 + ds * dx, st.e * exp(ds * dy)};
@@ -943,7 +1006,23 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
   }
   int its = 0;
   general_state<T> trial = st;
-  if (!gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its)) {
+  bool ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+  if (!ok && st.x1 < 0 && st.e < T(0.1)) {
+    // large sigma: start from the sliding stick point (issue 13)
+    using std::log;
+    const T tiny_le = log(boost::math::tools::min_value<T>() / eps<T>());
+    bool below = false;
+    if (gdetail::large_sigma_start(P, q, s, n, tiny_le, trial, below))
+      ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+    else if (below) {
+      // the quadrature needs the width itself: a clear error, not seconds of
+      // continuation that cannot succeed (docs/models.md, domain)
+      throw error(status::overflow,
+                  "general solver: sigma/(f p0) too large: the stick zone would be narrower than the range of the "
+                  "floating-point type (1e-292 a in double)");
+    }
+  }
+  if (!ok) {
     // fallback: continuation in s from the shear-only solution
     general_state<T> s0 = gdetail::shear_only_start(P, q, n);
     if (!gdetail::newton(P, q, T(0), s0, n, tol_step, opt.max_iterations, its))

@@ -49,6 +49,9 @@ struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>>
   using base = canonical_solution<hertz_solution<T>, T, hertz_scene<T>>;
   using base::reg; using base::beta1; using base::beta2; using base::delta1; using base::delta2;
   using base::width; using base::rtol; using base::scene; using base::half_width;
+  // ln(width): the stick zone of a large-sigma scene can be narrower than the
+  // range of T (width = 0); the opposite-sign slip and energies need its log
+  T log_width{0};
 
   // Quadrature tolerance for the numerically integrated outputs.
   T quad_tol() const {
@@ -64,13 +67,14 @@ struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>>
     const T w = half_width();
     const T Rh = sqrt(dl * (2 * w + dl));  // sqrt((xi - beta1)(xi + beta2))
     if (reg != regime::opposite_sign) return zone > 0 ? 2 * Rh : -2 * Rh;
+    if (!(dl > 0)) return T(0);  // at the stick boundary (G may diverge there if width = 0)
     if (zone > 0) {
       // Right zone slips against the left one: b = -2 R (1 + 2/pi H),
       // H(x) = int_left sqrt(1-t^2)/(R(t)(x - t)) dt = G(-x; beta2, beta1).
-      const T g = opposite_G_state<T>({delta2, delta1, width}, dl);
+      const T g = opposite_G_state<T>({delta2, delta1, width, log_width}, dl);
       return -2 * Rh * (1 + 2 * g / pi<T>());
     }
-    const T g = opposite_G_state<T>({delta1, delta2, width}, dl);
+    const T g = opposite_G_state<T>({delta1, delta2, width, log_width}, dl);
     return -2 * Rh * (1 + 2 * g / pi<T>());
   }
 
@@ -131,7 +135,7 @@ struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>>
 // Solve a Hertz scene. Throws hs::core::error on bad input or failure.
 template <class T>
 hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &opt = {}) {
-  using std::sqrt;
+  using std::log; using std::sqrt;
   validate(sc);
   if (opt.max_iterations < 1) throw error(status::bad_option, "max_iterations must be >= 1");
   hertz_solution<T> sol;
@@ -163,6 +167,7 @@ hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &
     sol.delta1 = m - e;
     sol.delta2 = m + e;
     sol.width = 2 * root;
+    sol.log_width = log(sol.width);
     sol.dirR = sol.delta1 > 0 ? 1 : 0;
     sol.dirL = 1;
     return sol;
@@ -174,6 +179,7 @@ hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &
   sol.delta1 = r.delta1;
   sol.delta2 = r.delta2;
   sol.width = r.width;
+  sol.log_width = r.log_width;
   sol.iterations = r.iterations;
   sol.dirR = -1;
   sol.dirL = 1;

@@ -28,26 +28,44 @@
 
 namespace hs { namespace core {
 
+// le = ln e is authoritative only when e is below the normal range of T (a
+// stick zone narrower than ~1e-308 a in double, reached for sigma/(f p0) of
+// a few hundred and more); otherwise it may be left 0 and ln e is taken
+// from e. The solver keeps both.
 template <class T> struct opposite_state {
   T d1, d2, e;
+  T le{0};
 };
+
+// ln e of a state (see opposite_state)
+template <class T> T log_width(const opposite_state<T> &st) {
+  using std::log;
+  return st.e >= boost::math::tools::min_value<T>() ? T(log(st.e)) : st.le;
+}
 
 // Carlson-basis quantities of the side conditions at a state.
 template <class T> struct opposite_basis {
-  T op1, op2, Q, sQ, kc, RF, eRDb, RDb, RJc;
+  T op1, op2, Q, sQ, kc, lkc, RF, eRDb, RJc;
   explicit opposite_basis(const opposite_state<T> &st) {
-    using std::sqrt;
+    using std::exp; using std::log; using std::sqrt;
     op2 = st.d1 + st.e;  // 1 + beta2
     op1 = st.d2 + st.e;  // 1 + beta1
     Q = op1 * op2;
     sQ = sqrt(Q);
-    const T P = 2 * st.e;
-    kc = sqrt(P / Q);
-    RF = cel(kc, T(1), T(1), T(1)) / sQ;
-    const T C = cel(kc, T(1), T(1), T(0));
+    if (st.e >= boost::math::tools::min_value<T>()) {
+      const T P = 2 * st.e;
+      kc = sqrt(P / Q);
+      lkc = log(kc);
+    } else {
+      // stick zone below the range of T: the modulus from ln e (it may
+      // underflow too; cel_log then uses its logarithm)
+      lkc = (log(T(2)) + st.le - log(Q)) / 2;
+      kc = exp(lkc);
+    }
+    RF = cel_log(kc, lkc, T(1), T(1), T(1)) / sQ;
+    const T C = cel_log(kc, lkc, T(1), T(1), T(0));
     eRDb = 3 * C / (2 * sQ);  // e * R_D(0,Q,P), finite as e -> 0
-    RDb = eRDb / st.e;
-    RJc = 3 * cel(kc, 2 / op1, T(0), T(1)) / (Q * sQ);  // R_J(0,P,Q,2(1+beta2))
+    RJc = 3 * cel_log(kc, lkc, 2 / op1, T(0), T(1)) / (Q * sQ);  // R_J(0,P,Q,2(1+beta2))
   }
 };
 
@@ -59,6 +77,7 @@ template <class T> struct opposite_eval {
   T F1, F2;
   T F1c, F2c;  // dF/dc at fixed e
   T F1l, F2l;  // dF/d(ln e) at fixed c
+  T mag;       // sum of the magnitudes of the terms of F1 and F2 (their rounding scale)
 };
 
 // Basis is the provider of the Carlson quantities (default: cel-based
@@ -77,6 +96,14 @@ opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<
   // D1 = pi(3(b1^2+b2^2)/8 - b1 b2/4 - 1/2) written in d's (no cancellation)
   const T D1 = pi_ * (-(d1 + d2) / 2 + 3 * (d1 * d1 + d2 * d2) / 8 - d1 * d2 / 4);
   r.F2 = D1 + 2 * A1 + pi_ * q / 2 - pi_ * s * bdiff / 8;
+  {
+    using std::abs;
+    // the terms of A0, A1 grow like ln(1/e) d1 / (d1 + e)^(3/2) as e -> 0 near
+    // Q -> fP, far beyond pi s: the rounding of F is judged on them
+    const T t0 = abs(B.RF) + abs(bdiff * B.op2 * B.RJc) / 3 + abs(d2 * B.eRDb) / 3;
+    const T t1 = abs((4 - 3 * d1 + d2) * B.RF) / 2 + abs(B.op2 * poly * B.RJc) / 6 + abs(d2 * bdiff * B.eRDb) / 2;
+    r.mag = pi_ * (abs(bdiff) + s / 2 + q / 2 + abs(D1) / pi_) + 4 * d1 * t0 + 2 * d1 * t1;
+  }
   r.F1c = pi_ - 4 * B.RF + 8 * d1 * B.op2 * B.RJc / 3;
   r.F2c = pi_ * bdiff - pi_ * s / 4 + 2 * (2 - 4 * b1) * B.RF + 8 * d1 / 3 * (bdiff * B.op2 * B.RJc - d2 * B.eRDb);
   r.F1l = -2 * e * B.RF - 4 * d1 * d2 * B.eRDb / 3;
@@ -101,7 +128,7 @@ template <class T> T opposite_G_state(const opposite_state<T> &st, const T &dl) 
   const T opx = st.d2 - dl;             // 1 + x
   const T omx = st.d1 + st.e + dl;      // 1 - x
   const T px = 2 * (st.e + dl) / (B.op1 * omx);  // q_x / Q, no cancellation
-  const T RJq = 3 * cel(B.kc, px, T(0), T(1)) / (B.Q * B.sQ);
+  const T RJq = 3 * cel_log(B.kc, B.lkc, px, T(0), T(1)) / (B.Q * B.sQ);
   return 4 * st.d1 * B.op2 / 3 * (B.RJc + opx / omx * RJq);
 }
 
@@ -131,6 +158,7 @@ template <class T> struct opposite_result {
   T beta1, beta2, delta1, delta2;
   T width;  // beta1 + beta2, kept separately: full relative accuracy when tiny
   int iterations;
+  T log_width;  // ln(width), finite when width underflows
 };
 
 template <class T> T residual_norm(const opposite_eval<T> &r) {
@@ -151,14 +179,24 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
   using std::abs; using std::max; using std::expm1;
   using boost::math::expm1;
   const T pi_ = pi<T>();
-  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
+  using std::exp; using std::log;
+  using boost::math::isfinite;
   opposite_state<T> st = start;
+  st.le = log_width(st);
+  if (!(st.e >= 0) || !isfinite(st.le) || !(st.d1 > 0) || !(st.d2 > 0)) return false;
   opposite_eval<T> r = opposite_residual<T, Basis>(q, s, st);
   T norm = residual_norm(r);
   const T tol = 4 * eps<T>();
   // Residuals are sums of terms of size <= pi (1 + s): rounding leaves them
   // at a few eps times that; a result is accepted only at that level.
-  const T noise_floor = 64 * eps<T>() * pi_ * (1 + s);
+  const T floor0 = 64 * eps<T>() * pi_ * (1 + s);
+  // rounding of the residual: of its terms (mag) and of the state itself (the
+  // lengths are known to an ulp of 2, and F moves by F_c per unit length;
+  // F_c ~ 1/(d1 + e) grows large as Q -> fP at large sigma)
+  auto floor_of = [&](const opposite_eval<T> &f) {
+    return max(floor0, 64 * eps<T>() * f.mag + 8 * eps<T>() * (abs(f.F1c) + abs(f.F2c)));
+  };
+  T noise_floor = floor_of(r);
   T prev_step = -1;
   for (int it = 1; it <= max_iterations; ++it) {
     // Columns of the Jacobian in the chosen coordinates (x, y = ln e).
@@ -192,10 +230,11 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
     T lam = 1;
     opposite_state<T> nst;
     opposite_eval<T> nr;
-    T nnorm = 0, dd1 = 0, dd2 = 0, de = 0;
+    T nnorm = 0, dd1 = 0, dd2 = 0, de = 0, rel_de = 0;
     bool decreased = false;
     for (int k = 0; k < 40; ++k, lam /= 2) {
-      de = st.e * expm1(lam * dy);
+      rel_de = expm1(lam * dy);
+      de = st.e * rel_de;
       if (!near_boundary) {
         const T dc = lam * dx;
         dd1 = -dc - de / 2;
@@ -206,15 +245,17 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
       }
       // fraction to the boundary for the linearly updated lengths
       if (st.d1 + dd1 <= st.d1 / 4 || st.d2 + dd2 <= st.d2 / 4) continue;
-      nst = {st.d1 + dd1, st.d2 + dd2, st.e + de};
+      // e from ln e: it may be below the range of T (then only le carries it)
+      const T nle = st.le + lam * dy;
+      nst = {st.d1 + dd1, st.d2 + dd2, exp(nle), nle};
       // keep d1 + d2 + e = 2 exactly in the largest of the three
       if (nst.d1 >= nst.d2 && nst.d1 >= nst.e) nst.d1 = 2 - nst.d2 - nst.e;
       else if (nst.d2 >= nst.e) nst.d2 = 2 - nst.d1 - nst.e;
-      else nst.e = 2 - nst.d1 - nst.d2;
-      if (!(nst.e > tiny)) continue;
+      else { nst.e = 2 - nst.d1 - nst.d2; nst.le = log(nst.e); }
+      if (!isfinite(nst.le) || !(nst.e >= 0)) continue;
       nr = opposite_residual<T, Basis>(q, s, nst);
       nnorm = residual_norm(nr);
-      if (level(nr) <= (1 - lam / 4) * level0 || (nnorm <= noise_floor && nnorm <= norm)) {
+      if (level(nr) <= (1 - lam / 4) * level0 || (nnorm <= floor_of(nr) && nnorm <= norm)) {
         decreased = true;
         break;
       }
@@ -225,11 +266,12 @@ bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int
       return false;
     }
     // Relative change of each length; all three must settle.
-    const T step = max(max(abs(dd1) / st.d1, abs(dd2) / st.d2), abs(de) / st.e);
+    const T step = max(max(abs(dd1) / st.d1, abs(dd2) / st.d2), T(abs(rel_de)));
     const T abs_step = max(abs(dd1), abs(dd2));
     st = nst;
     r = nr;
     norm = nnorm;
+    noise_floor = floor_of(r);
     if (step <= tol && norm <= noise_floor) { out = st; iterations = it; return true; }
     // Rounding-noise regime: the residual is at its rounding floor and the step
     // stopped shrinking quadratically (a length far below 1, or one that the
@@ -252,8 +294,19 @@ template <> struct refine_type<double> { using type = long double; };
 // lengths, so that d1, d2 come out to a few ulps relative, not absolute.
 template <class T, class R>
 opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T> &st) {
-  using std::abs; using std::expm1;
-  const opposite_state<R> w{R(st.d1), R(st.d2), R(st.e)};
+  using std::abs; using std::exp; using std::expm1; using std::log;
+  // a wider type may hold a stick zone that underflows in T (long double: e
+  // down to ~1e-4900)
+  const R le = R(log_width(st));
+  const R ew = st.e >= boost::math::tools::min_value<T>() ? R(st.e) : R(exp(le));
+  // the largest of the three lengths carries the rounding of d1 + d2 + e = 2
+  // in T; in R it is recomputed from the other two, else the residual is
+  // evaluated off the constraint and (near Q -> fP, where the side
+  // conditions are nearly parallel) the step amplifies that by 1e3 or more
+  opposite_state<R> w{R(st.d1), R(st.d2), ew, le};
+  if (w.d1 >= w.d2 && w.d1 >= w.e) w.d1 = 2 - w.d2 - w.e;
+  else if (w.d2 >= w.e) w.d2 = 2 - w.d1 - w.e;
+  else w.e = 2 - w.d1 - w.d2;
   const auto r = opposite_residual<R>(R(q), R(s), w);
   // coordinates (c, ln e): dc changes d1 by -dc, d2 by +dc; ln e as in Newton
   const R det = r.F1c * r.F2l - r.F1l * r.F2c;
@@ -261,12 +314,14 @@ opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T
   const R dc = -(r.F1 * r.F2l - r.F2 * r.F1l) / det;
   const R dl = -(r.F1c * r.F2 - r.F2c * r.F1) / det;
   const R de = w.e * expm1(dl);
-  opposite_state<R> n{w.d1 - dc - de / 2, w.d2 + dc - de / 2, w.e + de};
-  if (!(n.d1 > 0 && n.d2 > 0 && n.e > 0)) return st;
+  opposite_state<R> n{w.d1 - dc - de / 2, w.d2 + dc - de / 2, w.e + de, le + dl};
+  if (!(n.d1 > 0 && n.d2 > 0 && n.e >= 0)) return st;
   // a refinement step is a small correction; anything else means the wider
   // evaluation disagrees, and the converged state is kept
-  if (abs(dc) > R(1e-6) || abs(dl) > R(1e-6)) return st;
-  return {T(n.d1), T(n.d2), T(n.e)};
+  // (ln e is weakly determined when the stick zone is tiny, and of size
+  // ~ sigma/(f p0): its correction is judged relative to it)
+  if (abs(dc) > R(1e-6) || abs(dl) > R(1e-6) * (1 + abs(le))) return st;
+  return {T(n.d1), T(n.d2), T(n.e), T(n.e >= boost::math::tools::min_value<R>() ? R(log(n.e)) : n.le)};
 }
 
 // Solve the opposite-sign side conditions for canonical q >= 0, s > 4(1 - sqrt(1-q)).
@@ -277,14 +332,14 @@ opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T
 // continuation in sigma from the boundary, where the solution is known.
 template <class T, class Basis = opposite_basis<T>>
 opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
-  using std::exp; using std::ldexp; using std::max; using std::min; using std::sqrt;
+  using std::exp; using std::ldexp; using std::log; using std::max; using std::min; using std::sqrt;
+  using boost::math::isfinite;
   const T pi_ = pi<T>();
   const T m = q / (1 + sqrt(1 - q));  // same-sign d1 + s/4
-  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
   opposite_state<T> best{};
   T best_norm = -1;
   auto consider = [&](opposite_state<T> st) {
-    if (!(st.d1 > 0 && st.d2 > 0 && st.e > tiny)) return;
+    if (!(st.d1 > 0 && st.d2 > 0 && st.e >= 0 && isfinite(log_width(st)))) return;
     const T n = residual_norm(opposite_residual<T, Basis>(q, s, st));
     if (best_norm < 0 || n < best_norm) {
       best = st;
@@ -298,12 +353,14 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
   if (best_norm < 0 || best.e < T(0.5)) {
     T c_inf, w;
     sliding_stick_point(q, c_inf, w);
-    T e = 4 * w * exp(-(pi_ * s / 8 - pi_ * c_inf / 2) / w);
-    e = min(e, T(1.8) * (1 - c_inf));
-    consider({1 - c_inf - e / 2, 1 + c_inf - e / 2, e});
+    // in logarithms: e itself underflows for s of a few hundred
+    T le = log(4 * w) - (pi_ * s / 8 - pi_ * c_inf / 2) / w;
+    le = min(le, T(log(T(1.8) * (1 - c_inf))));
+    const T e = exp(le);
+    consider({1 - c_inf - e / 2, 1 + c_inf - e / 2, e, le});
   }
   if (best_norm < 0)
-    throw error(status::overflow, "opposite-sign regime: stick zone narrower than the smallest representable number");
+    throw error(status::overflow, "opposite-sign regime: the logarithm of the stick-zone width is not representable (sigma/(f p0) too large)");
   opposite_state<T> st;
   int its = 0;
   using W = typename refine_type<T>::type;
@@ -315,7 +372,7 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
     // must not come out with -b2 > b1: clamp it to zero width in the betas
     // (its true width stays in x.e).
     if (beta1 + beta2 < 0) beta2 = -beta1;
-    return {beta1, beta2, x.d1, x.d2, x.e, n};
+    return {beta1, beta2, x.d1, x.d2, x.e, n, log_width(x)};
   };
   if (opposite_newton<T, Basis>(q, s, best, max_iterations, st, its)) return finish(st, its);
   // Continuation: s_k = s_b + (s - s_b) 2^(k-K); d1 grows linearly from 0.

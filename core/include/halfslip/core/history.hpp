@@ -39,6 +39,8 @@
 #include <memory>
 #include <vector>
 
+#include <boost/math/tools/roots.hpp>
+
 #include "numerics.hpp"
 #include "pressure.hpp"
 #include "status.hpp"
@@ -169,7 +171,15 @@ template <class T> class history {
       const T db_max = opt_.max_step;
       size_t run_seen = size_t(-1);
       T cur = h;
+      // a march that keeps taking tiny steps without getting on (an end caught at a
+      // kink of the traction it cannot pass) stops with a status instead of running on
+      const size_t seg_first = steps_.size();
+      const size_t seg_budget = size_t(64) * size_t(ceil(T(1) / h)) + 256;
+      work_ = 0;
+      work_budget_ = 4000 * size_t(ceil(T(1) / h)) + 40000;  // residual evaluations per segment
       while (done < 1) {
+        if (steps_.size() - seg_first > seg_budget)
+          throw error(status::no_convergence, "history: the march of a segment makes no progress (steps shrink without end)");
         if ((m1_ == rec && b1_ >= 1 - 16 * eps<T>()) || (m2_ == rec && b2_ >= 1 - 16 * eps<T>())) {
           after_event(m1_ == rec && b1_ >= 1 - 16 * eps<T>() ? 3 : 4);
           decide(dq, ds);
@@ -186,17 +196,49 @@ template <class T> class history {
         // a step that cannot keep an advancing end advancing ends beyond an
         // event: shorten it until it solves (the event is then located below)
         history_step<T> st;
+        // an end that would move more than db_max (or a step that does not
+        // converge) is driven by the end instead: the step ends where that end
+        // has moved db_max / 2
+        auto by_end = [&](const T &fmax) -> bool {
+          for (int i = 1; i <= 2; ++i) {
+            const mode mi = i == 1 ? m1_ : m2_;
+            if (mi != adv) continue;
+            const T bi = i == 1 ? b1_ : b2_;
+            history_step<T> se;
+            if (end_driven_step(dq, ds, i, bi - db_max / 2, fmax, se)) {
+              const T mv = max(abs(se.e1.bb - b1_), abs(se.e2.bb - b2_));
+              if (mv <= db_max) {
+#ifdef HS_HISTORY_DEBUG2
+                fprintf(stderr, "by_end %d: frac %.17g -> %.17g\n", i, double(fmax), double(se.len));
+#endif
+                st = se; frac = se.len; return true;
+              }
+            }
+          }
+          return false;
+        };
+        int near_erases = 0, end_driven = 0;
         for (int tries = 0;; ++tries) {
           try {
             st = take_step(dq, ds, frac);
             const T moved = max(abs(st.e1.bb - b1_), abs(st.e2.bb - b2_));
             if (moved > db_max && tries < 40 && frac > hrun / 65536) {
+              if (end_driven++ < 2 && by_end(frac)) break;
               frac /= 2;
               continue;
             }
             break;
           } catch (const error &err) {
             if (err.code() != status::no_convergence || tries >= 20) throw;
+            if (near_erases < 8) {
+              // an end stalls against a region already within 1e-5 of the limit
+              // (a Masing return the limit events did not catch): sweep it
+              bool erased = false;
+              for (int i = 1; i <= 2; ++i)
+                if ((i == 1 ? m1_ : m2_) == adv) erased = erase_at_limit(i, T(1e-5)) || erased;
+              if (erased) { ++near_erases; frac = min(cur, 1 - done); tries = -1; continue; }
+            }
+            if (tries >= 1 && end_driven++ < 2 && by_end(frac)) break;
             frac /= 2;
           }
         }
@@ -211,7 +253,10 @@ template <class T> class history {
           T lo = 0, hi = frac;
           // bisection/secant on the fraction at which the event happens
           T fl = event_value(ev, nullptr, dq, ds, T(0)), fh = event_value(ev, &st, dq, ds, frac);
+          // the step kept is the last one tried (within rounding of the event) or the
+          // nearest one past it
           history_step<T> best = st;
+          T best_frac = frac;
           for (int it = 0; it < 60; ++it) {
             T mid = (fl != fh) ? lo + (hi - lo) * fl / (fl - fh) : (lo + hi) / 2;
             if (!(mid > lo + (hi - lo) / 16) || !(mid < hi - (hi - lo) / 16)) mid = (lo + hi) / 2;
@@ -221,10 +266,10 @@ template <class T> class history {
               continue;
             }
             const T fm = event_value(ev, &sm, dq, ds, mid);
-            if ((fm > 0) == (fl > 0)) { lo = mid; fl = fm; } else { hi = mid; fh = fm; best = sm; }
-            if (hi - lo <= 8 * eps<T>() * frac || abs(fm) <= 8 * eps<T>()) { best = sm; frac = mid; break; }
-            frac = hi;
+            if ((fm > 0) == (fl > 0)) { lo = mid; fl = fm; } else { hi = mid; fh = fm; best = sm; best_frac = mid; }
+            if (hi - lo <= 8 * eps<T>() * frac || abs(fm) <= 8 * eps<T>()) { best = sm; best_frac = mid; break; }
           }
+          frac = best_frac;
           st = best;
           if (event_value(ev, &st, dq, ds, frac) != 0) apply_event_limit(ev, st);
           commit(st, dq, ds, frac);
@@ -303,12 +348,15 @@ template <class T> class history {
   int noop_erase_ = 0;     // limit events located short of the limit in this segment
   size_t interior_merges_ = 0;  // interior slip patches merged with an edge zone (approximation)
   mutable int open_sign_ = 0;  // direction of the zone that event 7/8 opens
+  mutable size_t work_ = 0, work_budget_ = size_t(-1);  // residual evaluations in the current segment
 
   static int sgn(const T &v) { return (v > 0) - (v < 0); }
   static T r(int i, const T &dq, const T &ds, const T &e) { return i == 1 ? dq / 2 - ds * e / 4 : dq / 2 + ds * e / 4; }
 
   // A zero-load step that moves the ends outwards at once (part of a zone sticks).
   void jump(const T &b1n, const T &b2n) {
+    if (steps_.size() >= size_t(opt_.max_steps))
+      throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
     history_step<T> st;
     st.q0 = q_; st.s0 = s_; st.dq = 0; st.ds = 0;
     st.b1a = b1_; st.b2a = b2_;
@@ -383,7 +431,20 @@ template <class T> class history {
     // knots of the run: the starts of its previous steps (up to degree - 1 of them)
     std::vector<T> k1, k2, ku;
     const size_t have = steps_.size() - run_start_;
-    const int m = std::min<int>(opt_.degree, int(have) + 1);
+    int m = std::min<int>(opt_.degree, int(have) + 1);
+    // earlier knots only while they lie within 20 step lengths: a step much shorter
+    // than the ones before it (an event being located, a shrunken step) would make
+    // the interpolation ill-conditioned in u
+    {
+      T span = 0;
+      int keep = 1;
+      for (int j = 1; j <= m - 1; ++j) {
+        span += steps_[steps_.size() - j].len;
+        if (!(span <= 20 * frac)) break;
+        keep = j + 1;
+      }
+      m = keep;
+    }
     T back = 0;
     for (int j = 1; j <= m - 1; ++j) back += steps_[steps_.size() - j].len;
     for (int j = m - 1; j >= 1; --j) {
@@ -532,6 +593,40 @@ template <class T> class history {
     return sum * hw;
   }
 
+  // A step whose length is set by how far advancing end i moves: end i is held at
+  // bt and the fraction of the segment is the root in (0, frac_max] of its
+  // continuity residual (toms748 on a bracket). Where the end runs fast through
+  // a region whose traction is already close to the friction limit (the memory
+  // of an earlier zone of the same direction) the residual hardly depends on
+  // the end's position, so the usual step (fraction given, ends solved for)
+  // cannot converge, while the residual as a function of the load is regular.
+  bool end_driven_step(const T &dq, const T &ds, int i, const T &bt, const T &frac_max, history_step<T> &out) const {
+    using std::abs;
+    const int si = i == 1 ? s1_ : s2_;
+    auto G = [&](const T &w, history_step<T> *keep) -> T {
+      const history_step<T> st = take_step(dq, ds, w, i, bt);
+      if (keep) *keep = st;
+      return T(si) * residual_end(i, st);
+    };
+    try {
+      T lo = frac_max * T(1e-12), hi = frac_max;
+      T glo = G(lo, nullptr);
+      if (!(glo < 0)) return false;  // the end is already at the limit there: a jump, not a step
+      T ghi = G(hi, nullptr);
+      if (!(ghi > 0)) return false;  // the end does not reach bt within frac_max
+      std::uintmax_t it = 40;
+      auto tol = [](const T &a, const T &b) { return abs(b - a) <= 4 * eps<T>() * abs(b); };
+      auto r = boost::math::tools::toms748_solve([&](const T &w) { return G(w, nullptr); }, lo, hi, glo, ghi, tol, it);
+      if (it >= 40) return false;
+      const T w = r.second;  // the side past the root: s_i F >= 0
+      G(w, &out);
+      return true;
+    } catch (const error &err) {
+      if (err.code() != status::no_convergence) throw;
+      return false;
+    }
+  }
+
   bool try_step(const T &dq, const T &ds, const T &frac, history_step<T> &out) const {
     try {
       out = take_step(dq, ds, frac);
@@ -549,12 +644,14 @@ template <class T> class history {
     return stick_traction(x, steps_.size(), &st) - T(si) * pm_->p(x);
   }
 
-  history_step<T> take_step(const T &dq, const T &ds, const T &frac) const {
+  // One step to fraction `frac` of the segment. pin = 1 or 2 holds that advancing
+  // end at pin_b instead of solving for it (see end_driven_step).
+  history_step<T> take_step(const T &dq, const T &ds, const T &frac, int pin = 0, const T &pin_b = T(0)) const {
     using std::abs; using std::max; using std::min; using std::sqrt;
-    const bool a1 = m1_ == adv, a2 = m2_ == adv;
+    const bool a1 = m1_ == adv && pin != 1, a2 = m2_ == adv && pin != 2;
     auto ends = [&](const T &z1, const T &z2, T &b1n, T &b2n) {
-      b1n = a1 ? z1 : (m1_ == edge ? b1_ : T(0));
-      b2n = a2 ? z2 : (m2_ == edge ? b2_ : T(0));
+      b1n = pin == 1 ? pin_b : a1 ? z1 : (m1_ == edge ? b1_ : T(0));
+      b2n = pin == 2 ? pin_b : a2 ? z2 : (m2_ == edge ? b2_ : T(0));
       if (m1_ == rec) b1n = 2 * estar_ - b2n;
       if (m2_ == rec) b2n = 2 * estar_ - b1n;
     };
@@ -582,6 +679,8 @@ template <class T> class history {
     ends(z1, z2, b1n, b2n);
     if (n == 0) return make_step(dq, ds, frac, b1n, b2n);
     auto resid = [&](const T &y1, const T &y2, T &f1, T &f2, bool strict = true) -> bool {
+      if (++work_ > work_budget_)
+        throw error(status::no_convergence, "history: the march of a segment makes no progress (residual evaluations without end)");
       T c1, c2;
       ends(y1, y2, c1, c2);
       if (!strict && c1 + c2 > 0 && c1 < 1 + T(1e-3) && c2 < 1 + T(1e-3)) {
@@ -620,6 +719,7 @@ template <class T> class history {
     bool fresh = !reuse;
     if (reuse) { j11 = jac_.j[0]; j12 = jac_.j[1]; j21 = jac_.j[2]; j22 = jac_.j[3]; }
     T prev_fn = -1;
+    int stall = 0;
     for (int it = 0; it < opt_.max_newton; ++it) {
       const T fn = max(abs(f1), abs(f2));
       if (!fresh && prev_fn >= 0 && fn > prev_fn / 8) fresh = true;  // chord too slow: new Jacobian
@@ -681,11 +781,21 @@ template <class T> class history {
         throw error(status::no_convergence, "history: the stick-zone ends of a step did not converge");
       }
       const T dz = max(abs(z1 - n1), abs(z2 - n2));
+      // a residual that changes sign with little decrease has a kink at the root
+      // (the new end at an earlier end position, where the traction has a square-root
+      // cusp): the slope across the bracket replaces the one-sided slope (secant)
+      if (a1 && n1 != z1 && sgn(nf1) * sgn(f1) < 0 && abs(nf1) > abs(f1) / 8) { j11 = (f1 - nf1) / (z1 - n1); fresh = false; prev_fn = -1; }
+      if (a2 && n2 != z2 && sgn(nf2) * sgn(f2) < 0 && abs(nf2) > abs(f2) / 8) { j22 = (f2 - nf2) / (z2 - n2); fresh = false; prev_fn = -1; }
       z1 = n1; z2 = n2; f1 = nf1; f2 = nf2;
       // at the rounding floor: |F_i| within a few ulps of z_i times dF_i/dz_i
       const bool c1 = !a1 || abs(f1) <= 64 * eps<T>() * (1 + abs(j11 * z1));
       const bool c2 = !a2 || abs(f2) <= 64 * eps<T>() * (1 + abs(j22 * z2));
       if (dz <= 4 * eps<T>() * max(w0, T(1e-300)) || max(abs(f1), abs(f2)) <= tol || (c1 && c2)) break;
+      // stagnation (a residual flat in an end: the end against a region at the
+      // friction limit): give up early, the march reacts (add_vertex)
+      const T fnew = max(abs(f1), abs(f2));
+      stall = fnew > T(0.99) * fn ? stall + 1 : 0;
+      if (stall >= 8) throw error(status::no_convergence, "history: the stick-zone ends of a step stagnate");
       if (it + 1 == opt_.max_newton)
         throw error(status::no_convergence, "history: Newton iteration limit for a step reached");
     }
@@ -753,16 +863,39 @@ template <class T> class history {
     return worst;
   }
   // Jump end i inwards over the contiguous region next to it that is at the friction limit.
-  void erase_at_limit(int i) {
+  // near > 0: a step cannot converge because the region next to the end is within
+  // `near` of the limit (a degenerate Masing return): sweep the region within it.
+  bool erase_at_limit(int i, const T &near = T(0)) {
     using std::abs;
     const T b1 = b1_, b2 = b2_, L = b1 + b2;
     const int M = 8;
-    const T below = -limit_tol();  // inside the friction cone
+    const T below = near > 0 ? -near : -limit_tol();  // inside the friction cone
     auto xat = [&](const T &d) { return i == 1 ? b1 - d : -b2 + d; };
     T d_in = 0, d_out = -1;
-    if (!(limit_margin(i, nullptr) > limit_tol())) {  // located just short of the limit: nothing to do
+    if (near > 0) {
+      // only a region that starts at the end
+      const T d1 = L * T(1) / T(M * M) * T(0.75) / 64;
+      if (!(limit_ratio(i, xat(d1), nullptr) >= below)) return false;
+      d_in = d1;
+      T d = d1;
+      while (d < T(0.75) * L && limit_ratio(i, xat(2 * d), nullptr) >= below) { d *= 2; d_in = d; }
+      d_out = 2 * d;
+      for (int it = 0; it < 200 && d_out - d_in > 4 * eps<T>() * (1 + L); ++it) {
+        const T m = (d_in + d_out) / 2;
+        if (limit_ratio(i, xat(m), nullptr) >= below) d_in = m; else d_out = m;
+      }
+#ifdef HS_HISTORY_DEBUG2
+      fprintf(stderr, "near-limit erase end %d: b %.9f -> %.9f\n", i, double(i == 1 ? b1 : b2), double((i == 1 ? b1 : b2) - d_in));
+#endif
+      if (i == 1) jump(b1 - d_in, b2_); else jump(b1_, b2 - d_in);
+      return true;
+    }
+    if (!(limit_margin(i, nullptr) > limit_tol() / 2)) {  // located short of the limit: nothing to do
+#ifdef HS_HISTORY_DEBUG2
+      fprintf(stderr, "erase noop: margin %g\n", double(limit_margin(i, nullptr)));
+#endif
       ++noop_erase_;
-      return;
+      return false;
     }
     // the contiguous region at the limit next to the end; if the limit is reached
     // only further in (an interior slip patch), the band between is merged with
@@ -789,7 +922,7 @@ template <class T> class history {
     }
     if (d_in == 0) {
       ++noop_erase_;
-      return;
+      return false;
     }
     if (d_out < 0) throw error(status::no_convergence, "history: the whole stick zone reached the friction limit");
     for (int it = 0; it < 200 && d_out - d_in > 4 * eps<T>() * (1 + L); ++it) {
@@ -800,6 +933,7 @@ template <class T> class history {
     fprintf(stderr, "erase end %d at q=%g s=%g: b %.6f -> %.6f\n", i, double(q_), double(s_), double(i == 1 ? b1 : b2), double((i == 1 ? b1 : b2) - d_in));
 #endif
     if (i == 1) jump(b1 - d_in, b2_); else jump(b1_, b2 - d_in);
+    return true;
   }
   T event_value(int ev, const history_step<T> *st, const T &dq, const T &ds, const T &) const {
     const T b1 = st ? st->e1.bb : b1_, b2 = st ? st->e2.bb : b2_;
@@ -837,6 +971,9 @@ template <class T> class history {
     if (steps_.size() >= size_t(opt_.max_steps))
       throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
     step_energy(st);
+#ifdef HS_HISTORY_DEBUG2
+    fprintf(stderr, "commit q=%.6f s=%.6f frac=%.3e b %.12f %.12f s %d %d m %d %d\n", double(st.q0 + st.dq), double(st.s0 + st.ds), double(frac), double(st.e1.bb), double(st.e2.bb), s1_, s2_, int(m1_), int(m2_));
+#endif
     steps_.push_back(st);
     b1_ = st.e1.bb;
     b2_ = st.e2.bb;
@@ -884,7 +1021,7 @@ template <class T> class history {
     };
     std::vector<T> cuts{T(0), pi_};
     // grading towards the stick end
-    for (T w = e; w < d / 4; w *= 8) cuts.push_back(th_of(w));
+    for (T w = std::max(e, d * eps<T>()); w < d / 4; w *= 8) cuts.push_back(th_of(w));
     for (const auto &bp : pm_->breakpoints()) {
       if (bp.x > lo && bp.x < hi) cuts.push_back(th_of(z > 0 ? bp.x - lo : hi - bp.x));
     }

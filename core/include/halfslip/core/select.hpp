@@ -31,9 +31,11 @@
 //   (the a/d term is the conditioning of d = m - s/4 near the regime boundary)
 // * quadrature (general.hpp) at tolerance rt (0: full precision), with
 //   w = (b1 + b2)/a the stick-zone width:
-//     rel_d = 16 (eps + rt)(1 + a/d_min + 1/w),  rel_E = 3 rel_d.
+//     rel_d = 16 (eps + rt)(1 + a/d_min + 1/max(w, sqrt(1 - |q|)/4)),  rel_E = 3 rel_d.
 //   The 1/w term is the conditioning near sliding (w -> 0): at 1 - Q/fP = 1e-8
-//   (w = 2e-4) the error in d is 1.2e-12 (tests/test_select.cpp).
+//   (w = 2e-4) the error in d is 1.2e-12 (tests/test_select.cpp). A stick zone
+//   made narrow by a large sigma (w ~ exp(-c s)) is not ill conditioned: the
+//   zone sits at the sliding stick point, fixed by q alone (issue 13).
 //   Measured against long double: at rt = 0 at most 1.3 eps (1 + a/d_min) in
 //   d and 4.1 eps (1 + a/d_min) in E; at rt > 0 far below rt (the order
 //   doubles past the tolerance).
@@ -111,11 +113,18 @@ template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &
 }
 
 template <class T>
-error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, const T &width) {
+error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, const T &width, const T &q) {
   error_estimate<T> e;
   const T dm = smallest_zone(d1, d2);
   if (!(dm > 0)) return e;
-  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / width);
+  // conditioning near sliding: the stick zone is narrow because q -> 1 (then
+  // width ~ 2 sqrt(1 - q)), not when large sigma shrinks it onto the sliding
+  // stick point, where d1, d2 are well conditioned (issue 13: at sigma/fp0 =
+  // 50, width 7e-12 gave an estimate of 1.4e-3 for a result good to 1e-15)
+  using std::abs; using std::max; using std::sqrt;
+  // (/4: margin for pressures whose shear-only stick zone is narrower than Hertz's)
+  const T wc = max(width, T(sqrt(T(abs(1 - abs(q)))) / 4));
+  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / wc);
   e.energy = 3 * e.slip_zone;
   return e;
 }
