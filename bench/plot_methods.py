@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Charts of bench_methods (issue #5), standard library only (SVG by hand;
-matplotlib is not installed on the project machine).
+"""Charts of bench_methods (issue #5), drawn by halfslip.plot (matplotlib;
+scripts/bench.sh runs it with Debian's python3):
 
   speed_accuracy.svg  error vs median time per solve, log-log, one marker per
                       method and geometry: time = median over the scenes of the
@@ -13,61 +13,18 @@ matplotlib is not installed on the project machine).
 usage: plot_methods.py methods.csv stability.csv reference.csv out_dir
 """
 import csv
-import math
 import os
 import statistics
 import sys
 
-COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf", "#e377c2",
-          "#7f7f7f", "#bcbd22", "#393b79", "#637939", "#843c39", "#7b4173", "#3182bd", "#31a354"]
+import matplotlib
 
+matplotlib.use("Agg")
+matplotlib.rcParams["svg.hashsalt"] = "halfslip"
+import halfslip.plot as hp  # noqa: E402
 
-class Axes:
-    """log-log axes in a box (x0, y0, w, h) of an SVG list."""
-
-    def __init__(self, s, box, xr, yr, title, xlabel, ylabel):
-        self.s, (self.x0, self.y0, self.w, self.h) = s, box
-        self.lx = (math.log10(xr[0]), math.log10(xr[1]))
-        self.ly = (math.log10(yr[0]), math.log10(yr[1]))
-        x0, y0, w, h = box
-        s.append(f'<text x="{x0 + 4}" y="{y0 - 8}" font-size="13">{title}</text>')
-        step_x = max(1, round((self.lx[1] - self.lx[0]) / 8))
-        step_y = max(1, round((self.ly[1] - self.ly[0]) / 8))
-        for k in range(math.ceil(self.lx[0]), math.floor(self.lx[1]) + 1):
-            if k % step_x:
-                continue
-            x = self.X(10.0 ** k)
-            s.append(f'<line x1="{x:.1f}" y1="{y0}" x2="{x:.1f}" y2="{y0 + h}" stroke="#ddd"/>')
-            s.append(f'<text x="{x - 12:.1f}" y="{y0 + h + 15}" font-size="10">1e{k}</text>')
-        for k in range(math.ceil(self.ly[0]), math.floor(self.ly[1]) + 1):
-            if k % step_y:
-                continue
-            y = self.Y(10.0 ** k)
-            s.append(f'<line x1="{x0}" y1="{y:.1f}" x2="{x0 + w}" y2="{y:.1f}" stroke="#ddd"/>')
-            s.append(f'<text x="{x0 - 36}" y="{y + 4:.1f}" font-size="10">1e{k}</text>')
-        s.append(f'<rect x="{x0}" y="{y0}" width="{w}" height="{h}" fill="none" stroke="black"/>')
-        s.append(f'<text x="{x0 + w / 2 - 4 * len(xlabel) / 1.6:.0f}" y="{y0 + h + 32}" font-size="11">{xlabel}</text>')
-        s.append(f'<text transform="translate({x0 - 44},{y0 + h / 2 + 3 * len(ylabel)}) rotate(-90)" '
-                 f'font-size="11">{ylabel}</text>')
-
-    def X(self, v):
-        return self.x0 + (math.log10(v) - self.lx[0]) / (self.lx[1] - self.lx[0]) * self.w
-
-    def Y(self, v):
-        v = min(max(v, 10 ** self.ly[0]), 10 ** self.ly[1])
-        return self.y0 + self.h - (math.log10(v) - self.ly[0]) / (self.ly[1] - self.ly[0]) * self.h
-
-
-def marker(s, shape, x, y, c, hollow=False):
-    fill = "none" if hollow else c
-    if shape == "circle":
-        s.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="5" fill="{fill}" stroke="{c}" stroke-width="1.5"/>')
-    elif shape == "square":
-        s.append(f'<rect x="{x - 5:.1f}" y="{y - 5:.1f}" width="10" height="10" fill="{fill}" stroke="{c}" '
-                 f'stroke-width="1.5"/>')
-    else:  # diamond
-        s.append(f'<path d="M{x:.1f},{y - 6:.1f} L{x + 6:.1f},{y:.1f} L{x:.1f},{y + 6:.1f} L{x - 6:.1f},{y:.1f} Z" '
-                 f'fill="{fill}" stroke="{c}" stroke-width="1.5"/>')
+# 20 distinct colours (tab20: the dark shades first, then the light ones)
+COLORS = [matplotlib.colormaps["tab20"](i) for i in list(range(0, 20, 2)) + list(range(1, 20, 2))]
 
 
 def speed_accuracy(methods_csv, reference_csv, out):
@@ -97,38 +54,36 @@ def speed_accuracy(methods_csv, reference_csv, out):
                 d = int(r["digits"])
                 pts.append((f'{r["method"]} (nominal)', "hertz", float(r["median_ms"]) * 1e6,
                             10.0 ** -d, 0, True, f"{d}d"))
-    W, H = 1000, 620
-    s = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="12">',
-         f'<rect width="{W}" height="{H}" fill="white"/>']
-    tmin = 10 ** math.floor(math.log10(min(p[2] for p in pts)))
-    tmax = 10 ** math.ceil(math.log10(max(p[2] for p in pts)))
-    ax = Axes(s, (70, 40, 560, 500), (tmin, tmax), (FLOOR, TOP),
-              "Speed vs accuracy: Hertz (circles), flat punch b_f/a = 0.5 (diamonds)",
-              "median time per solve [ns]", f"largest rel. error of d1, d2 (clipped at {FLOOR:g})")
     labels = []
     for p in pts:
         if p[0] not in labels:
             labels.append(p[0])
+    series = []
+    for li, m in enumerate(labels):
+        for g, mk in (("hertz", "o"), ("flat-rounded", "D")):
+            sel = [p for p in pts if p[0] == m and (p[1] == g or (g == "flat-rounded" and p[1] != "hertz"))]
+            if sel:
+                series.append({"x": [p[2] for p in sel], "y": [max(p[3], FLOOR) for p in sel], "marker": mk,
+                               "style": "hollow" if sel[0][5] else "marker", "color": COLORS[li % len(COLORS)],
+                               "label": m if g == "hertz" or not any(p[0] == m and p[1] == "hertz" for p in pts)
+                               else None})
+    ax = hp.chart(series, title="Speed vs accuracy: Hertz (circles), flat punch b_f/a = 0.5 (diamonds)",
+                  xlabel="median time per solve [ns]", ylabel=f"largest rel. error of d1, d2 (clipped at {FLOOR:g})",
+                  logx=True, logy=True, legend="center left", size=(11, 6.2))
+    ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize="x-small")
     for (m, g, t, e, fails, hollow, note) in pts:
         c = COLORS[labels.index(m) % len(COLORS)]
-        x, y = ax.X(t), ax.Y(max(e, FLOOR))
-        marker(s, "circle" if g == "hertz" else "diamond", x, y, c, hollow)
+        y = max(e, FLOOR)
         if e < FLOOR:
-            s.append(f'<text x="{x - 4:.1f}" y="{y + 16:.1f}" fill="{c}" font-size="11">&#8595;</text>')
+            ax.annotate("↓", (t, y), textcoords="offset points", xytext=(-3, -14), color=c, fontsize=9)
         if note:
-            s.append(f'<text x="{x - 8:.1f}" y="{y - 9:.1f}" fill="{c}" font-size="10">{note}</text>')
+            ax.annotate(note, (t, y), textcoords="offset points", xytext=(-8, 7), color=c, fontsize=8)
         if fails:
-            s.append(f'<text x="{x + 7:.1f}" y="{y - 6:.1f}" fill="{c}" font-size="10">{fails} fail</text>')
-    for i, m in enumerate(labels):
-        c = COLORS[i % len(COLORS)]
-        ly = 50 + 19 * i
-        hollow = "nominal" in m
-        marker(s, "circle", 660, ly, c, hollow)
-        s.append(f'<text x="672" y="{ly + 4}" font-size="11">{m}</text>')
-    s.append(f'<text x="660" y="{50 + 19 * len(labels) + 14}" font-size="10">&#8595;: error below the axis floor; '
-             f'hollow: mpmath, nominal error</text>')
-    s.append("</svg>")
-    open(out, "w").write("\n".join(s) + "\n")
+            ax.annotate(f"{fails} fail", (t, y), textcoords="offset points", xytext=(6, 4), color=c, fontsize=8)
+    ax.set_ylim(FLOOR / 10, TOP * 10)
+    ax.text(0.0, -0.13, "↓: error below the axis floor; hollow: mpmath, nominal error", transform=ax.transAxes,
+            fontsize=8)
+    hp.save(ax, out)
     print(f"chart written to {out}")
 
 
@@ -148,19 +103,15 @@ def stability(stab_csv, out):
     for r in rows:
         if r["method"] not in methods:
             methods.append(r["method"])
-    W, H = 1060, 760
-    s = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" font-family="sans-serif" font-size="12">',
-         f'<rect width="{W}" height="{H}" fill="white"/>']
+    import matplotlib.pyplot as plt
+    fig, axs = plt.subplots(2, 2, figsize=(12, 8.6), layout="constrained")
     for pi, (sweep, title, xl) in enumerate(PANELS):
+        ax = axs[pi // 2][pi % 2]
         rs = [r for r in rows if r["sweep"] == sweep]
-        if not rs:
-            continue
-        xs = [abs(float(r["param"])) for r in rs]
-        xr = (10 ** math.floor(math.log10(min(xs))), 10 ** math.ceil(math.log10(max(xs))))
-        box = (70 + 420 * (pi % 2), 50 + 350 * (pi // 2), 360, 260)
-        ax = Axes(s, box, xr, (FLOOR, TOP), title, xl, "rel. error of d1, d2")
+        series = []
+        fails = []
         for mi, m in enumerate(methods):
-            c = COLORS[mi % len(COLORS)]
+            c = "C%d" % (mi % 10)
             for side in ((-1, 1) if sweep == "regime_boundary" else (0,)):
                 pts = []
                 for r in rs:
@@ -170,27 +121,23 @@ def stability(stab_csv, out):
                     if side and (v > 0) != (side > 0):
                         continue
                     e = TOP if r["error"] == "fail" else max(float(r["error"]), FLOOR)
-                    pts.append((ax.X(abs(v)), ax.Y(e), r["error"] == "fail"))
+                    pts.append((abs(v), e, r["error"] == "fail"))
                 pts.sort()
                 if pts:
-                    dash = ' stroke-dasharray="5,3"' if side < 0 else ""
-                    path = " ".join(f"{x:.1f},{y:.1f}" for x, y, _ in pts)
-                    s.append(f'<polyline points="{path}" fill="none" stroke="{c}" stroke-width="1.6"{dash}/>')
-                    for x, y, failed in pts:
-                        if failed:
-                            s.append(f'<text x="{x - 4:.1f}" y="{y + 4:.1f}" fill="{c}" font-size="11">x</text>')
-                        else:
-                            s.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="2.5" fill="{c}"/>')
-    for mi, m in enumerate(methods):
-        c = COLORS[mi % len(COLORS)]
-        x = 70 + 230 * mi
-        s.append(f'<line x1="{x}" y1="20" x2="{x + 24}" y2="20" stroke="{c}" stroke-width="2"/>'
-                 f'<text x="{x + 30}" y="24">{m}</text>')
-    s.append(f'<text x="70" y="{H - 8}" font-size="10">Truth: MPFR reference at 40 digits. '
-             f'Errors below {FLOOR:g} are drawn at {FLOOR:g}; x at the top: the solve failed; '
-             f'no point: the 40-digit reference failed too.</text>')
-    s.append("</svg>")
-    open(out, "w").write("\n".join(s) + "\n")
+                    series.append({"x": [p[0] for p in pts], "y": [p[1] for p in pts], "color": c, "marker": ".",
+                                   "ls": "--" if side < 0 else "-", "label": m if pi == 0 and side >= 0 else None})
+                    fails += [(p[0], p[1], c) for p in pts if p[2]]
+        if not series:
+            ax.set_visible(False)
+            continue
+        hp.chart(series, ax=ax, title=title, xlabel=xl, ylabel="rel. error of d1, d2", logx=True, logy=True,
+                 legend="upper left" if pi == 0 else None)
+        for x, y, c in fails:
+            ax.plot([x], [y], "x", color=c, ms=7)
+        ax.set_ylim(FLOOR / 3, TOP * 3)
+    fig.text(0.01, 0.003, f"Truth: MPFR reference at 40 digits. Errors below {FLOOR:g} are drawn at {FLOOR:g}; "
+             "x at the top: the solve failed; no point: the 40-digit reference failed too.", fontsize=8)
+    hp.save(fig, out)
     print(f"chart written to {out}")
 
 

@@ -6,16 +6,22 @@
 #   bench/results/asymptotic_sweep.csv  asymptotic model vs full solution (estimate check)
 #   bench/results/methods.csv, stability.csv  every model: speed, accuracy, stability (issue 5);
 #     charts docs/figures/speed_accuracy.svg, docs/figures/stability.svg (docs/benchmarks.md)
+#   bench/results/fields.csv, fields_accuracy.csv  stresses (issue 15; Google Benchmark)
+# The charts are drawn by halfslip.plot (matplotlib): Debian's /usr/bin/python3 with
+# python3-matplotlib (HS_PYTHON overrides it).
 set -euo pipefail
 export HS_BENCH=ON
+export HS_EXTRA_PACKAGES="libbenchmark-dev python3-matplotlib"
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 mkdir -p "$HS_ROOT/bench/results"
 "$HS_BUILD/bench/bench_hertz" "$HS_ROOT/bench/results/hertz.csv"
-python3 "$HS_ROOT/bench/plot.py" "$HS_ROOT/bench/results/hertz.csv" "$HS_ROOT/docs/bench_hertz.svg"
+py="${HS_PYTHON:-/usr/bin/python3}"
+plot() { HALFSLIP_LIBRARY="$HS_BUILD/libhalfslip.so" PYTHONPATH="$HS_ROOT/bindings/python" PYTHONDONTWRITEBYTECODE=1 "$py" "$@"; }
+plot "$HS_ROOT/bench/plot.py" "$HS_ROOT/bench/results/hertz.csv" "$HS_ROOT/docs/bench_hertz.svg"
 "$HS_BUILD/bench/bench_reference" "$HS_ROOT/bench/results/reference.csv"
 python3 "$HS_ROOT/bench/mpmath_hertz.py" "$HS_ROOT/bench/results/reference.csv"
 "$HS_BUILD/bench/bench_methods" "$HS_ROOT/bench/results/methods.csv" "$HS_ROOT/bench/results/stability.csv"
-python3 "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$HS_ROOT/bench/results/stability.csv" \
+plot "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$HS_ROOT/bench/results/stability.csv" \
   "$HS_ROOT/bench/results/reference.csv" "$HS_ROOT/docs/figures"
 # the sweep behind the asymptotic model's error estimate (core/select.hpp, docs/models.md)
 "$HS_BUILD/bench/asymptotic_sweep" "$HS_ROOT/bench/results/asymptotic_sweep.csv" 200
@@ -23,3 +29,9 @@ python3 "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$
 "$HS_BUILD/bench/bench_history" "$HS_ROOT/bench/results/history.csv" | tee "$HS_ROOT/bench/results/history_summary.md"
 # point evaluations and energies on the general path
 "$HS_BUILD/bench/bench_points" | tee "$HS_ROOT/bench/results/points.txt"
+# stresses (issue 15): surface and subsurface speed (Google Benchmark), accuracy vs quadrature from scratch
+if [ -x "$HS_BUILD/bench/bench_fields" ]; then
+  "$HS_BUILD/bench/bench_fields" "$HS_ROOT/bench/results/fields_accuracy.csv" --benchmark_repetitions=5 \
+    --benchmark_report_aggregates_only=true --benchmark_out="$HS_ROOT/bench/results/fields.csv" \
+    --benchmark_out_format=csv
+fi

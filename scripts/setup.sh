@@ -6,6 +6,9 @@ HS_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 HS_BUILD="${HS_BUILD:-$HS_ROOT/build}"
 
 hs_packages=(cmake make g++ gfortran pkg-config python3 libboost-dev libmpfr-dev libgmp-dev libeigen3-dev libgsl-dev doctest-dev)
+# scripts that need more (bench.sh, pictures.sh, figures.sh) name it in HS_EXTRA_PACKAGES
+read -r -a hs_extra <<< "${HS_EXTRA_PACKAGES:-}"
+hs_packages+=("${hs_extra[@]}")
 
 hs_install_missing() {
   local missing=()

@@ -158,5 +158,68 @@ out=$("$cli" solve --P 1000 --R 0.05 --E-star 1.15e11 --f 0.6 --Q 300 --sigma 2e
 err=$("$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --digits 15 --no-energy --progress 2>&1 >/dev/null); echo "$err" | grep -q "1/1 rows" && ok || ko "table --progress: $err"
 err=$("$cli" table --Q-over-fP 0.1 --sigma-over-fp0 0 --digits 15 --no-energy 2>&1 >/dev/null </dev/null); [ -z "$err" ] && ok || ko "no progress when stderr is not a terminal: $err"
 
+# issue 15: surface stresses in the JSON, --pad-bulk, --fields
+# Hertz, same sign, sigma = 0: the peak is 2 f p0 sqrt(Q/fP) at the trailing edge x = -a (docs/fields.md)
+js=$("$cli" solve --Q-over-fP 0.36 --sigma-over-fp0 0 --json) && echo "$js" | python3 -c '
+import json, sys
+d = json.load(sys.stdin)["surface_stress"]
+b1, b2 = d["body1"], d["body2"]
+assert abs(b1["max"] - 1.2) < 1e-13 and b1["x_max"] == -1.0, b1
+# body 2 mirrors body 1 (sigma_xx = -p + H in body 2, -p - H in body 1): its peak is at x = +a
+assert abs(b2["max"] - 1.2) < 1e-13 and b2["x_max"] == 1.0 and b1["bulk"] == 0 and b2["bulk"] == 0, b2
+assert b1["min"] < -1 and b2["min"] < -1, d' && ok || ko "surface_stress JSON (Hertz peak 2 sqrt(Q/fP))"
+# the pad carries 0.25, the specimen sigma + 0.25 = 0.75
+js=$("$cli" solve --Q-over-fP 0.36 --sigma-over-fp0 0.5 --pad-bulk 0.25 --json) && echo "$js" | python3 -c '
+import json, sys
+d = json.load(sys.stdin)["surface_stress"]
+assert d["body1"]["bulk"] == 0.75 and d["body2"]["bulk"] == 0.25, d
+assert d["body1"]["max"] > 0.75' && ok || ko "--pad-bulk splits sigma"
+out=$("$cli" solve --Q-over-fP 0.36 --sigma-over-fp0 0) && echo "$out" | grep -qi "surface" && ok || ko "report shows the surface stress peaks"
+dir=$(mktemp -d)
+# stuck: McEwen on the axis, sigma_xx = -((1 + 2z^2)/sqrt(1 + z^2) - 2z), sigma_yy = -1/sqrt(1 + z^2)
+"$cli" solve --Q-over-fP 0 --sigma-over-fp0 0 --fields "$dir/f.csv" --nu 0.25 >/dev/null && python3 -c '
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 2 * 81 * 41, len(rows)
+assert list(rows[0].keys()) == "body x y sxx syy sxy max_principal max_shear von_mises".split(), rows[0].keys()
+n = 0
+for r in rows:
+    x, y = float(r["x"]), float(r["y"])
+    sxx, syy, sxy = float(r["sxx"]), float(r["syy"]), float(r["sxy"])
+    assert (y >= 0) == (r["body"] == "1") or y == 0, r
+    if x == 0 and y != 0:
+        z = abs(y)
+        assert abs(sxx + (1 + 2 * z * z) / math.sqrt(1 + z * z) - 2 * z) < 1e-13, r
+        assert abs(syy + 1 / math.sqrt(1 + z * z)) < 1e-13 and abs(sxy) < 1e-13, r
+        n += 1
+    szz = 0.25 * (sxx + syy)
+    vm = math.sqrt(((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) / 2 + 3 * sxy * sxy)
+    assert abs(float(r["von_mises"]) - vm) < 1e-13 * (1 + vm), r
+    assert abs(float(r["max_shear"]) - math.hypot((sxx - syy) / 2, sxy)) < 1e-13, r
+assert n == 80, n' "$dir/f.csv" && ok || ko "--fields CSV (McEwen on the axis, scalars)"
+# --fields-at: a point list (header, comments, commas or spaces); y < 0 is the pad
+printf 'x y\n0 0.5   # below the centre\n0,-0.5\n0.25 1e-6\n' > "$dir/pts.txt"
+"$cli" solve --Q-over-fP 0 --sigma-over-fp0 0 --fields "$dir/p.csv" --fields-at "$dir/pts.txt" >/dev/null && python3 -c '
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert [(r["body"], float(r["x"]), float(r["y"])) for r in rows] == [("1", 0, 0.5), ("2", 0, -0.5), ("1", 0.25, 1e-6)], rows
+for r in rows[:2]:
+    assert abs(float(r["syy"]) + 1 / math.sqrt(1.25)) < 1e-13 and abs(float(r["sxx"]) + 1.5 / math.sqrt(1.25) - 1) < 1e-13, r
+assert abs(float(rows[2]["syy"]) + math.sqrt(1 - 0.0625)) < 1e-5, rows[2]' "$dir/p.csv" && ok || ko "--fields-at point list"
+printf '0 0.5\n0.1 abc\n' > "$dir/bad.txt"
+err=$("$cli" solve --fields "$dir/q.csv" --fields-at "$dir/bad.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q "line 2: y 'abc' is not a number" && ok || ko "--fields-at bad line: $err"
+err=$("$cli" solve --fields-at "$dir/pts.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "--fields-at needs --fields" && ok || ko "--fields-at without --fields: $err"
+# the flat punch grid (6,642 points) is quick now (it took 1.7 s before the cached panels)
+"$cli" solve --geometry flat-rounded --Q-over-fP 0.4 --sigma-over-fp0 2 --fields "$dir/g.csv" >/dev/null && [ "$(wc -l < "$dir/g.csv")" -eq 6643 ] && ok || ko "--fields flat punch"
+err=$("$cli" solve --fields /nonexistent/dir/f.csv 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && echo "$err" | grep -q "/nonexistent/dir/f.csv" && ok || ko "--fields unwritable: $err"
+err=$("$cli" solve --fields "$dir/h.csv" --nu 0.7 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "--nu 0.7" && ok || ko "--nu 0.7 rejected, named: $err"
+err=$("$cli" solve --pad-bulk nan 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "--pad-bulk" && ok || ko "--pad-bulk nan rejected, named: $err"
+rm -rf "$dir"
+
 echo "cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -193,6 +193,12 @@ TEST_CASE("fields: surface limit, equilibrium at depth and far field (Hertz oppo
   const double Ph = M_PI * sc.a * sc.p0 / 2, Pg = M_PI * gs.a * gs.p0 / 2;
   run(hertz_state(hs_), Ph, sc.q * sc.f * Ph, sc.p0);
   run(general_state_of(gsol), Pg, gs.q * gs.f * Pg, gs.p0);
+  auto gp = general_state_of(gsol);  // the same through the cached panels
+  gp.panels = make_panels(gp);
+  run(gp, Pg, gs.q * gs.f * Pg, gs.p0);
+  auto hp = hertz_state(hs_);
+  hp.panels = make_panels(hp);
+  run(hp, Ph, sc.q * sc.f * Ph, sc.p0);
 }
 
 TEST_CASE("fields: in the stick zone both bodies have the same surface sigma_xx; bulk split") {
@@ -224,4 +230,153 @@ TEST_CASE("fields: Hertz same-sign trailing-edge peak, sigma_xx(-a) = 2 f p0 sqr
     CHECK(std::fabs(e.max - expect) <= 16 * hs_test::eps<double>() * sc.p0);
     CHECK(e.x_max == -sc.a);
   }
+}
+
+// ---- cached panels (field_panels.hpp): the fast path of the C ABI ----------------------
+
+TEST_CASE("panels: Hertz closed forms = cached panels, at y = 1e-6 a, at the edges, the stick boundaries and "
+          "the middle of each piece") {
+  for (double s : {0.0, 0.3, -0.2}) {
+    hertz_scene<double> sc;
+    sc.q = 0.5; sc.s = s; sc.a = 1.2; sc.p0 = 1.5; sc.f = 0.5;
+    const auto sol = solve_hertz(sc);
+    REQUIRE(sol.reg == regime::same_sign);
+    const auto cl = hertz_state(sol);
+    auto nu = make_state<double>(sol);  // no closed forms: the panels
+    nu.panels = make_panels(nu);
+    const double b1 = sol.b1(), b2 = sol.b2();
+    std::vector<double> xs{-3.0, -1.2, -1.19999, -1.0, -0.3, 0.0, 0.7, 1.19, 1.2, 1.2000001, 2.0,
+                           b1, -b2, (b1 - b2) / 2, (b1 + 1.2) / 2, (-b2 - 1.2) / 2, b1 + 1e-7, -b2 - 1e-7};
+    double worst = 0;
+    for (int body : {1, 2})
+      for (double x : xs)
+        for (double z : {1e-6, 1e-5, 1e-3, 0.1, 1.0, 5.0}) {
+          const auto A = stress_at(cl, body, x, z), B = stress_at(nu, body, x, z);
+          worst = std::max({worst, std::fabs(A.xx - B.xx), std::fabs(A.yy - B.yy), std::fabs(A.xy - B.xy)});
+        }
+    CAPTURE(s);
+    // measured 5e-12 p0 (at y = 1e-6 a); the issue asks 1e-10 of the peak
+    CHECK(worst <= 2e-11 * sc.p0);
+    // the surface: principal value from the panels against the closed forms, on and off the contact
+    nu.hilbert_fast = false;
+    nu.stick_lo = nu.stick_hi = 0;  // the panels on the stick zone too
+    double ws = 0;
+    for (int i = 0; i <= 1000; ++i) {
+      const double x = -2.5 + 5.0 * i / 1000 + 1e-9;
+      for (int body : {1, 2}) ws = std::max(ws, std::fabs(surface_sxx(cl, body, x) - surface_sxx(nu, body, x)));
+    }
+    // a piece's middle and one ulp off it (the two halves must treat the pole alike)
+    for (double x : {(b1 - b2) / 2, std::nextafter((b1 - b2) / 2, 9.0), (b1 + 1.2) / 2, 0.0})
+      ws = std::max(ws, std::fabs(surface_sxx(cl, 1, x) - surface_sxx(nu, 1, x)));
+    CHECK(ws <= 1e-11 * sc.p0);  // measured 2e-12 p0
+    // 1e-12 a from a stick boundary sigma_xx varies like sqrt(x - b1): one ulp of x changes it by
+    // eps a f p0 / sqrt((x - b1) a) = 2e-10 f p0 (measured 1.8e-11 p0)
+    const double xb = b1 + 1e-12;
+    CHECK(std::fabs(surface_sxx(cl, 1, xb) - surface_sxx(nu, 1, xb)) <= hs_test::eps<double>() * 1e6 * sc.f * sc.p0);
+  }
+}
+
+TEST_CASE("panels: flat punch and Hertz opposite sign against quadrature from scratch and the solver's B_x") {
+  // quadrature from scratch (cauchy_numeric: graded panels around each point and towards the kinks, q from
+  // traction.hpp at every node) is accurate away from the surface; on the contact the surface stress from
+  // the panels' principal value is checked against -p -+ (E* B_x + sigma/2) from the solver
+  auto run = [](contact_state<double> st, double scale) {
+    auto slow = st;
+    st.panels = make_panels(st);
+    double worst = 0;
+    for (int body : {1, 2})
+      for (double u : {-3.0, -1.0, -0.999, -0.5, -0.3, 0.0, 0.25, 0.5, 0.71, 0.99, 1.0001, 2.0})
+        for (double z : {1e-3, 0.1, 1.0}) {
+          const double x = u * st.a;
+          const auto A = stress_at(st, body, x, z * st.a), B = stress_at(slow, body, x, z * st.a);
+          worst = std::max({worst, std::fabs(A.xx - B.xx), std::fabs(A.yy - B.yy), std::fabs(A.xy - B.xy)});
+        }
+    CHECK(worst <= 1024 * hs_test::eps<double>() * scale);  // measured 2.4e-14 (2e-11 before the slow path graded its kinks)
+    st.hilbert_fast = false;
+    st.stick_lo = st.stick_hi = 0;
+    double ws = 0;
+    for (int body : {1, 2})
+      for (int i = 0; i <= 300; ++i) {
+        const double x = st.a * (-0.999 + 1.998 * i / 300 + 1e-7);
+        ws = std::max(ws, std::fabs(surface_sxx(st, body, x) - surface_sxx(slow, body, x)));
+      }
+    CHECK(ws <= 1024 * hs_test::eps<double>() * scale);  // measured 7.9e-14
+  };
+  flat_rounded_pressure<double> pm(0.5);
+  for (double s : {0.1, 2.0}) {
+    general_scene<double> sc;
+    sc.q = 0.5; sc.s = s;
+    const auto sol = solve_general<double>(pm, sc);
+    CAPTURE(s);
+    run(general_state_of(sol), sc.p0);
+  }
+  hertz_scene<double> hc;
+  hc.q = 0.5; hc.s = 2.0; hc.a = 1.2; hc.p0 = 1.5; hc.f = 0.5;
+  const auto hsol = solve_hertz(hc);
+  REQUIRE(hsol.reg == regime::opposite_sign);
+  auto st = hertz_state(hsol);
+  REQUIRE(needs_panels(st));
+  run(st, hc.p0);
+}
+
+TEST_CASE("panels: surface limit at the contact edges, the stick boundaries and the kinks, y = 1e-9 a (flat punch)") {
+  // the subsurface field tends to the surface values: sigma_yy -> -p, sigma_xy -> -q
+  flat_rounded_pressure<double> pm(0.5);
+  general_scene<double> sc;
+  sc.q = 0.5; sc.s = 0.1;
+  const auto sol = solve_general<double>(pm, sc);
+  auto st = general_state_of(sol);
+  st.panels = make_panels(st);
+  const double y = 1e-9;
+  for (double x : {-0.9999, -0.5001, -0.2, 0.3, 0.4999, sol.b1() + 1e-6, sol.b1() - 1e-6, 0.9999}) {
+    const auto s = stress_at(st, 1, x, y);
+    // the smoothing of a square root sqrt(|x - b|) at depth y differs from it by about y/sqrt(|x - b|)
+    // (b: the nearest edge or stick boundary); 4 y / sqrt(|x - b| a) p0 bounds it (measured up to 2.0)
+    double dist = 1 - std::fabs(x);
+    for (double b : {sol.b1(), -sol.b2(), 0.5, -0.5}) dist = std::min(dist, std::fabs(x - b));  // (and the kinks)
+    const double tol = 4 * y / std::sqrt(dist) * sc.p0 + 1e-11 * sc.p0;
+    CAPTURE(x);
+    CHECK(std::fabs(s.yy + sol.pressure(x)) < tol);
+    CHECK(std::fabs(s.xy + sol.traction(x)) < tol);
+    CHECK(std::fabs(s.xx - surface_sxx(st, 1, x)) < tol);
+  }
+}
+
+TEST_CASE("panels: q on the stick zone as a Chebyshev series in theta (flat punch, Hertz opposite sign)") {
+  // q is analytic on the stick zone, kinks of p included, with square roots at both ends
+  auto check = [](const contact_state<double> &st, double fp0) {
+    stick_series<double> ser(st.q, st.stick_lo, st.stick_hi);
+    REQUIRE(ser.ok());
+    double worst = 0;
+    const double lo = st.stick_lo, hi = st.stick_hi;
+    for (int i = 1; i < 200; ++i) {
+      const double x = lo + (hi - lo) * i / 200;
+      worst = std::max(worst, std::fabs(ser(x) - st.q(x)));
+    }
+    for (double d : {1e-12, 1e-8, 1e-4}) {
+      worst = std::max(worst, std::fabs(ser(lo + d) - st.q(lo + d)));
+      worst = std::max(worst, std::fabs(ser(hi - d) - st.q(hi - d)));
+    }
+    CHECK(worst <= 64 * hs_test::eps<double>() * fp0);  // measured 4e-15
+  };
+  flat_rounded_pressure<double> pm(0.5);
+  for (double s : {0.1, 2.0}) {
+    general_scene<double> sc;
+    sc.q = 0.5; sc.s = s;
+    const auto sol = solve_general<double>(pm, sc);
+    CAPTURE(s);
+    check(general_state_of(sol), sc.f * sc.p0);
+  }
+  hertz_scene<double> hc;
+  hc.q = 0.5; hc.s = 2.0;
+  const auto hsol = solve_hertz(hc);
+  check(make_state<double>(hsol), hc.f * hc.p0);
+  // a tiny slip zone puts a singularity next to the real theta axis: no series (q is used directly)
+  hertz_scene<double> tc;
+  tc.q = 1e-4; tc.s = 0.0;  // d1 = d2 = 5e-5 a
+  const auto tsol = solve_hertz(tc);
+  const auto tst = make_state<double>(tsol);
+  stick_series<double> tser(tst.q, tst.stick_lo, tst.stick_hi);
+  CAPTURE(tsol.d1()); CAPTURE(tsol.d2());
+  CHECK(!tser.ok());
 }

@@ -50,7 +50,11 @@ const char *kUsage =
     "                          (default 0). Surface stress peaks are in the report and the JSON\n"
     "  --fields FILE           write the stresses of both bodies on a grid |x| <= 2a, |y| <= 2a\n"
     "                          (and the surface, y = 0) as CSV: body,x,y,sxx,syy,sxy,max_principal,\n"
-    "                          max_shear,von_mises (plane strain, nu = 0.3)\n"
+    "                          max_shear,von_mises (plane strain)\n"
+    "  --nu V                  Poisson's ratio for von Mises in --fields (default 0.3)\n"
+    "  --fields-at PTS         with --fields: the points of file PTS instead of the grid, one\n"
+    "                          'x y' per line (whitespace or a comma; '#' comments; a header line);\n"
+    "                          y >= 0 is body 1 (specimen), y < 0 body 2 (pad)\n"
     "  --no-energy             skip the zone energies (the slow part with --digits; null in JSON)\n"
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
@@ -265,7 +269,7 @@ const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sig
                                              "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
                                              "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
                                              "--rtol", "--model", "--A",
-                                             "--pad-bulk", "--fields"};  // issue 15
+                                             "--pad-bulk", "--fields", "--nu", "--fields-at"};  // issue 15
 
 // Pressure samples (--pressure-file): two columns x p per line, separated by
 // whitespace or one comma; '#' starts a comment; blank lines are skipped; the
@@ -536,30 +540,86 @@ const char *model_name(int m) {
 }
 
 
-// issue 15: --fields FILE, the stresses of both bodies on a grid as CSV
-void write_fields(const hs_solution *sol, double a, double pad_bulk, const std::string &path) {
-  FILE *out = std::fopen(path.c_str(), "w");
-  if (!out) die("cannot write '" + path + "'");
-  std::fprintf(out, "body,x,y,sxx,syy,sxy,max_principal,max_shear,von_mises\n");
-  const int nx = 81, ny = 41;
-  for (int b = 1; b <= 2; ++b)
-    for (int j = 0; j < ny; ++j) {
-      std::vector<double> x(nx), y(nx), s(3 * nx);
-      for (int i = 0; i < nx; ++i) {
-        x[i] = -2 * a + 4 * a * i / (nx - 1);
-        y[i] = (b == 1 ? 1 : -1) * 2 * a * j / (ny - 1);
-      }
-      check(hs_eval_stress(sol, b, pad_bulk, nx, x.data(), y.data(), s.data()), "stress");
-      for (int i = 0; i < nx; ++i) {
-        const double xx = s[3 * i], yy = s[3 * i + 1], xy = s[3 * i + 2];
-        const double r = std::hypot((xx - yy) / 2, xy), zz = 0.3 * (xx + yy);
-        const double vm = std::sqrt(((xx - yy) * (xx - yy) + (yy - zz) * (yy - zz) + (zz - xx) * (zz - xx)) / 2 +
-                                    3 * xy * xy);
-        std::fprintf(out, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", b, x[i], y[i], xx, yy, xy,
-                     (xx + yy) / 2 + r, r, vm);
-      }
+// --fields-at FILE: points 'x y' per line (whitespace or one comma, '#' comments,
+// blank lines, a header line first); errors name the file and the line
+void read_points(const std::string &path, std::vector<double> &px, std::vector<double> &py) {
+  FILE *f = std::fopen(path.c_str(), "r");
+  if (!f) die("bad value for --fields-at: cannot open '" + path + "'");
+  std::string all;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) all.append(buf, n);
+  std::fclose(f);
+  size_t pos = 0;
+  int ln = 0;
+  bool header_allowed = true;
+  while (pos < all.size()) {
+    size_t nl = all.find('\n', pos);
+    if (nl == std::string::npos) nl = all.size();
+    std::string t = all.substr(pos, nl - pos);
+    pos = nl + 1;
+    ++ln;
+    if (!t.empty() && t.back() == '\r') t.pop_back();
+    const size_t hash = t.find('#');
+    if (hash != std::string::npos) t.erase(hash);
+    t = trim(t);
+    if (t.empty()) continue;
+    const std::vector<std::string> fl = split_fields(t);
+    const std::string where = "--fields-at " + path + ": line " + std::to_string(ln) + ": ";
+    double x = 0, y = 0;
+    if (header_allowed && !is_number(fl[0], x)) { header_allowed = false; continue; }
+    header_allowed = false;
+    if (fl.size() != 2) die(where + std::to_string(fl.size()) + " columns, expected 2 (x y)");
+    if (!is_number(fl[0], x)) die(where + "x '" + fl[0] + "' is not a number");
+    if (!is_number(fl[1], y)) die(where + "y '" + fl[1] + "' is not a number");
+    if (!std::isfinite(x) || !std::isfinite(y)) die(where + "the point is not finite");
+    px.push_back(x);
+    py.push_back(y);
+  }
+  if (px.empty()) die("--fields-at " + path + ": no points");
+}
+
+// issue 15: --fields FILE, the stresses on a grid of both bodies (or at the points of
+// --fields-at) as CSV (every number from the C library: components and scalars)
+void write_fields(const hs_solution *sol, double a, double pad_bulk, double nu, const std::string &path,
+                  const std::string &points_path) {
+  const int kinds[3] = {HS_STRESS_MAX_PRINCIPAL, HS_STRESS_MAX_SHEAR, HS_STRESS_VON_MISES};
+  std::string text = "body,x,y,sxx,syy,sxy,max_principal,max_shear,von_mises\n";
+  char line[512];
+  auto rows = [&](int b, const std::vector<double> &x, const std::vector<double> &y) {
+    const size_t n = x.size();
+    if (n == 0) return;
+    std::vector<double> s(3 * n), sc(3 * n);
+    check(hs_eval_stress(sol, b, pad_bulk, n, x.data(), y.data(), s.data()), "stress");
+    for (int k = 0; k < 3; ++k)
+      check(hs_eval_stress_scalar(sol, b, pad_bulk, kinds[k], nu, n, x.data(), y.data(), sc.data() + k * n),
+            "--nu " + g10(nu));
+    for (size_t i = 0; i < n; ++i) {
+      std::snprintf(line, sizeof line, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", b, x[i], y[i],
+                    s[3 * i], s[3 * i + 1], s[3 * i + 2], sc[i], sc[n + i], sc[2 * n + i]);
+      text += line;
     }
-  std::fclose(out);
+  };
+  if (!points_path.empty()) {
+    std::vector<double> px, py;
+    read_points(points_path, px, py);
+    // in file order, each point in its body
+    for (size_t i = 0; i < px.size(); ++i) rows(py[i] >= 0 ? 1 : 2, {px[i]}, {py[i]});
+  } else {
+    const int nx = 81, ny = 41;
+    std::vector<double> x(nx), y(nx);
+    for (int b = 1; b <= 2; ++b)
+      for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nx; ++i) {
+          x[i] = -2 * a + 4 * a * i / (nx - 1);
+          y[i] = (b == 1 ? 1 : -1) * 2 * a * j / (ny - 1);
+        }
+        rows(b, x, y);
+      }
+  }
+  FILE *out = std::fopen(path.c_str(), "w");
+  if (!out) die("--fields: cannot write '" + path + "'");
+  const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+  if (std::fclose(out) != 0 || !ok) die("--fields: error writing '" + path + "'");
 }
 
 // The scene and geometry of the solve/history options (geometry, sizes, loads);
@@ -728,7 +788,10 @@ int cmd_solve(int argc, char **argv) {
   double surf[2][5] = {};
   if (have_surface)
     for (int b = 0; b < 2; ++b) check(hs_surface_stress_extremes(sol, b + 1, pad_bulk, 0.0, surf[b]), "surface stress");
-  if (args.count("--fields")) write_fields(sol, sm.a, pad_bulk, args.at("--fields"));
+  const double nu = args.count("--nu") ? parse_number("--nu", args.at("--nu").c_str()) : 0.3;
+  if (args.count("--fields-at") && !args.count("--fields")) die("--fields-at needs --fields FILE (the output)");
+  if (args.count("--fields"))
+    write_fields(sol, sm.a, pad_bulk, nu, args.at("--fields"), args.count("--fields-at") ? args.at("--fields-at") : "");
 
   if (json) {
     std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "

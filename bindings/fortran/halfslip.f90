@@ -97,6 +97,15 @@ module halfslip
   integer(c_int), parameter, public :: HS_FIELD_TRACTION = 1
   integer(c_int), parameter, public :: HS_FIELD_SLIP     = 2
 
+  ! stress scalars of hs_eval_stress_scalar
+  integer(c_int), parameter, public :: HS_STRESS_XX            = 1
+  integer(c_int), parameter, public :: HS_STRESS_YY            = 2
+  integer(c_int), parameter, public :: HS_STRESS_XY            = 3
+  integer(c_int), parameter, public :: HS_STRESS_VON_MISES     = 4
+  integer(c_int), parameter, public :: HS_STRESS_MAX_PRINCIPAL = 5
+  integer(c_int), parameter, public :: HS_STRESS_MIN_PRINCIPAL = 6
+  integer(c_int), parameter, public :: HS_STRESS_MAX_SHEAR     = 7
+
   ! ---- plain-data structs passed to C (layouts of halfslip.h) -------------------
   ! Fill them with hs_scene_default / hs_options_default, then set fields.
   type, bind(c), public :: hs_scene
@@ -236,6 +245,8 @@ module halfslip
   public :: hs_solve, hs_solution_free, hs_solution_summary, hs_solution_energy
   public :: hs_geometry_default, hs_solve_geometry, hs_solve_samples, hs_solve_callback
   public :: hs_eval_Bx, hs_eval_slip, hs_eval_work, hs_eval_pressure
+  public :: hs_eval_traction, hs_eval_surface_stress, hs_eval_stress, hs_surface_stress_extremes
+  public :: hs_eval_stress_scalar
   public :: hs_ref_max_digits, hs_ref_max_digits_geometry, hs_ref_solve, hs_ref_solution_free
   public :: hs_ref_solution_summary
   public :: hs_ref_value, hs_ref_eval
@@ -389,6 +400,59 @@ module halfslip
       real(c_double), intent(inout) :: out(*)
       integer(c_int) :: st
     end function c_hs_eval_pressure
+
+    function c_hs_eval_traction(sol, n, x, out) bind(c, name="hs_eval_traction") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_traction
+
+    function c_hs_eval_surface_stress(sol, body, bulk2, n, x, out) bind(c, name="hs_eval_surface_stress") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_int), value :: body
+      real(c_double), value :: bulk2
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_surface_stress
+
+    function c_hs_eval_stress(sol, body, bulk2, n, x, y, out) bind(c, name="hs_eval_stress") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_int), value :: body
+      real(c_double), value :: bulk2
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*), y(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_stress
+
+    function c_hs_eval_stress_scalar(sol, body, bulk2, quantity, nu, n, x, y, out) &
+        bind(c, name="hs_eval_stress_scalar") result(st)
+      import :: c_int, c_ptr, c_size_t, c_double
+      type(c_ptr), value :: sol
+      integer(c_int), value :: body, quantity
+      real(c_double), value :: bulk2, nu
+      integer(c_size_t), value :: n
+      real(c_double), intent(in) :: x(*), y(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int) :: st
+    end function c_hs_eval_stress_scalar
+
+    function c_hs_surface_stress_extremes(sol, body, bulk2, half_range, out) &
+        bind(c, name="hs_surface_stress_extremes") result(st)
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value :: sol
+      integer(c_int), value :: body
+      real(c_double), value :: bulk2, half_range
+      real(c_double), intent(inout) :: out(5)
+      integer(c_int) :: st
+    end function c_hs_surface_stress_extremes
 
     function c_hs_ref_scene_default(scene) bind(c, name="hs_ref_scene_default") result(st)
       import :: c_int, c_hs_ref_scene
@@ -858,6 +922,86 @@ contains
     integer, intent(out), optional :: ierr
     call check(c_hs_eval_pressure(sol%ptr, int(max(n, 0), c_size_t), x, out), 'hs_eval_pressure', ierr)
   end subroutine hs_eval_pressure
+
+  ! ---- tractions and stresses (issue 15, docs/fields.md) ---------------------------
+  ! Body 1 (the specimen) is y >= 0, body 2 (the pad) y <= 0. bulk2 is the bulk
+  ! stress the pad carries (optional, default 0: the specimen carries all of sigma).
+
+  ! Shear traction q(x(i)) that body 2 exerts on body 1 (positive in +x), |x(i)| <= a.
+  subroutine hs_eval_traction(sol, n, x, out, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    integer, intent(out), optional :: ierr
+    call check(c_hs_eval_traction(sol%ptr, int(max(n, 0), c_size_t), x, out), 'hs_eval_traction', ierr)
+  end subroutine hs_eval_traction
+
+  ! Surface direct stress sigma_xx(x(i), 0) of body 1 or 2, on and off the contact.
+  subroutine hs_eval_surface_stress(sol, body, n, x, out, bulk2, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: body, n
+    real(c_double), intent(in) :: x(n)
+    real(c_double), intent(inout) :: out(n)
+    real(c_double), intent(in), optional :: bulk2
+    integer, intent(out), optional :: ierr
+    real(c_double) :: b
+    b = 0
+    if (present(bulk2)) b = bulk2
+    call check(c_hs_eval_surface_stress(sol%ptr, int(body, c_int), b, int(max(n, 0), c_size_t), x, out), &
+               'hs_eval_surface_stress', ierr)
+  end subroutine hs_eval_surface_stress
+
+  ! Stress (sigma_xx, sigma_yy, sigma_xy) at (x(i), y(i)) into s(1:3, i);
+  ! y(i) >= 0 for body 1, <= 0 for body 2.
+  subroutine hs_eval_stress(sol, body, n, x, y, s, bulk2, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: body, n
+    real(c_double), intent(in) :: x(n), y(n)
+    real(c_double), intent(inout) :: s(3, n)
+    real(c_double), intent(in), optional :: bulk2
+    integer, intent(out), optional :: ierr
+    real(c_double) :: b
+    b = 0
+    if (present(bulk2)) b = bulk2
+    call check(c_hs_eval_stress(sol%ptr, int(body, c_int), b, int(max(n, 0), c_size_t), x, y, s), &
+               'hs_eval_stress', ierr)
+  end subroutine hs_eval_stress
+
+  ! A scalar of the stress (quantity: HS_STRESS_*) at (x(i), y(i)) into out(i); nu
+  ! (Poisson's ratio, optional, default 0.3) is used by HS_STRESS_VON_MISES only.
+  subroutine hs_eval_stress_scalar(sol, body, quantity, n, x, y, out, nu, bulk2, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: body, quantity, n
+    real(c_double), intent(in) :: x(n), y(n)
+    real(c_double), intent(inout) :: out(n)
+    real(c_double), intent(in), optional :: nu, bulk2
+    integer, intent(out), optional :: ierr
+    real(c_double) :: b, v
+    b = 0
+    v = 0.3_c_double
+    if (present(bulk2)) b = bulk2
+    if (present(nu)) v = nu
+    call check(c_hs_eval_stress_scalar(sol%ptr, int(body, c_int), b, int(quantity, c_int), v, &
+                                       int(max(n, 0), c_size_t), x, y, out), 'hs_eval_stress_scalar', ierr)
+  end subroutine hs_eval_stress_scalar
+
+  ! Extremes of sigma_xx(x, 0) of a body over |x| <= half_range (absent or <= 0: 3a):
+  ! ext = [max, x_max, min, x_min, bulk].
+  subroutine hs_surface_stress_extremes(sol, body, ext, bulk2, half_range, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    integer, intent(in) :: body
+    real(c_double), intent(inout) :: ext(5)
+    real(c_double), intent(in), optional :: bulk2, half_range
+    integer, intent(out), optional :: ierr
+    real(c_double) :: b, L
+    b = 0
+    L = 0
+    if (present(bulk2)) b = bulk2
+    if (present(half_range)) L = half_range
+    call check(c_hs_surface_stress_extremes(sol%ptr, int(body, c_int), b, L, ext), &
+               'hs_surface_stress_extremes', ierr)
+  end subroutine hs_surface_stress_extremes
 
   ! Whether a proportional ramp from zero to the solution's (Q, sigma) makes a
   ! slip zone recede on the way, and the Q/fP where that first happens (NaN if not).

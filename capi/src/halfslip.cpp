@@ -451,10 +451,19 @@ int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *
 // issue 15: the contact state of a solution (bulk2: stress the pad carries)
 namespace {
 hs::core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
-  if (h.hertz) return hs::core::hertz_state(*h.hertz, bulk2);
-  if (h.general) return hs::core::general_state_of(*h.general, bulk2);
-  if (h.edge) return hs::core::make_state<double>(*h.edge, bulk2);
-  return hs::core::make_state<double>(*h.ref, bulk2);
+  auto make = [&] {
+    if (h.hertz) return hs::core::hertz_state(*h.hertz, bulk2);
+    if (h.general) return hs::core::general_state_of(*h.general, bulk2);
+    if (h.edge) return hs::core::make_state<double>(*h.edge, bulk2);
+    return hs::core::make_state<double>(*h.ref, bulk2);
+  };
+  auto st = make();
+  // the panels do not depend on bulk2: one set per solution, made on first use
+  std::call_once(h.panels_once, [&] {
+    if (hs::core::needs_panels(st)) h.panels = hs::core::make_panels(st);
+  });
+  st.panels = h.panels;
+  return st;
 }
 void check_fields_input(const hs_solution *sol, int body, double bulk2) {
   require(sol != nullptr, core::status::null_pointer, "solution is NULL");
@@ -494,6 +503,39 @@ int hs_eval_stress(const hs_solution *sol, int body, double bulk2, size_t n, con
       tmp[3 * i] = s.xx; tmp[3 * i + 1] = s.yy; tmp[3 * i + 2] = s.xy;
     }
     std::memcpy(out, tmp.data(), 3 * n * sizeof(double));
+  });
+}
+
+int hs_eval_stress_scalar(const hs_solution *sol, int body, double bulk2, int quantity, double nu, size_t n,
+                          const double *x, const double *y, double *out) {
+  return guard([&] {
+    check_fields_input(sol, body, bulk2);
+    require(quantity >= HS_STRESS_XX && quantity <= HS_STRESS_MAX_SHEAR, core::status::bad_option,
+            "quantity must be one of HS_STRESS_XX .. HS_STRESS_MAX_SHEAR");
+    require(std::isfinite(nu), core::status::not_finite, "Poisson's ratio nu is NaN or infinite");
+    require(nu >= -1 && nu <= 0.5, core::status::bad_option, "Poisson's ratio nu must lie in [-1, 0.5]");
+    if (n == 0) return;
+    require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+    for (size_t i = 0; i < n; ++i) {
+      require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
+      require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
+              "point outside the body (body 1: y >= 0, body 2: y <= 0)");
+    }
+    const auto st = state_of(*sol, bulk2);
+    std::vector<double> tmp(n);
+    for (size_t i = 0; i < n; ++i) {
+      const auto s = core::stress_at(st, body, x[i], std::fabs(y[i]));
+      switch (quantity) {
+        case HS_STRESS_XX: tmp[i] = s.xx; break;
+        case HS_STRESS_YY: tmp[i] = s.yy; break;
+        case HS_STRESS_XY: tmp[i] = s.xy; break;
+        case HS_STRESS_VON_MISES: tmp[i] = s.von_mises(nu); break;
+        case HS_STRESS_MAX_PRINCIPAL: tmp[i] = s.max_principal(); break;
+        case HS_STRESS_MIN_PRINCIPAL: tmp[i] = s.min_principal(); break;
+        default: tmp[i] = s.max_shear(); break;
+      }
+    }
+    std::memcpy(out, tmp.data(), n * sizeof(double));
   });
 }
 

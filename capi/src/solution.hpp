@@ -2,10 +2,12 @@
 // (model selection by tolerance, docs/models.md). Not installed.
 #pragma once
 #include <memory>
+#include <mutex>
 #include <new>
 #include <string>
 
 #include "halfslip/core/asymptotic.hpp"
+#include "halfslip/core/field_panels.hpp"
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/select.hpp"
@@ -86,6 +88,10 @@ struct hs_solution {
   std::unique_ptr<hs::capi::reference_double> ref;
   int model_used = 0;           // HS_MODEL_*
   double error_estimate = 0;
+  // issue 15: p and q cached on graded panels for the stresses, built on the
+  // first field evaluation that needs them (thread-safe; null: closed forms)
+  mutable std::once_flag panels_once;
+  mutable std::shared_ptr<const hs::core::traction_panels<double>> panels;
   template <class F> auto visit(F &&f) const {
     if (hertz) return f(*hertz);
     if (general) return f(*general);

@@ -50,7 +50,7 @@ program test_fortran
   end interface
 
   ! Same order as kValues in header_values.c.
-  integer(c_int), parameter :: kConstants(52) = [ &
+  integer(c_int), parameter :: kConstants(59) = [ &
     HS_VERSION_MAJOR, HS_VERSION_MINOR, HS_VERSION_PATCH, &
     HS_OK, HS_ERR_NULL_POINTER, HS_ERR_STRUCT_SIZE, HS_ERR_NOT_FINITE, HS_ERR_BAD_SIZE, &
     HS_ERR_BAD_FRICTION, HS_ERR_GROSS_SLIDING, HS_ERR_BAD_GEOMETRY, HS_ERR_POINT_OUTSIDE, &
@@ -63,7 +63,9 @@ program test_fortran
     HS_REGIME_STUCK, HS_REGIME_SAME_SIGN, HS_REGIME_OPPOSITE_SIGN, &
     HS_REF_B1, HS_REF_B2, HS_REF_D1, HS_REF_D2, HS_REF_ENERGY1, HS_REF_ENERGY2, HS_REF_A, HS_REF_P0, &
     HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_WORK, HS_REF_EVAL_PRESSURE, &
-    HS_RAMP_SIGMA_FIRST, HS_RAMP_TOGETHER, HS_RAMP_Q_FIRST, HS_FIELD_TRACTION, HS_FIELD_SLIP]
+    HS_RAMP_SIGMA_FIRST, HS_RAMP_TOGETHER, HS_RAMP_Q_FIRST, HS_FIELD_TRACTION, HS_FIELD_SLIP, &
+    HS_STRESS_XX, HS_STRESS_YY, HS_STRESS_XY, HS_STRESS_VON_MISES, HS_STRESS_MAX_PRINCIPAL, &
+    HS_STRESS_MIN_PRINCIPAL, HS_STRESS_MAX_SHEAR]
 
   real(c_double), parameter :: pi = 3.141592653589793238462643383279503_c_double
   integer :: passed = 0, failed = 0
@@ -77,6 +79,7 @@ program test_fortran
   call test_geometries()
   call test_reference()
   call test_history()
+  call test_fields()
 
   write (*, '(a,i0,a,i0,a)') 'fortran: ', passed, ' passed, ', failed, ' failed'
   if (failed /= 0) error stop 1
@@ -703,5 +706,127 @@ contains
     call hs_solution_ramp(sol, recedes, at, ierr)
     call expect_code(ierr, HS_ERR_NULL_POINTER, 'hs_solution_ramp: null handle')
   end subroutine test_history
+
+  ! Issue 15: traction and stresses through the wrappers, against closed forms
+  ! written here (Hertz, a = p0 = f = E* = 1): the same-sign traction
+  ! q = sqrt(1 - x^2) - sqrt((b1 - x)(x + b2)); the surface sigma_xx outside the
+  ! contact of semi-ellipses, (1/pi) int sqrt(c^2 - (t-e)^2)/(x - t) dt =
+  ! (x - e) - sgn(x - e) sqrt((x - e)^2 - c^2); the peak 2 sqrt(Q/fP) at x = -a
+  ! (sigma = 0); McEwen's stresses on the axis x = 0 when stuck; the integral of
+  ! q (= Q) in the opposite-sign regime by the midpoint rule in x = sin(theta).
+  subroutine test_fields()
+    real(c_double), parameter :: tol = 64 * epsilon(1.0_c_double)
+    type(hs_solution_t) :: sol
+    type(hs_summary) :: sm
+    real(c_double) :: x(5), q(5), sx(5), sx2(5), s(3, 5), y(5), ext(5), c, z, want, Qsum, th, xx(1), qq(1)
+    integer :: ierr, i, m
+    ! same sign, sigma = 0: b1 = b2 = c = sqrt(1 - Q/fP)
+    call hs_solve(scene_qs(0.36_c_double, 0.0_c_double), sol, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'fields: solve')
+    call hs_solution_summary(sol, sm)
+    c = sm%b1
+    x = [-0.95_c_double, -0.3_c_double, 0.0_c_double, 0.5_c_double, 0.85_c_double]
+    call hs_eval_traction(sol, 5, x, q, ierr)
+    call expect_code(ierr, HS_OK, 'fields: traction')
+    do i = 1, 5
+      want = sqrt(1 - x(i)**2)
+      if (abs(x(i)) < c) want = want - sqrt((c - x(i)) * (c + x(i)))
+      call expect_near(q(i), want, tol, 'fields: same-sign traction (closed form)')
+    end do
+    ! surface sigma_xx outside the contact: body 1 = -(2/pi) int q/(x - t), body 2 = +
+    x = [-3.0_c_double, -1.5_c_double, -1.0001_c_double, 1.2_c_double, 2.5_c_double]
+    call hs_eval_surface_stress(sol, 1, 5, x, sx, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'fields: surface stress')
+    call hs_eval_surface_stress(sol, 2, 5, x, sx2, bulk2=0.25_c_double)
+    do i = 1, 5
+      want = -2 * ((x(i) - sign(sqrt(x(i)**2 - 1), x(i))) - (x(i) - sign(sqrt(x(i)**2 - c**2), x(i))))
+      call expect_near(sx(i), want, 1e-13_c_double, 'fields: surface sigma_xx outside (semi-ellipses)')
+      call expect_near(sx2(i), 0.25_c_double - want, 1e-13_c_double, 'fields: body 2 and its bulk stress')
+    end do
+    ! the peak at the trailing edge x = -a: 2 f p0 sqrt(Q/fP)
+    call hs_surface_stress_extremes(sol, 1, ext, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'fields: extremes')
+    call expect_near(ext(1), 2 * sqrt(0.36_c_double), 1e-12_c_double, 'fields: peak 2 sqrt(Q/fP)')
+    call expect_near(ext(2), -1.0_c_double, 1e-6_c_double, 'fields: peak at x = -a')
+    call expect(ext(5) == 0, 'fields: bulk of body 1 (sigma = 0)')
+    ! on the surface hs_eval_stress gives (sigma_xx, -p, -q)
+    x = [-0.95_c_double, -0.3_c_double, 0.0_c_double, 0.5_c_double, 0.85_c_double]
+    y = 0
+    call hs_eval_stress(sol, 1, 5, x, y, s, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'fields: stress')
+    call hs_eval_surface_stress(sol, 1, 5, x, sx)
+    call hs_eval_traction(sol, 5, x, q)
+    do i = 1, 5
+      call expect_near(s(1, i), sx(i), tol, 'fields: stress at y = 0 is the surface sigma_xx')
+      call expect_near(s(2, i), -sqrt(1 - x(i)**2), tol, 'fields: sigma_yy = -p on the surface')
+      call expect_near(s(3, i), -q(i), tol, 'fields: sigma_xy = -q on the surface')
+    end do
+    ! bad input: specific codes, outputs untouched
+    s = 42
+    call hs_eval_stress(sol, 3, 5, x, y, s, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'fields: body 3')
+    y(2) = -0.5_c_double
+    call hs_eval_stress(sol, 1, 5, x, y, s, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'fields: point outside body 1')
+    call expect(all(s == 42), 'fields: output untouched on error')
+    call hs_eval_surface_stress(sol, 1, 5, x, sx, bulk2=ieee_value(c, ieee_quiet_nan), ierr=ierr)
+    call expect_code(ierr, HS_ERR_NOT_FINITE, 'fields: NaN bulk stress')
+    call hs_surface_stress_extremes(sol, 1, ext, half_range=ieee_value(c, ieee_positive_inf), ierr=ierr)
+    call expect_code(ierr, HS_ERR_NOT_FINITE, 'fields: infinite half range')
+    ! the scalars against the components (x, y inside body 1)
+    x = [-1.5_c_double, -0.9_c_double, 0.0_c_double, 0.4_c_double, 1.0_c_double]
+    y = [0.5_c_double, 0.05_c_double, 0.3_c_double, 1.0_c_double, 1e-6_c_double]
+    call hs_eval_stress(sol, 1, 5, x, y, s)
+    call hs_eval_stress_scalar(sol, 1, HS_STRESS_VON_MISES, 5, x, y, sx, nu=0.25_c_double, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'fields: stress scalar')
+    call hs_eval_stress_scalar(sol, 1, HS_STRESS_MAX_SHEAR, 5, x, y, sx2)
+    do i = 1, 5
+      z = 0.25_c_double * (s(1, i) + s(2, i))   ! sigma_zz
+      want = sqrt(((s(1, i) - s(2, i))**2 + (s(2, i) - z)**2 + (z - s(1, i))**2) / 2 + 3 * s(3, i)**2)
+      call expect_near(sx(i), want, tol, 'fields: von Mises (plane strain)')
+      call expect_near(sx2(i), sqrt(((s(1, i) - s(2, i)) / 2)**2 + s(3, i)**2), tol, 'fields: maximum shear')
+    end do
+    call hs_eval_stress_scalar(sol, 1, HS_STRESS_XY, 5, x, y, sx)
+    call expect(all(sx == s(3, :)), 'fields: scalar sigma_xy is the component')
+    sx = 42
+    call hs_eval_stress_scalar(sol, 1, 99, 5, x, y, sx, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'fields: unknown stress quantity')
+    call hs_eval_stress_scalar(sol, 1, HS_STRESS_VON_MISES, 5, x, y, sx, nu=0.7_c_double, ierr=ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'fields: Poisson ratio above 1/2')
+    call expect(all(sx == 42), 'fields: scalar output untouched on error')
+    call hs_solution_free(sol)
+
+    ! stuck (Q = sigma = 0): McEwen on the axis, sigma_xx = -((1 + 2z^2)/sqrt(1 + z^2) - 2z),
+    ! sigma_yy = -1/sqrt(1 + z^2), sigma_xy = 0
+    call hs_solve(scene_qs(0.0_c_double, 0.0_c_double), sol, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'fields: stuck solve')
+    x = 0
+    y = [0.01_c_double, 0.3_c_double, 0.78_c_double, 1.0_c_double, 4.0_c_double]
+    call hs_eval_stress(sol, 1, 5, x, y, s)
+    do i = 1, 5
+      z = y(i)
+      call expect_near(s(1, i), -((1 + 2 * z**2) / sqrt(1 + z**2) - 2 * z), 1e-14_c_double, 'fields: McEwen sigma_xx')
+      call expect_near(s(2, i), -1 / sqrt(1 + z**2), 1e-14_c_double, 'fields: McEwen sigma_yy')
+      call expect_near(s(3, i), 0.0_c_double, 1e-14_c_double, 'fields: McEwen sigma_xy')
+    end do
+    call hs_solution_free(sol)
+
+    ! opposite sign (quadrature path): int q dx = Q/fP (f P = pi/2 here), midpoint
+    ! rule in x = sin(theta); q has square roots at the stick boundaries, where the
+    ! rule's error is O(h^1.5) = (pi/4000)^1.5 = 2.2e-5 (measured 2.9e-6)
+    call hs_solve(scene_qs(0.3_c_double, 2.0_c_double), sol, ierr=ierr)
+    call hs_solution_summary(sol, sm)
+    call expect(sm%regime == HS_REGIME_OPPOSITE_SIGN, 'fields: opposite-sign regime')
+    m = 4000
+    Qsum = 0
+    do i = 1, m
+      th = -pi / 2 + pi * (i - 0.5_c_double) / m
+      xx(1) = sin(th)
+      call hs_eval_traction(sol, 1, xx, qq)
+      Qsum = Qsum + qq(1) * cos(th) * pi / m
+    end do
+    call expect_near(Qsum / (pi / 2), 0.3_c_double, 2.2e-5_c_double, 'fields: opposite-sign int q = Q')
+    call hs_solution_free(sol)
+  end subroutine test_fields
 
 end program test_fortran

@@ -142,6 +142,18 @@ _RAMP_NAMES = {"sigma-first": RAMP_SIGMA_FIRST, "together": RAMP_TOGETHER, "q-fi
 FIELD_TRACTION = 1
 FIELD_SLIP = 2
 
+# stress scalars of Solution.stress_scalar (hs_eval_stress_scalar)
+STRESS_XX = 1
+STRESS_YY = 2
+STRESS_XY = 3
+STRESS_VON_MISES = 4
+STRESS_MAX_PRINCIPAL = 5
+STRESS_MIN_PRINCIPAL = 6
+STRESS_MAX_SHEAR = 7
+_STRESS_NAMES = {"sxx": STRESS_XX, "syy": STRESS_YY, "sxy": STRESS_XY, "von_mises": STRESS_VON_MISES,
+                 "max_principal": STRESS_MAX_PRINCIPAL, "min_principal": STRESS_MIN_PRINCIPAL,
+                 "max_shear": STRESS_MAX_SHEAR}
+
 _GEOMETRY_NAMES = {"hertz": GEOMETRY_HERTZ, "flat-rounded": GEOMETRY_FLAT_ROUNDED, "power-law": GEOMETRY_POWER_LAW,
                    "samples": GEOMETRY_SAMPLES, "callback": GEOMETRY_CALLBACK}
 _STATUS_NAMES = {v: "HS_" + k for k, v in list(globals().items()) if k == "OK" or k.startswith("ERR_")}
@@ -154,7 +166,7 @@ _STATUS_ARGS = {
     ERR_BAD_FRICTION: ("f",),
     ERR_GROSS_SLIDING: ("Q_over_fP", "Q", "P", "f"),
     ERR_BAD_GEOMETRY: ("geometry", "flat_over_a", "exponent", "n", "samples", "flat_width", "R", "A", "model"),
-    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry"),
+    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry", "quantity", "nu", "body"),
     ERR_BAD_NUMBER: _ALL,
     ERR_TOLERANCE: ("rtol", "model"),
     ERR_NOT_APPLICABLE: ("model", "geometry", "rtol"),
@@ -387,13 +399,13 @@ class Scene:
         h = _clib.SolutionP()
         if kind is None:
             _check(_lib.hs_solve(byref(self._c), opts, byref(h)), "hs_solve", values)
-            return Solution(h)
+            return Solution(h, scene=self)
         g, arrays, callback = _geometry_struct(kind, flat_over_a, exponent, samples, pressure, values)
         st = _lib.hs_solve_geometry(byref(self._c), byref(g), opts, byref(h))
         del arrays
         if st != 0:
             _raise(st, "hs_solve_geometry", callback, values)
-        return Solution(h, callback)
+        return Solution(h, callback, scene=self)
 
 
 def _geometry_struct(kind, flat_over_a, exponent, samples, pressure, values=None):
@@ -554,9 +566,10 @@ class Solution(_Handle):
     freed when the object is garbage collected. The summary properties stay
     readable after close()."""
 
-    def __init__(self, handle, callback=None):
+    def __init__(self, handle, callback=None, scene=None):
         self._h = handle
         self._callback = callback   # a pressure callback the C solution calls
+        self.scene = scene          # the Scene solved (f and E_star for scaling pictures), or None
         s = _clib.Summary()
         s.struct_size = ctypes.sizeof(s)
         st = _lib.hs_solution_summary(handle, byref(s))
@@ -679,6 +692,46 @@ class Solution(_Handle):
             _raise(st, "hs_eval_stress", self._callback)
         res = [(out[3 * i], out[3 * i + 1], out[3 * i + 2]) for i in range(n)]
         return res[0] if scalar else res
+
+    def stress_scalar(self, x, y, quantity="von_mises", body=None, nu=0.3, pad_bulk=0.0):
+        """A scalar of the stress at points (x, y) (same shapes): quantity is one of
+        "sxx", "syy", "sxy", "von_mises" (plane strain, Poisson's ratio nu),
+        "max_principal", "min_principal", "max_shear", or a STRESS_* constant. body
+        defaults to 1 for y >= 0 and 2 for y < 0 (all points alike). Returns a float
+        for numbers, a numpy array of x's shape for numpy arrays, else an array.array('d')."""
+        q = _STRESS_NAMES.get(quantity, quantity) if isinstance(quantity, str) else quantity
+        if isinstance(quantity, str) and quantity not in _STRESS_NAMES:
+            raise ValueError("halfslip: unknown stress quantity %r (one of %s)"
+                             % (quantity, ", ".join(sorted(_STRESS_NAMES))))
+        h = self._handle()
+        np = _numpy_of(x)
+        if np is not None:
+            xs = np.ascontiguousarray(x, dtype=np.float64)
+            ys = np.ascontiguousarray(y, dtype=np.float64)
+            if xs.shape != ys.shape:
+                raise ValueError("x and y differ in shape")
+            if body is None:
+                body = 2 if xs.size and ys.flat[0] < 0 else 1
+            out = np.empty(xs.shape, dtype=np.float64)
+            dp = ctypes.POINTER(c_double)
+            st = _lib.hs_eval_stress_scalar(h, int(body), float(pad_bulk), int(q), float(nu), xs.size,
+                                            xs.ctypes.data_as(dp), ys.ctypes.data_as(dp), out.ctypes.data_as(dp)) \
+                if xs.size else 0
+            if st != 0:
+                _raise(st, "hs_eval_stress_scalar", self._callback, {"quantity": quantity, "nu": nu, "body": body})
+            return out[()] if out.ndim == 0 else out
+        xs, n, scalar = _points(x)
+        ys, m, _ = _points(y)
+        if m != n:
+            raise ValueError("x and y differ in length")
+        if body is None:
+            body = 2 if n and ys[0] < 0 else 1
+        out = array.array("d", bytes(n * ctypes.sizeof(c_double)))
+        st = _lib.hs_eval_stress_scalar(h, int(body), float(pad_bulk), int(q), float(nu), n, xs if n else None,
+                                        ys if n else None, (c_double * n).from_buffer(out) if n else None)
+        if st != 0:
+            _raise(st, "hs_eval_stress_scalar", self._callback, {"quantity": quantity, "nu": nu, "body": body})
+        return out[0] if scalar else out
 
     def surface_stress_extremes(self, body=1, pad_bulk=0.0, half_range=0.0):
         """dict max, x_max, min, x_min, bulk of sigma_xx(x, 0) over |x| <= half_range (0: 3a)."""

@@ -205,6 +205,8 @@ _SIGNATURES = {
     "hs_eval_surface_stress": (c_int, [SolutionP, c_int, c_double, c_size_t, _DoubleP, _DoubleP]),
     "hs_eval_stress": (c_int, [SolutionP, c_int, c_double, c_size_t, _DoubleP, _DoubleP, _DoubleP]),
     "hs_surface_stress_extremes": (c_int, [SolutionP, c_int, c_double, c_double, _DoubleP]),
+    "hs_eval_stress_scalar": (c_int, [SolutionP, c_int, c_double, c_int, c_double, c_size_t, _DoubleP, _DoubleP,
+                                      _DoubleP]),
     "hs_solution_ramp": (c_int, [SolutionP, POINTER(c_int), _DoubleP]),
     "hs_history_options_default": (c_int, [POINTER(HistoryOptions)]),
     "hs_history_new": (c_int, [POINTER(Scene), POINTER(Geometry), POINTER(HistoryOptions), POINTER(HistoryP)]),

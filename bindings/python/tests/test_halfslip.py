@@ -54,12 +54,12 @@ class TestLibraryAndVersion(unittest.TestCase):
         checked = 0
         for name, value in macros.items():
             short = name[3:]
-            if short.startswith(("OK", "ERR_", "REGIME_", "GEOMETRY_", "MODEL_", "RAMP_", "FIELD_")):
+            if short.startswith(("OK", "ERR_", "REGIME_", "GEOMETRY_", "MODEL_", "RAMP_", "FIELD_", "STRESS_")):
                 self.assertEqual(getattr(halfslip, short), int(value), name)
                 checked += 1
         self.assertGreaterEqual(checked, 20)
         for name in dir(halfslip):
-            if re.match(r"^(OK|ERR_\w+|REGIME_\w+|GEOMETRY_\w+|MODEL_\w+|RAMP_\w+|FIELD_\w+)$", name):
+            if re.match(r"^(OK|ERR_\w+|REGIME_\w+|GEOMETRY_\w+|MODEL_\w+|RAMP_\w+|FIELD_\w+|STRESS_\w+)$", name):
                 self.assertIn("HS_" + name, macros, "constant %s is not in the header" % name)
 
     def test_version(self):
@@ -823,6 +823,84 @@ class TestFields(unittest.TestCase):
             self.assertEqual(len(pts), 2)
             with self.assertRaises(halfslip.HalfslipError):
                 sol.stress(0.0, -0.5, body=1)
+
+    def test_stress_scalar(self):
+        # McEwen on the axis when stuck (a = p0 = 1): sigma_xx = -((1 + 2z^2)/sqrt(1 + z^2) - 2z),
+        # sigma_yy = -1/sqrt(1 + z^2), no shear: principal stresses are the components
+        with halfslip.solve(Q_over_fP=0.0, sigma_over_fp0=0.0) as sol:
+            zs = [0.1, 0.78, 2.0]
+            sxx = [-((1 + 2 * z * z) / math.sqrt(1 + z * z) - 2 * z) for z in zs]
+            syy = [-1 / math.sqrt(1 + z * z) for z in zs]
+            tau = sol.stress_scalar([0.0] * 3, zs, "max_shear")
+            vm = sol.stress_scalar([0.0] * 3, zs, halfslip.STRESS_VON_MISES, nu=0.3)
+            for i in range(3):
+                self.assertLess(abs(tau[i] - abs(sxx[i] - syy[i]) / 2), 1e-14)
+                szz = 0.3 * (sxx[i] + syy[i])
+                want = math.sqrt(((sxx[i] - syy[i]) ** 2 + (syy[i] - szz) ** 2 + (szz - sxx[i]) ** 2) / 2)
+                self.assertLess(abs(vm[i] - want), 1e-14)
+            self.assertLess(abs(sol.stress_scalar(0.0, 0.78, "max_principal") - max(sxx[1], syy[1])), 1e-14)
+            with self.assertRaises(ValueError):
+                sol.stress_scalar(0.0, 0.5, "tresca")
+            with self.assertRaises(halfslip.HalfslipError) as cm:
+                sol.stress_scalar(0.0, 0.5, "von_mises", nu=0.6)
+            self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
+            self.assertIn("nu=0.6", str(cm.exception))
+
+
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+except ImportError:
+    matplotlib = None
+
+
+class TestPlot(unittest.TestCase):
+    """halfslip.plot: draws the library's numbers; a missing matplotlib says how to install it."""
+
+    def test_missing_matplotlib_is_a_clear_error(self):
+        code = ("import sys; sys.modules['matplotlib'] = None\n"
+                "import halfslip, halfslip.plot as hp\n"
+                "sol = halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.5)\n"
+                "try:\n    hp.tractions(sol)\nexcept ImportError as e:\n    print('ImportError:', e)\n")
+        rc, out = run_python(code, {}, os.path.dirname(PACKAGE_DIR))
+        self.assertEqual(rc, 0, out)
+        self.assertIn("ImportError: halfslip.plot needs matplotlib", out)
+        self.assertIn("apt install python3-matplotlib", out)
+
+    @unittest.skipIf(numpy is None or matplotlib is None, "numpy and matplotlib are needed (optional)")
+    def test_plots_draw_the_library_values(self):
+        import halfslip.plot as hp
+        import matplotlib.pyplot as plt
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.5, f=0.6) as sol:
+            fig = hp.overview(sol, title="t")
+            ax = fig.axes[0]
+            q_line = [ln for ln in ax.get_lines() if ln.get_label() == "q"][0]
+            x = numpy.asarray(q_line.get_xdata()) * sol.a
+            self.assertTrue(numpy.array_equal(q_line.get_ydata(), sol.traction(x) / sol.p0))
+            # the stick zone is the shaded span (-b2, b1)
+            patch = ax.patches[0]
+            if hasattr(patch, "get_width"):   # a Rectangle (matplotlib >= 3.9)
+                xs = [patch.get_x(), patch.get_x() + patch.get_width()]
+            else:                             # a Polygon
+                xs = [v[0] for v in patch.get_xy()]
+            self.assertAlmostEqual(min(xs), -sol.b2, places=14)
+            self.assertAlmostEqual(max(xs), sol.b1, places=14)
+            # the surface panel marks each body's maximum where hs_surface_stress_extremes puts it
+            e = sol.surface_stress_extremes(body=1, half_range=3.0)
+            marks = [ln for ln in fig.axes[2].get_lines() if ln.get_marker() == "^"]
+            self.assertEqual((marks[0].get_xdata()[0], marks[0].get_ydata()[0]), (e["x_max"], e["max"]))
+            with tempfile.TemporaryDirectory() as d:
+                hp.save(fig, os.path.join(d, "o.png"))
+                self.assertGreater(os.path.getsize(os.path.join(d, "o.png")), 1000)
+            ax = hp.stress_contour(sol, "max_shear", body=2, nx=20, ny=10)
+            plt.close(ax.figure)
+        ax = hp.regime_map(nq=8, ns=9)
+        self.assertTrue(ax.collections)  # contours were drawn
+        plt.close(ax.figure)
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.5) as sol:
+            sol.scene = None   # f is needed for +-f p
+            with self.assertRaises(ValueError):
+                hp.tractions(sol)
 
 
 if __name__ == "__main__":

@@ -252,6 +252,19 @@ HS_EXPORT int hs_eval_stress(const hs_solution *sol, int body, double bulk2, siz
 HS_EXPORT int hs_surface_stress_extremes(const hs_solution *sol, int body, double bulk2, double half_range,
                                          double out[5]);
 
+/* A scalar of the stress at (x[i], y[i]) (body and bulk2 as above) written to out[i]:
+ * quantity HS_STRESS_*; nu (Poisson's ratio, in [-1, 0.5]) is used by von Mises only,
+ * with sigma_zz = nu (sigma_xx + sigma_yy) (plane strain). Added after 0.4.0. */
+#define HS_STRESS_XX            1  /* sigma_xx */
+#define HS_STRESS_YY            2  /* sigma_yy */
+#define HS_STRESS_XY            3  /* sigma_xy */
+#define HS_STRESS_VON_MISES     4  /* plane-strain von Mises stress */
+#define HS_STRESS_MAX_PRINCIPAL 5  /* larger in-plane principal stress */
+#define HS_STRESS_MIN_PRINCIPAL 6  /* smaller in-plane principal stress */
+#define HS_STRESS_MAX_SHEAR     7  /* in-plane maximum shear sqrt(((sxx - syy)/2)^2 + sxy^2) */
+HS_EXPORT int hs_eval_stress_scalar(const hs_solution *sol, int body, double bulk2, int quantity, double nu,
+                                    size_t n, const double *x, const double *y, double *out);
+
 /* ---- asymptotic single-edge model (paper section 5) ------------------------------
  * Hertz, a = p0 = f = E* = 1. For the load that gives a slip zone b/a under
  * pure shear (HS_LOADING_SHEAR) or pure bulk tension (HS_LOADING_BULK), the

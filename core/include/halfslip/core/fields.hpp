@@ -28,6 +28,7 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "field_panels.hpp"
 #include "general.hpp"
 #include "hertz.hpp"
 #include "numerics.hpp"
@@ -35,16 +36,22 @@
 
 namespace hs { namespace core {
 
-template <class T> struct cauchy_pair {
-  std::complex<T> F0{0, 0}, F1{0, 0};
-};
-
 // Adds the Cauchy integrals of amp * sqrt(c^2 - (s - e)^2) on [e - c, e + c]
 // (closed form: pi amp c (X - nu), pi amp (nu/X - 1), nu = (zeta - e)/c,
 // X = sqrt(nu - 1) sqrt(nu + 1) ~ nu at infinity; Im zeta >= 0).
 template <class T> void add_semi_ellipse(const T &amp, const T &c, const T &e, const std::complex<T> &zeta,
                                          cauchy_pair<T> &out) {
   if (!(c > 0) || amp == 0) return;
+  if (zeta.imag() == 0) {  // the real axis outside the support: all real (the surface off the contact)
+    using std::abs; using std::sqrt;
+    const T nu = (zeta.real() - e) / c;
+    if (abs(nu) > 1) {
+      const T X = nu > 0 ? T(sqrt((nu - 1) * (nu + 1))) : T(-sqrt((nu - 1) * (nu + 1)));
+      out.F0 += std::complex<T>(pi<T>() * amp * c * (X - nu), T(0));
+      out.F1 += std::complex<T>(pi<T>() * amp * (nu / X - 1), T(0));
+      return;
+    }
+  }
   const std::complex<T> nu = (zeta - e) / c;
   const std::complex<T> X = std::sqrt(nu - T(1)) * std::sqrt(nu + T(1));
   out.F0 += pi<T>() * amp * c * (X - nu);
@@ -59,7 +66,7 @@ template <class T> void add_semi_ellipse(const T &amp, const T &c, const T &e, c
 // at least its own length from the pole (20-point rule: error < 1e-16).
 template <class T, class G>
 void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex<T> &zeta, cauchy_pair<T> &P,
-                    cauchy_pair<T> &Q) {
+                    cauchy_pair<T> &Q, const std::vector<T> &kinks = {}) {
   using std::abs;
   using gl = boost::math::quadrature::gauss<T, 20>;
   const auto &xs = gl::abscissa();
@@ -94,6 +101,9 @@ void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex
       const T t0 = std::min(std::max(tau.real(), T(0)), T(1));
       const T delta = abs(tau - t0);
       std::vector<T> cuts{T(0), T(1)};
+      // a log-singular kink of p at this end: panels graded towards it (t^2 log t)
+      if (std::find(kinks.begin(), kinks.end(), end) != kinks.end())
+        for (int k = 1; k <= 12; ++k) cuts.push_back(std::ldexp(T(1), -k));
       if (delta < T(0.5)) {
         const T dmin = std::max(delta, T(64) * eps<T>());
         cuts.push_back(t0);
@@ -101,8 +111,8 @@ void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex
           if (t0 - d > 0) cuts.push_back(t0 - d);
           if (t0 + d < 1) cuts.push_back(t0 + d);
         }
-        std::sort(cuts.begin(), cuts.end());
       }
+      std::sort(cuts.begin(), cuts.end());
       for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
         if (cuts[k + 1] > cuts[k]) panel(end, h, cuts[k], cuts[k + 1]);
     }
@@ -135,6 +145,14 @@ template <class T> struct contact_state {
   // optional: (2/pi) PV int q(t)/(x - t) dt for |x| <= a (for a solution:
   // E* B_x + sigma/2, exact); needed for the surface stress on the contact
   std::function<T(const T &)> hilbert_q;
+  // hilbert_q is cheap everywhere (closed forms); otherwise it is used only on
+  // the stick zone (stick_lo, stick_hi), where it is sigma/2, and at breakpoints
+  bool hilbert_fast = false;
+  T stick_lo{0}, stick_hi{0};
+  std::vector<T> kinks;  // breakpoints where p is log-singular (graded panels)
+  // optional: p and q cached on graded panels (make_panels), shared between
+  // states of the same solution; used instead of quadrature from scratch
+  std::shared_ptr<const traction_panels<T>> panels;
 
   std::vector<T> points() const {
     std::vector<T> v{-a, a};
@@ -148,7 +166,8 @@ template <class T> struct contact_state {
     P = {}; Q = {};
     if (closed && closed(zeta, P, Q)) return;
     P = {}; Q = {};
-    cauchy_numeric<T>([&](const T &s, T &pv, T &qv) { pv = p(s); qv = q(s); }, points(), zeta, P, Q);
+    if (panels) { panels->cauchy(zeta, P, Q); return; }
+    cauchy_numeric<T>([&](const T &s, T &pv, T &qv) { pv = p(s); qv = q(s); }, points(), zeta, P, Q, kinks);
   }
 };
 
@@ -196,7 +215,16 @@ template <class T> T surface_sxx(const contact_state<T> &st, int body, const T &
   const T sg = body == 1 ? T(-1) : T(1);
   const T bulk = body == 1 ? st.bulk1 : st.bulk2;
   T H;
-  if (abs(x) <= st.a) {
+  const bool on = abs(x) <= st.a;
+  if (st.panels && !(on && st.hilbert_q && st.hilbert_fast)) {
+    const bool breakpoint = abs(x) == st.a || std::find(st.breaks.begin(), st.breaks.end(), x) != st.breaks.end();
+    const bool stick = x > st.stick_lo && x < st.stick_hi;
+    if (!(on && st.hilbert_q && (breakpoint || stick))) {
+      H = -2 * st.panels->re_f0_q(x) / pi<T>();  // (2/pi) PV int q/(x - t)
+      return (on ? -st.p(x) : T(0)) + sg * H + bulk;
+    }
+  }
+  if (on) {
     if (st.hilbert_q) return -st.p(x) + sg * st.hilbert_q(x) + bulk;
     cauchy_pair<T> P, Q;  // closed forms: the boundary values from z = +0
     if (st.closed && st.closed(std::complex<T>(x, T(0)), P, Q))
@@ -273,6 +301,8 @@ template <class T, class S> contact_state<T> make_state(const S &sol, const T &b
     return v;
   };
   st.breaks = {-sol.b2(), sol.b1()};
+  st.stick_lo = -sol.b2();
+  st.stick_hi = sol.b1();
   const T E = sol.scene.Estar;
   st.hilbert_q = [&sol, E, sigma](const T &x) { return E * sol.Bx(x) + sigma / 2; };
   return st;
@@ -287,6 +317,7 @@ template <class T> contact_state<T> hertz_state(const hertz_solution<T> &sol, co
   const bool q_closed = sol.reg != regime::opposite_sign;
   const T c = (sol.b1() + sol.b2()) / 2, e = (sol.b1() - sol.b2()) / 2;
   const T sf = sol.reg == regime::stuck ? T(0) : sol.sign() * f;
+  st.hilbert_fast = true;  // B_x in closed form
   st.closed = [=](const std::complex<T> &zeta, cauchy_pair<T> &P, cauchy_pair<T> &Q) {
     if (!q_closed) return false;
     add_semi_ellipse<T>(p0 / a, a, T(0), zeta, P);
@@ -300,8 +331,97 @@ template <class T> contact_state<T> hertz_state(const hertz_solution<T> &sol, co
 // General pressures: the pressure's kinks are quadrature split points too.
 template <class T> contact_state<T> general_state_of(const general_solution<T> &sol, const T &bulk2 = T(0)) {
   contact_state<T> st = make_state<T>(sol, bulk2);
-  for (const T &k : sol.user_kinks()) st.breaks.push_back(k);
+  for (const T &k : sol.user_kinks()) { st.breaks.push_back(k); st.kinks.push_back(k); }
   return st;
+}
+
+// q on the stick zone (lo, hi) as a Chebyshev series in theta, x = m + w cos(theta),
+// m = (lo + hi)/2, w = (hi - lo)/2. q is analytic inside the stick zone (also
+// across the pressure's kinks: it is the Hilbert solution driven by the slip
+// zones) and behaves like sqrt(distance) at both ends, which theta makes
+// analytic: near theta = 0, sqrt(hi - x) = sqrt(2w) sin(theta/2). The degree
+// doubles from 32 until the last quarter of the coefficients falls below 64 eps
+// of the largest (q itself, a tanh-sinh integral, is good to about 4 eps: the
+// coefficients level off there, measured 2e-15 from degree 64 for the flat
+// punch); when that needs more than max_degree (small slip zones put a
+// singularity near the real theta axis), ok() is false and q is used directly.
+template <class T> class stick_series {
+ public:
+  template <class Q> stick_series(const Q &q, const T &lo, const T &hi, int max_degree = 256) : lo_(lo), hi_(hi) {
+    using std::abs; using std::cos;
+    m_ = (lo + hi) / 2; w_ = (hi - lo) / 2;
+    std::vector<T> g;
+    for (int N = 32; N <= max_degree; N *= 2) {
+      // values at the Chebyshev-Lobatto points u_j = cos(j pi/N), theta = (u + 1) pi/2
+      // (the points of N/2 are the even ones: reused)
+      std::vector<T> gn(N + 1);
+      for (int j = 0; j <= N; ++j) gn[j] = (j % 2 == 0 && !g.empty()) ? g[j / 2] : q(x_of(cos(pi<T>() * j / N)));
+      g.swap(gn);
+      c_.assign(N + 1, T(0));
+      for (int k = 0; k <= N; ++k) {
+        T sum = 0;
+        for (int j = 0; j <= N; ++j) sum += (j == 0 || j == N ? T(0.5) : T(1)) * g[j] * cos(pi<T>() * T(j * k % (2 * N)) / N);
+        c_[k] = sum * 2 / N * (k == 0 || k == N ? T(0.5) : T(1));
+      }
+      T big = 0, tail = 0;
+      for (int k = 0; k <= N; ++k) big = std::max(big, T(abs(c_[k])));
+      for (int k = 3 * N / 4; k <= N; ++k) tail = std::max(tail, T(abs(c_[k])));
+      tail_ = tail / big;
+      if (tail <= 64 * eps<T>() * big) { ok_ = true; return; }
+    }
+    c_.clear();
+  }
+  bool ok() const { return ok_; }
+  T tail() const { return tail_; }
+  bool inside(const T &x) const { return x > lo_ && x < hi_; }
+  T operator()(const T &x) const {
+    using std::asin; using std::sqrt;
+    // theta from the distance to the nearer end (accurate near both ends)
+    const T th = x >= m_ ? 2 * asin(sqrt((hi_ - x) / (2 * w_))) : pi<T>() - 2 * asin(sqrt((x - lo_) / (2 * w_)));
+    const T u = 2 * th / pi<T>() - 1;
+    T b1 = 0, b2 = 0;  // Clenshaw
+    for (std::size_t k = c_.size(); k-- > 1;) {
+      const T b0 = 2 * u * b1 - b2 + c_[k];
+      b2 = b1; b1 = b0;
+    }
+    return u * b1 - b2 + c_[0];
+  }
+
+ private:
+  T x_of(const T &u) const {
+    using std::cos; using std::sin;
+    const T th = (u + 1) * pi<T>() / 2;
+    // ends from the distances (hi - x = 2w sin^2(theta/2)), exact at theta = 0, pi
+    if (th <= pi<T>() / 2) { const T sh = sin(th / 2); return hi_ - 2 * w_ * sh * sh; }
+    const T ch = cos(th / 2);
+    return lo_ + 2 * w_ * ch * ch;
+  }
+  T lo_, hi_, m_{0}, w_{0};
+  std::vector<T> c_;
+  bool ok_ = false;
+  T tail_{1};
+};
+
+// The panels of a state (p and q at ~10^3 cached nodes). On the stick zone q
+// comes from a stick_series (some 30 to 130 evaluations of q) when it
+// converges, elsewhere from the state. Not needed where the state has closed forms.
+template <class T> std::shared_ptr<const traction_panels<T>> make_panels(const contact_state<T> &st) {
+  std::unique_ptr<stick_series<T>> ser;
+  if (st.stick_hi > st.stick_lo) {
+    ser = std::make_unique<stick_series<T>>(st.q, st.stick_lo, st.stick_hi);
+    if (!ser->ok()) ser.reset();
+  }
+  return std::make_shared<const traction_panels<T>>(
+      [&](const T &s, T &pv, T &qv) {
+        pv = st.p(s);
+        qv = ser && ser->inside(s) ? (*ser)(s) : st.q(s);
+      },
+      st.points(), st.kinks);
+}
+// Whether the state's Cauchy integrals need quadrature (no closed forms).
+template <class T> bool needs_panels(const contact_state<T> &st) {
+  cauchy_pair<T> P, Q;
+  return !(st.closed && st.closed(std::complex<T>(0, 1), P, Q));
 }
 
 }}  // namespace hs::core
