@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 #include <halfslip/halfslip.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -179,4 +180,65 @@ TEST_CASE("reference buffers: zero-length and short buffers report the size need
   sm.struct_size = 1;
   CHECK(hs_ref_solution_summary(sol, &sm) == HS_ERR_STRUCT_SIZE);
   hs_ref_solution_free(sol);
+}
+
+// The closed-form steady proportional cycle against the marched one (an independent
+// method: the march knows nothing of the superposition), its validity flag on the
+// ray that recedes, and its input contract.
+TEST_CASE("hs_solution_steady_cycle: Ciavarella-Jager closed form vs the marched cycle") {
+  for (const auto &qs : {std::make_pair(0.5, 0.4), std::make_pair(0.3, 1.0)}) {
+    CAPTURE(qs.first);
+    hs_scene s;
+    hs_scene_default(&s);
+    s.Q_over_fP = qs.first;
+    s.sigma_over_fp0 = qs.second;
+    hs_solution *sol = nullptr;
+    REQUIRE(hs_solve(&s, nullptr, &sol) == HS_OK);
+    hs_steady_cycle c;
+    std::memset(&c, 0, sizeof c);
+    c.struct_size = sizeof c;
+    REQUIRE(hs_solution_steady_cycle(sol, &c) == HS_OK);
+    CHECK(c.valid == 1);
+    CHECK(c.cycles_to_steady == 1);
+    double e[2];
+    REQUIRE(hs_solution_energy(sol, e) == HS_OK);
+    CHECK(c.energy_per_cycle1 == 4 * e[0]);
+    hs_history_options o;
+    hs_history_options_default(&o);
+    o.rtol = 1e-6;
+    hs_history *h = nullptr;
+    REQUIRE(hs_history_new(&s, nullptr, &o, &h) == HS_OK);
+    REQUIRE(hs_history_add_cycles(h, 0, qs.first, 0, qs.second, 0, 2) == HS_OK);
+    hs_cycle_summary m;
+    std::memset(&m, 0, sizeof m);
+    m.struct_size = sizeof m;
+    REQUIRE(hs_history_cycle_summary(h, &m) == HS_OK);
+    // the march at rtol 1e-6 was within 1e-7 of 4 E_mono (bench_history); 2e-6 relative
+    CHECK(std::fabs(m.energy_per_cycle1 - c.energy_per_cycle1) <= 2e-6 * c.energy_per_cycle1);
+    CHECK(std::fabs(m.energy_per_cycle2 - c.energy_per_cycle2) <= 2e-6 * std::max(c.energy_per_cycle1, c.energy_per_cycle2));
+    hs_history_free(h);
+    // contract
+    CHECK(hs_solution_steady_cycle(nullptr, &c) == HS_ERR_NULL_POINTER);
+    CHECK(hs_solution_steady_cycle(sol, nullptr) == HS_ERR_NULL_POINTER);
+    c.struct_size = sizeof c - 1;
+    CHECK(hs_solution_steady_cycle(sol, &c) == HS_ERR_STRUCT_SIZE);
+    hs_solution_free(sol);
+  }
+  // the ray s = 3q recedes before Q/fP = 0.88: the closed form does not apply
+  hs_scene s;
+  hs_scene_default(&s);
+  s.Q_over_fP = 0.88;
+  s.sigma_over_fp0 = 2.64;
+  hs_solution *sol = nullptr;
+  REQUIRE(hs_solve(&s, nullptr, &sol) == HS_OK);
+  hs_steady_cycle c;
+  std::memset(&c, 0, sizeof c);
+  c.struct_size = sizeof c;
+  REQUIRE(hs_solution_steady_cycle(sol, &c) == HS_OK);
+  CHECK(c.valid == 0);
+  int rec = 0;
+  double at = 0;
+  REQUIRE(hs_solution_ramp(sol, &rec, &at) == HS_OK);
+  CHECK(rec == 1);
+  hs_solution_free(sol);
 }

@@ -900,6 +900,8 @@ std::vector<std::pair<double, double>> parse_path(const std::string &t) {
 int cmd_history(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2, kHistoryKeys, {"--json"});
   const bool json = args.count("--json") > 0;
+  hs_steady_cycle closed;
+  bool have_closed = false;
   if (args.count("--path") == args.count("--cycle"))
     die("history needs exactly one of --path \"Q1,S1;Q2,S2;...\" and --cycle Qm,Qa,Sm,Sa,phase_deg");
   for (const char *k : {"--cycles", "--ramp", "--segments-per-cycle", "--steady-rtol"})
@@ -952,6 +954,20 @@ int cmd_history(int argc, char **argv) {
     const int n = args.count("--cycles") ? parse_int("--cycles", args.at("--cycles"), 1, 100000) : 10;
     check(hs_history_add_cycles(h, c[0] * qs, c[1] * qs, c[2] * ss, c[3] * ss, c[4], n), "history");
     cyc = true;
+    // symmetric proportional cycling (zero means, in phase or anti-phase or one amplitude
+    // zero): the closed form (Ciavarella-Jager) of the library, printed beside the march
+    const double ph = std::fmod(std::fabs(c[4]), 180.0);
+    if (c[0] == 0 && c[2] == 0 && (ph == 0 || c[1] == 0 || c[3] == 0) && (c[1] != 0 || c[3] != 0)) {
+      hs_scene amp = scene;
+      amp.Q_over_fP = c[1] * qs;
+      amp.sigma_over_fp0 = c[3] * ss * std::cos(c[4] * M_PI / 180);
+      hs_solution *ms = nullptr;
+      if (hs_solve_geometry(&amp, &geo, nullptr, &ms) == HS_OK) {
+        closed.struct_size = sizeof closed;
+        if (hs_solution_steady_cycle(ms, &closed) == HS_OK) have_closed = true;
+        hs_solution_free(ms);
+      }
+    }
   }
   size_t nv = 0;
   check(hs_history_vertex_count(h, &nv), "history");
@@ -1001,6 +1017,11 @@ int cmd_history(int argc, char **argv) {
                   cs.cycles, cs.cycles_to_steady < 0 ? "null" : std::to_string(cs.cycles_to_steady).c_str(),
                   cs.shakedown ? "true" : "false", num(cs.energy_per_cycle1).c_str(),
                   num(cs.energy_per_cycle2).c_str());
+      if (have_closed)
+        std::printf(", \"closed_form_valid\": %s, \"closed_form_energy_per_cycle1\": %s, "
+                    "\"closed_form_energy_per_cycle2\": %s",
+                    closed.valid ? "true" : "false", closed.valid ? num(closed.energy_per_cycle1).c_str() : "null",
+                    closed.valid ? num(closed.energy_per_cycle2).c_str() : "null");
       if (!xs.empty()) {
         std::printf(", \"slip_range\": [");
         for (size_t k = 0; k < xs.size(); ++k)
@@ -1032,6 +1053,11 @@ int cmd_history(int argc, char **argv) {
                   cs.shakedown ? " (shakedown: no slip in the last cycle)" : "");
       std::printf("energy per cycle (last cycle): zone 1 %.10g, zone 2 %.10g\n", cs.energy_per_cycle1,
                   cs.energy_per_cycle2);
+      if (have_closed && closed.valid)
+        std::printf("closed form (Ciavarella-Jager, steady from the first reversal): zone 1 %.10g, zone 2 %.10g\n",
+                    closed.energy_per_cycle1, closed.energy_per_cycle2);
+      else if (have_closed)
+        std::printf("closed form (Ciavarella-Jager) does not apply: a zone recedes on the ramp\n");
     }
     if (!xs.empty()) {
       check(hs_history_eval(h, nv - 1, HS_FIELD_TRACTION, xs.size(), xs.data(), qv.data()), "traction");

@@ -198,6 +198,12 @@ module halfslip
     real(c_double)    :: energy_per_cycle1 = 0, energy_per_cycle2 = 0
   end type hs_cycle_summary
 
+  type, bind(c), public :: hs_steady_cycle
+    integer(c_size_t) :: struct_size = 0
+    integer(c_int)    :: valid = 0, cycles_to_steady = 1
+    real(c_double)    :: energy_per_cycle1 = 0, energy_per_cycle2 = 0
+  end type hs_steady_cycle
+
   ! ---- handles ------------------------------------------------------------------
   type, public :: hs_solution_t
     type(c_ptr) :: ptr = c_null_ptr
@@ -250,7 +256,7 @@ module halfslip
   public :: hs_ref_max_digits, hs_ref_max_digits_geometry, hs_ref_solve, hs_ref_solution_free
   public :: hs_ref_solution_summary
   public :: hs_ref_value, hs_ref_eval
-  public :: hs_solution_ramp
+  public :: hs_solution_ramp, hs_solution_steady_cycle
   public :: hs_history_options_default, hs_history_new, hs_history_free, hs_history_add_vertices
   public :: hs_history_add_cycles, hs_history_vertex_count, hs_history_vertex_get, hs_history_eval
   public :: hs_history_cycle_summary, hs_history_slip_range
@@ -523,6 +529,13 @@ module halfslip
       real(c_double), intent(inout) :: at_Q_over_fP
       integer(c_int) :: st
     end function c_hs_solution_ramp
+
+    function c_hs_solution_steady_cycle(sol, out) bind(c, name="hs_solution_steady_cycle") result(st)
+      import :: c_int, c_ptr, hs_steady_cycle
+      type(c_ptr), value :: sol
+      type(hs_steady_cycle), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_solution_steady_cycle
 
     function c_hs_history_options_default(opts) bind(c, name="hs_history_options_default") result(st)
       import :: c_int, hs_history_options
@@ -1016,6 +1029,20 @@ contains
     if (st == HS_OK) recedes = r /= 0
     call check(st, 'hs_solution_ramp', ierr)
   end subroutine hs_solution_ramp
+
+  ! Symmetric proportional cycling between +(Q, sigma) and -(Q, sigma) of the solution in
+  ! closed form (Ciavarella-Jager); cycle%valid = 0 when a zone recedes on the ramp.
+  subroutine hs_solution_steady_cycle(sol, cycle, ierr)
+    type(hs_solution_t), intent(in) :: sol
+    type(hs_steady_cycle), intent(inout) :: cycle
+    integer, intent(out), optional :: ierr
+    type(hs_steady_cycle) :: tmp
+    integer(c_int) :: st
+    tmp%struct_size = c_sizeof(tmp)
+    st = c_hs_solution_steady_cycle(sol%ptr, tmp)
+    if (st == HS_OK) cycle = tmp
+    call check(st, 'hs_solution_steady_cycle', ierr)
+  end subroutine hs_solution_steady_cycle
 
   ! ---- load histories (since 0.4) --------------------------------------------------------
 

@@ -204,29 +204,48 @@ int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double
   });
 }
 
+namespace {
+// The monotonic stick half-width (units of a) at canonical loads, for the solution's pressure.
+double half_width_at(const hs_solution &sol, double q, double s) {
+  if (sol.model && !sol.hertz) {
+    core::general_scene<double> g;
+    g.a = 1; g.p0 = 1; g.f = 1; g.Estar = 1; g.q = q; g.s = s;
+    return core::solve_general<double>(*sol.model, g).half_width();
+  }
+  core::hertz_scene<double> hz;
+  hz.q = q; hz.s = s;
+  return core::solve_hertz<double>(hz).half_width();
+}
+}  // namespace
+
 int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
   return guard([&] {
     require(sol != nullptr && recedes != nullptr && at != nullptr, core::status::null_pointer, "NULL");
     const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
     const double s = sol->visit([](const auto &v) { return double(v.scene.s); });
     double where = std::numeric_limits<double>::quiet_NaN();
-    bool r = false;
-    if (sol->model && !sol->hertz) {
-      const auto &pm = *sol->model;
-      core::general_scene<double> g;
-      g.a = 1; g.p0 = 1; g.f = 1; g.Estar = 1;
-      r = core::ramp_recedes<double>(q, s, [&](double qq, double ss) {
-        g.q = qq; g.s = ss;
-        return core::solve_general<double>(pm, g).half_width();
-      }, where);
-    } else {
-      core::hertz_scene<double> hz;
-      r = core::ramp_recedes<double>(q, s, [&](double qq, double ss) {
-        hz.q = qq; hz.s = ss;
-        return core::solve_hertz<double>(hz).half_width();
-      }, where);
-    }
+    const bool r = core::ramp_recedes<double>(q, s, [&](double qq, double ss) { return half_width_at(*sol, qq, ss); },
+                                              where);
     *recedes = r ? 1 : 0;
     *at = r ? where : std::numeric_limits<double>::quiet_NaN();
+  });
+}
+
+int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out) {
+  return guard([&] {
+    require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL");
+    require(out->struct_size == sizeof *out, core::status::struct_size, "steady cycle struct_size");
+    const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
+    const double s = sol->visit([](const auto &v) { return double(v.scene.s); });
+    const double e1 = sol->visit([](const auto &v) { return double(v.energy(1)); });
+    const double e2 = sol->visit([](const auto &v) { return double(v.energy(2)); });
+    require(std::isfinite(e1) && std::isfinite(e2), core::status::overflow, "energy not representable");
+    const bool may_recede = q != 0 && s != 0 && std::fabs(s) > 2 * std::fabs(q);
+    const double e = may_recede ? half_width_at(*sol, q, s) : 1.0;
+    const auto c = core::proportional_steady_cycle<double>(q, s, e, e1, e2);
+    out->valid = c.valid ? 1 : 0;
+    out->cycles_to_steady = c.cycles_to_steady;
+    out->energy_per_cycle1 = c.energy1;
+    out->energy_per_cycle2 = c.energy2;
   });
 }

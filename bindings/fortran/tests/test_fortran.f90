@@ -578,6 +578,8 @@ contains
     type(hs_history_options) :: ho
     type(hs_history_vertex) :: v0, v1, v
     type(hs_cycle_summary) :: cs
+    type(hs_steady_cycle) :: cyc
+    real(c_double) :: emono(2)
     type(hs_solution_t) :: sol
     real(c_double) :: x(2), q(2), h(2), E(2), c, at
     real(c_double) :: qs(2), ss(2)
@@ -705,6 +707,18 @@ contains
     call hs_solution_free(sol)
     call hs_solution_ramp(sol, recedes, at, ierr)
     call expect_code(ierr, HS_ERR_NULL_POINTER, 'hs_solution_ramp: null handle')
+    ! the closed-form steady proportional cycle: 4 E_mono per cycle; invalid on a receding ray
+    call hs_solve(scene_qs(0.5_c_double, 0.4_c_double), sol)
+    call hs_solution_steady_cycle(sol, cyc, ierr)
+    call expect_code(ierr, HS_OK, 'hs_solution_steady_cycle')
+    call hs_solution_energy(sol, emono)
+    call expect(cyc%valid == 1 .and. cyc%cycles_to_steady == 1 .and. &
+                cyc%energy_per_cycle1 == 4 * emono(1), 'steady cycle: valid, 4 E_mono')
+    call hs_solution_free(sol)
+    call hs_solve(scene_qs(0.88_c_double, 2.64_c_double), sol)
+    call hs_solution_steady_cycle(sol, cyc)
+    call expect(cyc%valid == 0, 'steady cycle: not valid where the ramp recedes')
+    call hs_solution_free(sol)
   end subroutine test_history
 
   ! Issue 15: traction and stresses through the wrappers, against closed forms

@@ -754,6 +754,23 @@ class Solution(_Handle):
         return Ramp(bool(recedes.value), at.value)
 
 
+    def steady_cycle(self):
+        """SteadyCycle(valid, cycles_to_steady, energy_per_cycle1, energy_per_cycle2)
+        of hs_solution_steady_cycle: symmetric proportional cycling between
+        +(Q, sigma) and -(Q, sigma) in closed form (Ciavarella-Jager). valid is
+        False when a zone recedes on the ramp (march it with History instead);
+        the slip range over a cycle is 2 * slip(x)."""
+        c = _clib.SteadyCycle()
+        c.struct_size = ctypes.sizeof(c)
+        st = _lib.hs_solution_steady_cycle(self._handle(), byref(c))
+        if st != 0:
+            _raise(st, "hs_solution_steady_cycle", self._callback)
+        return SteadyCycle(bool(c.valid), c.cycles_to_steady, c.energy_per_cycle1, c.energy_per_cycle2)
+
+
+SteadyCycle = collections.namedtuple("SteadyCycle", "valid cycles_to_steady energy_per_cycle1 energy_per_cycle2")
+SteadyCycle.__doc__ = "Result of Solution.steady_cycle() (hs_solution_steady_cycle)."
+
 Ramp = collections.namedtuple("Ramp", "recedes at_Q_over_fP")
 Ramp.__doc__ = "Result of Solution.ramp() (hs_solution_ramp)."
 

@@ -162,6 +162,17 @@ class CycleSummary(ctypes.Structure):
     ]
 
 
+class SteadyCycle(ctypes.Structure):
+    """struct hs_steady_cycle (after 0.4.0)"""
+    _fields_ = [
+        ("struct_size", c_size_t),
+        ("valid", c_int),
+        ("cycles_to_steady", c_int),
+        ("energy_per_cycle1", c_double),
+        ("energy_per_cycle2", c_double),
+    ]
+
+
 class _Solution(ctypes.Structure):
     """opaque struct hs_solution"""
 
@@ -217,6 +228,7 @@ _SIGNATURES = {
     "hs_history_vertex_get": (c_int, [HistoryP, c_size_t, POINTER(HistoryVertex)]),
     "hs_history_eval": (c_int, [HistoryP, c_size_t, c_int, c_size_t, _DoubleP, _DoubleP]),
     "hs_history_cycle_summary": (c_int, [HistoryP, POINTER(CycleSummary)]),
+    "hs_solution_steady_cycle": (c_int, [SolutionP, POINTER(SteadyCycle)]),
     "hs_history_slip_range": (c_int, [HistoryP, c_size_t, _DoubleP, _DoubleP]),
     "hs_ref_scene_default": (c_int, [POINTER(RefScene)]),
     "hs_ref_max_digits": (c_int, []),

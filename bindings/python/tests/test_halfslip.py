@@ -660,6 +660,20 @@ class TestHistory(unittest.TestCase):
         with self.assertRaises(ValueError):
             sol.ramp()   # closed
 
+    def test_steady_cycle(self):
+        # closed form against the marched cycle (History), and invalid on a receding ray
+        with halfslip.solve(Q_over_fP=0.5, sigma_over_fp0=0.4) as sol:
+            c = sol.steady_cycle()
+            self.assertIsInstance(c, halfslip.SteadyCycle)
+            self.assertIs(c.valid, True)
+            self.assertEqual(c.cycles_to_steady, 1)
+            e1, e2 = sol.energy()
+            self.assertEqual(c.energy_per_cycle1, 4 * e1)
+        with halfslip.solve(Q_over_fP=0.88, sigma_over_fp0=2.64) as sol:
+            self.assertIs(sol.steady_cycle().valid, False)
+        with self.assertRaises(ValueError):
+            sol.steady_cycle()   # closed
+
     def test_errors(self):
         def status(fn, *args, **kw):
             with self.assertRaises(HalfslipError) as cm:

@@ -442,6 +442,24 @@ HS_EXPORT int hs_history_slip_range(const hs_history *h, size_t n, const double 
  * ramp reaches; docs/history.md), and the Q/fP where that first happens (NaN if not). */
 HS_EXPORT int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at_Q_over_fP);
 
+/* Symmetric proportional cycling between +(Q, sigma) and -(Q, sigma) of the
+ * solution, reached by the proportional ramp from zero, in closed form
+ * (Ciavarella-Jager superposition; docs/history.md). valid = 0 when a zone
+ * recedes on the ramp (march the cycle with hs_history_add_cycles instead). The
+ * cycle is steady from the first reversal; the stick zone at +(Q, sigma) is the
+ * solution's (at -(Q, sigma) the same, directions flipped); each zone dissipates
+ * 4 times its monotonic energy per cycle (hs_solution_energy units); the slip
+ * range over a cycle is 2 h(x) (hs_eval with HS_FIELD_SLIP). The solution's
+ * model carries over: a reference-backend solution gives certified energies. */
+typedef struct hs_steady_cycle {
+  size_t struct_size;          /* = sizeof(hs_steady_cycle) */
+  int valid;                   /* 1: the closed form applies */
+  int cycles_to_steady;        /* 1 */
+  double energy_per_cycle1;    /* zone 1, units f^2 p0^2 a^2 / E* (as hs_solution_energy) */
+  double energy_per_cycle2;
+} hs_steady_cycle;
+HS_EXPORT int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1201,6 +1201,33 @@ template <class T, class EOf> bool ramp_recedes(const T &q, const T &s, const EO
 // the path replayed from zero) until the two agree to rtol at every vertex:
 // zone ends in units of a, energies relative to the largest energy of the
 // path. The error estimate of the finer march is that difference.
+// Symmetric proportional cycling between +(q, s) and -(q, s), reached by the
+// proportional ramp from zero to +(q, s): Ciavarella-Jager superposition at
+// constant normal load (docs/history.md). Each reversal subtracts the monotonic
+// solution of twice the load with friction 2f, whose zones are those of the
+// monotonic solution at (q, s): the cycle is steady from the first reversal, the
+// zones at +-(q, s) are the monotonic ones (directions flipped at -(q, s)), each
+// zone dissipates 4 E_i per cycle (E_i its monotonic energy) and the slip range
+// over a cycle is 2 h(x) (h the monotonic slip). It holds only when no zone
+// receded on the ramp: e(q, s) > 2 / |s/q| whenever |s/q| > 2 (e the monotonic
+// stick half-width in units of a, which falls along the ramp); otherwise the
+// cycle must be marched (history, add_cycles).
+template <class T> struct proportional_cycle {
+  bool valid = false;        // the superposition applies (no zone receded on the ramp)
+  int cycles_to_steady = 1;  // the first reversal already gives the steady cycle
+  T energy1{0}, energy2{0};  // per cycle, in the units of E1, E2
+};
+template <class T>
+proportional_cycle<T> proportional_steady_cycle(const T &q, const T &s, const T &e, const T &E1, const T &E2) {
+  using std::abs;
+  proportional_cycle<T> r;
+  const bool can_recede = q != 0 && s != 0 && abs(s) > 2 * abs(q);
+  r.valid = !(can_recede && !(e > 2 * abs(q) / abs(s)));
+  r.energy1 = 4 * E1;
+  r.energy2 = 4 * E2;
+  return r;
+}
+
 template <class T> class refined_history {
  public:
   using pressure_ptr = typename history<T>::pressure_ptr;
