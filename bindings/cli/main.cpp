@@ -986,11 +986,17 @@ int cmd_history(int argc, char **argv) {
   if (cyc && !xs.empty()) check(hs_history_slip_range(h, xs.size(), xs.data(), dh.data()), "slip range");
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
   if (json) {
+    // whole-path figures: the smallest step and the largest (per-segment) estimate
+    double smin = nv ? vs[0].step : ho.max_step, emax = 0;
+    for (const auto &v : vs) {
+      smin = std::min(smin, v.step);
+      emax = std::max(emax, v.error_estimate);
+    }
     std::printf("{\"geometry\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, \"E_star\": %s, "
                 "\"rtol\": %s, \"step\": %s, \"error_estimate\": %s, \"vertices\": [",
                 geometry.c_str(), num(scene.a).c_str(), num(scene.p0).c_str(), num(P).c_str(),
-                num(scene.f).c_str(), num(scene.E_star).c_str(), num(ho.rtol).c_str(),
-                num(nv ? vs[nv - 1].step : ho.max_step).c_str(), num(nv ? vs[nv - 1].error_estimate : 0.0).c_str());
+                num(scene.f).c_str(), num(scene.E_star).c_str(), num(ho.rtol).c_str(), num(smin).c_str(),
+                num(emax).c_str());
     for (size_t i = 0; i < nv; ++i) {
       const auto &v = vs[i];
       std::printf("%s{\"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, \"slip_dir1\": %d, "
@@ -998,7 +1004,7 @@ int cmd_history(int argc, char **argv) {
                   i ? ", " : "", num(v.Q_over_fP).c_str(), num(v.sigma_over_fp0).c_str(), num(v.b1).c_str(),
                   num(v.b2).c_str(), v.slip_dir1, v.slip_dir2, num(v.energy1).c_str(), num(v.energy2).c_str(),
                   v.cycle, v.steps);
-      if (i + 1 == nv) std::printf(", \"step\": %s, \"error_estimate\": %s", num(v.step).c_str(), num(v.error_estimate).c_str());
+      std::printf(", \"step\": %s, \"error_estimate\": %s", num(v.step).c_str(), num(v.error_estimate).c_str());
       if (!xs.empty()) {
         check(hs_history_eval(h, i, HS_FIELD_TRACTION, xs.size(), xs.data(), qv.data()), "traction");
         check(hs_history_eval(h, i, HS_FIELD_SLIP, xs.size(), xs.data(), hv.data()), "slip");
@@ -1036,9 +1042,16 @@ int cmd_history(int argc, char **argv) {
     std::printf("  a = %.10g, p0 = %.10g, P = %.10g (per unit length), f = %.10g, E* = %.10g\n", scene.a, scene.p0,
                 P, scene.f, scene.E_star);
     std::printf("  energies per unit length; stick zone (-b2, b1); slip direction 0: that edge does not slip\n");
-    if (nv)
-      std::printf("  load step %.6g after refinement, estimated error %.2g (rtol %.2g)\n", vs[nv - 1].step,
-                  vs[nv - 1].error_estimate, ho.rtol);
+    if (nv) {
+      double smin = vs[0].step, smax = vs[0].step, emax = 0;
+      for (const auto &v : vs) {
+        smin = std::min(smin, v.step);
+        smax = std::max(smax, v.step);
+        emax = std::max(emax, v.error_estimate);
+      }
+      std::printf("  load steps %.6g to %.6g after refinement per segment, estimated error %.2g (rtol %.2g per segment)\n",
+                  smin, smax, emax, ho.rtol);
+    }
     std::printf("%6s %5s %13s %13s %12s %12s %5s %5s %13s %13s %8s\n", "vertex", "cycle", "Q/fP", "sigma/fp0",
                 "b1/a", "b2/a", "dir1", "dir2", "energy1", "energy2", "steps");
     for (size_t i = 0; i < nv; ++i) {

@@ -135,8 +135,8 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
     out->energy2 = escale * v.energy2;
     out->cycle = v.cycle;
     out->steps = long(v.step_end);
-    out->step = h->h->step();
-    out->error_estimate = h->h->error_estimate();
+    out->step = v.step > 0 ? v.step : h->h->step();
+    out->error_estimate = v.step > 0 ? v.error_estimate : h->h->error_estimate();
     out->interior_merges = long(v.interior_merges);
   });
 }

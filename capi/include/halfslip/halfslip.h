@@ -412,8 +412,10 @@ typedef struct hs_history_vertex {
   double energy1, energy2;  /* dissipated in zone 1 (x > b1) and zone 2 over the segment ending here */
   int cycle;                /* 0: path or ramp; k >= 1: the k-th cycle of hs_history_add_cycles */
   long steps;               /* load steps marched up to this vertex */
-  double step;              /* the load step used (after refinement) */
-  double error_estimate;    /* estimated error of the march (units as for rtol), whole history */
+  double step;              /* the load step of the segment ending here (after refinement) */
+  double error_estimate;    /* estimated error at this vertex (units as for rtol): the sum over the
+                               segments so far of the differences of their marches at steps 2h
+                               and h over 7 (each from the state before it: local error control) */
   long interior_merges;     /* interior slip patches merged with an edge zone so far (an approximation;
                                0: none; docs/history.md) */
 } hs_history_vertex;
