@@ -7,6 +7,7 @@
 #   bench/results/methods.csv, stability.csv  every model: speed, accuracy, stability (issue 5);
 #     charts docs/figures/speed_accuracy.svg, docs/figures/stability.svg (docs/benchmarks.md)
 #   bench/results/fields.csv, fields_accuracy.csv  stresses (issue 15; Google Benchmark)
+#   bench/results/samples.csv    sampled pressure: time and accuracy against the sample count (issue 13)
 # The charts are drawn by halfslip.plot (matplotlib): Debian's /usr/bin/python3 with
 # python3-matplotlib (HS_PYTHON overrides it).
 set -euo pipefail
@@ -29,6 +30,8 @@ plot "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$HS_
 "$HS_BUILD/bench/bench_history" "$HS_ROOT/bench/results/history.csv" | tee "$HS_ROOT/bench/results/history_summary.md"
 # point evaluations and energies on the general path
 "$HS_BUILD/bench/bench_points" | tee "$HS_ROOT/bench/results/points.txt"
+# sampled pressure against the sample count, 10^3 to 10^6 (issue 13 item 4)
+"$HS_BUILD/bench/bench_samples" | tee "$HS_ROOT/bench/results/samples.csv"
 # stresses (issue 15): surface and subsurface speed (Google Benchmark), accuracy vs quadrature from scratch
 if [ -x "$HS_BUILD/bench/bench_fields" ]; then
   "$HS_BUILD/bench/bench_fields" "$HS_ROOT/bench/results/fields_accuracy.csv" --benchmark_repetitions=5 \

@@ -553,6 +553,9 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
     // edge values of phi by linear extrapolation must stay positive
     if (!(f_[0] - d_[0] * dm_[0] > 0) || !(f_[n - 1] + d_[n - 1] * dp_[n - 1] > 0))
       throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
+    // a panel end at every knot (phi is only C^1 there), built once: the
+    // quadratures ask for the list per Cauchy integral (issue 13 item 4)
+    for (const T &x : x_) bps_.push_back({x, false});
     // normalisation: P = a^2 int_{-1}^{1} sqrt(1-xi^2) phi(xi) dxi (phi dimensional)
     scale_ = 1;
     const T I = this->tail(+1, T(2));  // int p with scale 1 (phi in p/sqrt units / a)
@@ -562,11 +565,8 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
   }
   T phi(const T &x, const T &, const T &) const override { return scale_ * interp(x, false); }
   T dphi(const T &x, const T &, const T &) const override { return scale_ * interp(x, true); }
-  std::vector<breakpoint<T>> breakpoints() const override {
-    std::vector<breakpoint<T>> b;
-    for (const T &x : x_) b.push_back({x, false});
-    return b;
-  }
+  std::vector<breakpoint<T>> breakpoints() const override { return bps_; }
+  std::size_t knot_count() const { return x_.size(); }
   T load() const { return P_; }      // P
   T p0() const { return p0_; }       // 2P/(pi a)
   T half_width() const { return a_; }
@@ -587,6 +587,7 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
   }
   T a_;
   std::vector<T> x_, f_, d_, praw_, dm_, dp_;
+  std::vector<breakpoint<T>> bps_;
   T scale_{1}, P_{0}, p0_{1};
 };
 
