@@ -240,9 +240,7 @@ int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out) {
     const double e1 = sol->visit([](const auto &v) { return double(v.energy(1)); });
     const double e2 = sol->visit([](const auto &v) { return double(v.energy(2)); });
     require(std::isfinite(e1) && std::isfinite(e2), core::status::overflow, "energy not representable");
-    const bool may_recede = q != 0 && s != 0 && std::fabs(s) > 2 * std::fabs(q);
-    const double e = may_recede ? half_width_at(*sol, q, s) : 1.0;
-    const auto c = core::proportional_steady_cycle<double>(q, s, e, e1, e2);
+    const auto c = core::proportional_steady_cycle<double>(q, s, [&] { return half_width_at(*sol, q, s); }, e1, e2);
     out->valid = c.valid ? 1 : 0;
     out->cycles_to_steady = c.cycles_to_steady;
     out->energy_per_cycle1 = c.energy1;

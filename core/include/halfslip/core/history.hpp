@@ -210,9 +210,6 @@ template <class T> class history {
             if (end_driven_step(dq, ds, i, bi - db_max / 2, fmax, se)) {
               const T mv = max(abs(se.e1.bb - b1_), abs(se.e2.bb - b2_));
               if (mv <= db_max) {
-#ifdef HS_HISTORY_DEBUG2
-                fprintf(stderr, "by_end %d: frac %.17g -> %.17g\n", i, double(fmax), double(se.len));
-#endif
                 st = se; frac = se.len; return true;
               }
             }
@@ -884,65 +881,50 @@ template <class T> class history {
     auto xat = [&](const T &d) { return i == 1 ? b1 - d : -b2 + d; };
     T d_in = 0, d_out = -1;
     if (near > 0) {
-      // only a region that starts at the end
+      // only a region that starts at the end: bracket its inner edge by doubling
       const T d1 = L * T(1) / T(M * M) * T(0.75) / 64;
       if (!(limit_ratio(i, xat(d1), nullptr) >= below)) return false;
       d_in = d1;
-      T d = d1;
-      while (d < T(0.75) * L && limit_ratio(i, xat(2 * d), nullptr) >= below) { d *= 2; d_in = d; }
-      d_out = 2 * d;
-      for (int it = 0; it < 200 && d_out - d_in > 4 * eps<T>() * (1 + L); ++it) {
-        const T m = (d_in + d_out) / 2;
-        if (limit_ratio(i, xat(m), nullptr) >= below) d_in = m; else d_out = m;
+      while (d_in < T(0.75) * L && limit_ratio(i, xat(2 * d_in), nullptr) >= below) d_in *= 2;
+      d_out = 2 * d_in;
+    } else {
+      if (!(limit_margin(i, nullptr) > limit_tol() / 2)) {  // located short of the limit: nothing to do
+        ++noop_erase_;
+        return false;
       }
-#ifdef HS_HISTORY_DEBUG2
-      fprintf(stderr, "near-limit erase end %d: b %.9f -> %.9f\n", i, double(i == 1 ? b1 : b2), double((i == 1 ? b1 : b2) - d_in));
-#endif
-      if (i == 1) jump(b1 - d_in, b2_); else jump(b1_, b2 - d_in);
-      return true;
-    }
-    if (!(limit_margin(i, nullptr) > limit_tol() / 2)) {  // located short of the limit: nothing to do
-#ifdef HS_HISTORY_DEBUG2
-      fprintf(stderr, "erase noop: margin %g\n", double(limit_margin(i, nullptr)));
-#endif
-      ++noop_erase_;
-      return false;
-    }
-    // the contiguous region at the limit next to the end; if the limit is reached
-    // only further in (an interior slip patch), the band between is merged with
-    // the zone: the patch and the band slip together (counted in interior_merges)
-    bool at_end = true;
-    for (int k = 1; k <= M; ++k) {
-      const T d = L * T(k * k) / T(M * M) * T(0.75);
-      const T v = limit_ratio(i, xat(d), nullptr);
-      if (v >= below) { d_in = d; continue; }
-      if (d_in == 0 && at_end) {
-        at_end = false;
-        // look further in for the patch
-        bool patch = false;
-        for (int j = k + 1; j <= M; ++j) {
-          const T dj = L * T(j * j) / T(M * M) * T(0.75);
-          if (limit_ratio(i, xat(dj), nullptr) >= below) { patch = true; d_in = dj; k = j; break; }
+      // the contiguous region at the limit next to the end; if the limit is reached
+      // only further in (an interior slip patch), the band between is merged with
+      // the zone: the patch and the band slip together (counted in interior_merges)
+      bool at_end = true;
+      for (int k = 1; k <= M; ++k) {
+        const T d = L * T(k * k) / T(M * M) * T(0.75);
+        const T v = limit_ratio(i, xat(d), nullptr);
+        if (v >= below) { d_in = d; continue; }
+        if (d_in == 0 && at_end) {
+          at_end = false;
+          // look further in for the patch
+          bool patch = false;
+          for (int j = k + 1; j <= M; ++j) {
+            const T dj = L * T(j * j) / T(M * M) * T(0.75);
+            if (limit_ratio(i, xat(dj), nullptr) >= below) { patch = true; d_in = dj; k = j; break; }
+          }
+          if (!patch) break;
+          ++interior_merges_;
+          continue;
         }
-        if (!patch) break;
-        ++interior_merges_;
-        continue;
+        d_out = d;
+        break;
       }
-      d_out = d;
-      break;
+      if (d_in == 0) {
+        ++noop_erase_;
+        return false;
+      }
+      if (d_out < 0) throw error(status::no_convergence, "history: the whole stick zone reached the friction limit");
     }
-    if (d_in == 0) {
-      ++noop_erase_;
-      return false;
-    }
-    if (d_out < 0) throw error(status::no_convergence, "history: the whole stick zone reached the friction limit");
     for (int it = 0; it < 200 && d_out - d_in > 4 * eps<T>() * (1 + L); ++it) {
       const T m = (d_in + d_out) / 2;
       if (limit_ratio(i, xat(m), nullptr) >= below) d_in = m; else d_out = m;
     }
-#ifdef HS_HISTORY_DEBUG2
-    fprintf(stderr, "erase end %d at q=%g s=%g: b %.6f -> %.6f\n", i, double(q_), double(s_), double(i == 1 ? b1 : b2), double((i == 1 ? b1 : b2) - d_in));
-#endif
     if (i == 1) jump(b1 - d_in, b2_); else jump(b1_, b2 - d_in);
     return true;
   }
@@ -965,9 +947,6 @@ template <class T> class history {
     if (ev == 4 && st.e2.bb > 1) st.e2.bb = 1;
   }
   void after_event(int ev) {
-#ifdef HS_HISTORY_DEBUG2
-    fprintf(stderr, "event %d at b1=%.9f b2=%.9f s=%d,%d m=%d,%d\n", ev, double(b1_), double(b2_), s1_, s2_, int(m1_), int(m2_));
-#endif
     if (ev == 3 && b1_ >= 1 - 16 * eps<T>()) { s1_ = 0; m1_ = edge; b1_ = 1; }
     if (ev == 4 && b2_ >= 1 - 16 * eps<T>()) { s2_ = 0; m2_ = edge; b2_ = 1; }
     if (ev == 5) erase_at_limit(1);
@@ -982,9 +961,6 @@ template <class T> class history {
     if (steps_.size() >= size_t(opt_.max_steps))
       throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
     step_energy(st);
-#ifdef HS_HISTORY_DEBUG2
-    fprintf(stderr, "commit q=%.6f s=%.6f frac=%.3e b %.12f %.12f s %d %d m %d %d\n", double(st.q0 + st.dq), double(st.s0 + st.ds), double(frac), double(st.e1.bb), double(st.e2.bb), s1_, s2_, int(m1_), int(m2_));
-#endif
     steps_.push_back(st);
     b1_ = st.e1.bb;
     b2_ = st.e2.bb;
@@ -1229,12 +1205,13 @@ template <class T> struct proportional_cycle {
   int cycles_to_steady = 1;  // the first reversal already gives the steady cycle
   T energy1{0}, energy2{0};  // per cycle, in the units of E1, E2
 };
-template <class T>
-proportional_cycle<T> proportional_steady_cycle(const T &q, const T &s, const T &e, const T &E1, const T &E2) {
+// e_of(): the monotonic stick half-width at (q, s), called only where a zone can recede.
+template <class T, class EOf>
+proportional_cycle<T> proportional_steady_cycle(const T &q, const T &s, const EOf &e_of, const T &E1, const T &E2) {
   using std::abs;
   proportional_cycle<T> r;
   const bool can_recede = q != 0 && s != 0 && abs(s) > 2 * abs(q);
-  r.valid = !(can_recede && !(e > 2 * abs(q) / abs(s)));
+  r.valid = !(can_recede && !(e_of() > 2 * abs(q) / abs(s)));
   r.energy1 = 4 * E1;
   r.energy2 = 4 * E2;
   return r;
