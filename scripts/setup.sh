@@ -35,4 +35,5 @@ hs_build() {
 }
 
 hs_install_missing
-hs_build
+# HS_SKIP_BUILD=1: packages only (scripts/bench_compare.sh builds its own trees)
+[ "${HS_SKIP_BUILD:-0}" = 1 ] || hs_build
