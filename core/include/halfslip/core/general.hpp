@@ -55,17 +55,12 @@
 #include <vector>
 
 #include "hertz.hpp"
+#include "newton.hpp"
 #include "numerics.hpp"
 #include "pressure.hpp"
 #include "status.hpp"
 
 namespace hs { namespace core {
-
-template <class T> struct general_scene {
-  T a{1}, p0{1}, f{1}, Estar{1};  // p0 = 2P/(pi a)
-  T q{0};                          // Q / (f P)
-  T s{0};                          // sigma / (f p0)
-};
 
 template <class T> struct general_options {
   int max_iterations = 100;  // Newton iterations per solve (continuation: per step)
@@ -915,12 +910,11 @@ bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_s
     // tangent predictor
     general_state<T> pred = st;
     const general_eval<T> r = general_residual(pm, q, sc, st, n, true);
-    const T det = r.J11 * r.J22 - r.J12 * r.J21;
-    if (det != 0) {
-      const T pi_ = pi<T>();
-      const T Fs1 = -pi_ / 4, Fs2 = 0;  // F2 (the moment about the centre) has no s
-      const T dx = -(Fs1 * r.J22 - Fs2 * r.J12) / det;
-      const T dy = -(r.J11 * Fs2 - r.J21 * Fs1) / det;
+    const T pi_ = pi<T>();
+    const T Fs1 = -pi_ / 4, Fs2 = 0;  // F2 (the moment about the centre) has no s
+    const auto x = solve2x2(r.J11, r.J12, r.J21, r.J22, Fs1, Fs2);
+    if (x.det != 0) {
+      const T dx = -x.x1, dy = -x.x2;
       general_state<T> p2{st.x1 + ds * dx, st.e * exp(ds * dy)};
       if (p2.e > tiny && p2.d2() > 0 && p2.d1() < 2) pred = p2;
     }
@@ -949,11 +943,7 @@ template <class T>
 general_solution<T> solve_general(const pressure_model<T> &pm, const general_scene<T> &sc,
                                   const general_options<T> &opt = {}) {
   using std::abs; using std::max; using std::sqrt;
-  {
-    hertz_scene<T> hs;
-    hs.a = sc.a; hs.p0 = sc.p0; hs.f = sc.f; hs.Estar = sc.Estar; hs.q = sc.q; hs.s = sc.s;
-    validate(hs);
-  }
+  validate(sc);
   if (opt.max_iterations < 1 || opt.max_order < 2 || !(opt.rtol >= 0))
     throw error(status::bad_option, "bad solver options");
   general_solution<T> sol;
@@ -1038,11 +1028,10 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
   for (;;) {
     const general_eval<T> r2 = general_residual(P, q, s, st, 2 * n, true);
     if (gdetail::residual_norm(r2) <= qtol) {
-      const T det = r2.J11 * r2.J22 - r2.J12 * r2.J21;
-      if (det != 0) {
+      const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
+      if (x.det != 0) {
         using std::exp;
-        const T dx = -(r2.F1 * r2.J22 - r2.F2 * r2.J12) / det;
-        const T dy = -(r2.J11 * r2.F2 - r2.J21 * r2.F1) / det;
+        const T dx = -x.x1, dy = -x.x2;
         general_state<T> ns{st.x1 + dx, st.e * exp(dy)};
         // keep the regime of the accepted state unless the state sits on the boundary
         if (ns.d2() > 0 && ns.e > 0 && (ns.x1 == 0 || (ns.x1 > 0) == (st.x1 > 0) || abs(st.x1) <= qtol))

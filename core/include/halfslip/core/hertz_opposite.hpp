@@ -23,6 +23,7 @@
 #include <type_traits>
 
 #include "elliptic.hpp"
+#include "newton.hpp"
 #include "numerics.hpp"
 #include "status.hpp"
 
@@ -69,6 +70,19 @@ template <class T> struct opposite_basis {
   }
 };
 
+// 3 b1^2 - 2 b1 b2 + 3 b2^2 - 4 written in d1 = 1 - b1, d2 = 1 - b2
+template <class T> T moments_poly(const T &d1, const T &d2) {
+  return -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;
+}
+
+// The single-zone moments A0, A1 from the Carlson basis B of the state (d1, d2, e)
+// (docs/errata.md: the corrected eqs (23)/(24)).
+template <class T, class Basis> void opposite_moments_of(const Basis &B, const T &d1, const T &d2, T &A0, T &A1) {
+  const T bdiff = d2 - d1;
+  A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
+  A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * moments_poly(d1, d2) * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
+}
+
 // Residuals and their derivatives in the coordinates c = (beta1 - beta2)/2
 // (centre of the stick zone) and ln e (e = beta1 + beta2). Written so that
 // every entry stays finite as e -> 0: R_D(0,Q,P) ~ 1/sqrt(e) enters only as
@@ -88,9 +102,9 @@ opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<
   const T d1 = st.d1, d2 = st.d2, e = st.e;
   const T b1 = 1 - d1, bdiff = d2 - d1;  // beta1 - beta2
   const Basis B(st);
-  const T A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
-  const T poly = -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;  // 3b1^2-2b1b2+3b2^2-4
-  const T A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * poly * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
+  const T poly = moments_poly(d1, d2);
+  T A0, A1;
+  opposite_moments_of(B, d1, d2, A0, A1);
   opposite_eval<T> r;
   r.F1 = pi_ * bdiff / 2 + 2 * A0 - pi_ * s / 4;
   // D1 = pi(3(b1^2+b2^2)/8 - b1 b2/4 - 1/2) written in d's (no cancellation)
@@ -111,13 +125,9 @@ opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<
   return r;
 }
 
-// The single-zone moments A0, A1 (exposed for tests).
+// The single-zone moments A0, A1 (exposed for tests: the residual's own formulas).
 template <class T> void opposite_moments(const opposite_state<T> &st, T &A0, T &A1) {
-  const T d1 = st.d1, d2 = st.d2, bdiff = d2 - d1;
-  const opposite_basis<T> B(st);
-  A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
-  const T poly = -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;
-  A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * poly * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
+  opposite_moments_of(opposite_basis<T>(st), st.d1, st.d2, A0, A1);
 }
 
 // G(x) = int_{beta1}^{1} sqrt(1-t^2)/(sqrt((t-beta1)(t+beta2)) (t-x)) dt for a
@@ -309,10 +319,9 @@ opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T
   else w.e = 2 - w.d1 - w.d2;
   const auto r = opposite_residual<R>(R(q), R(s), w);
   // coordinates (c, ln e): dc changes d1 by -dc, d2 by +dc; ln e as in Newton
-  const R det = r.F1c * r.F2l - r.F1l * r.F2c;
-  if (!(det != 0)) return st;
-  const R dc = -(r.F1 * r.F2l - r.F2 * r.F1l) / det;
-  const R dl = -(r.F1c * r.F2 - r.F2c * r.F1) / det;
+  const auto x = solve2x2(r.F1c, r.F1l, r.F2c, r.F2l, r.F1, r.F2);
+  if (!(x.det != 0)) return st;
+  const R dc = -x.x1, dl = -x.x2;
   const R de = w.e * expm1(dl);
   opposite_state<R> n{w.d1 - dc - de / 2, w.d2 + dc - de / 2, w.e + de, le + dl};
   if (!(n.d1 > 0 && n.d2 > 0 && n.e >= 0)) return st;

@@ -41,6 +41,7 @@
 
 #include <boost/math/tools/roots.hpp>
 
+#include "newton.hpp"
 #include "numerics.hpp"
 #include "pressure.hpp"
 #include "status.hpp"
@@ -754,9 +755,9 @@ template <class T> class history {
       fresh = false;
       T d1 = 0, d2 = 0;
       if (a1 && a2) {
-        const T det = j11 * j22 - j12 * j21;
-        d1 = (f1 * j22 - f2 * j12) / det;
-        d2 = (j11 * f2 - j21 * f1) / det;
+        const auto x = solve2x2(j11, j12, j21, j22, f1, f2);
+        d1 = x.x1;
+        d2 = x.x2;
       } else if (a1) {
         d1 = f1 / j11;
       } else {
