@@ -208,52 +208,6 @@ template <class T, class F> void for_nodes_c(const std::vector<panel<T>> &panels
   }
 }
 
-// Gauss-Legendre rule of order n with its Legendre table P_j(x_k), j <= n, and
-// the cumulative matrix S_ik = int_{x_i}^{1} l_k(x) dx of the Lagrange basis
-// (exact for polynomials of degree < n). Cached per (n, precision).
-template <class T> struct gl_cumulative {
-  std::shared_ptr<const gl_rule<T>> rule;
-  std::vector<T> P;  // P[k * (n + 1) + j] = P_j(x_k)
-  std::vector<T> S;  // S[i * n + k]
-  int n = 0;
-};
-
-template <class T> std::shared_ptr<const gl_cumulative<T>> gauss_legendre_cumulative(int n) {
-  static std::mutex mtx;
-  static std::map<std::pair<int, int>, std::shared_ptr<const gl_cumulative<T>>> cache;
-  const int digits = std::numeric_limits<T>::digits;
-  {
-    std::lock_guard<std::mutex> lock(mtx);
-    auto it = cache.find({n, digits});
-    if (it != cache.end()) return it->second;
-  }
-  auto c = std::make_shared<gl_cumulative<T>>();
-  c->n = n;
-  c->rule = gauss_legendre<T>(n);
-  const auto &x = c->rule->x;
-  c->P.assign(std::size_t(n) * (n + 1), T(0));
-  for (int k = 0; k < n; ++k) {
-    T *p = &c->P[std::size_t(k) * (n + 1)];
-    p[0] = 1;
-    p[1] = x[k];
-    for (int j = 2; j <= n; ++j) p[j] = (T(2 * j - 1) * x[k] * p[j - 1] - T(j - 1) * p[j - 2]) / T(j);
-  }
-  // int_{x_i}^{1} P_0 = 1 - x_i; int_{x_i}^{1} P_j = (P_{j-1}(x_i) - P_{j+1}(x_i))/(2j + 1)
-  c->S.assign(std::size_t(n) * n, T(0));
-  for (int i = 0; i < n; ++i) {
-    const T *pi_ = &c->P[std::size_t(i) * (n + 1)];
-    for (int k = 0; k < n; ++k) {
-      const T *pk = &c->P[std::size_t(k) * (n + 1)];
-      T s = (1 - x[i]) / 2;
-      for (int j = 1; j < n; ++j) s += pk[j] * (pi_[j - 1] - pi_[j + 1]) / 2;
-      c->S[std::size_t(i) * n + k] = c->rule->w[k] * s;
-    }
-  }
-  std::lock_guard<std::mutex> lock(mtx);
-  auto ins = cache.emplace(std::make_pair(n, digits), c);
-  return ins.first->second;
-}
-
 // The nodes of one slip zone in theta (t = stick edge +- d sin^2 theta) with
 // what the zone energy and slip need there.
 template <class T> struct zone_nodes {
@@ -618,7 +572,7 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
     gdetail::zone_nodes<T> G;
     if (Kg > 0) G = gdetail::make_zone_nodes<T>(*pm, z, d, width, Kg, nullptr, true);
     const std::vector<T> g = hgrad_nodes(z, O, IR, IL, O.s2.size(), Kg > 0 ? &G : nullptr);
-    const auto cum = gdetail::gauss_legendre_cumulative<T>(M);
+    const auto cum = gauss_legendre_cumulative<T>(M);
     std::vector<T> f(M);
     T after = 0, E = 0;
     for (std::size_t P = O.panels.size(); P-- > 0;) {
