@@ -68,14 +68,13 @@ template <class T> struct rule_cache {
 
 // Nodes by Newton's method on P_n from Tricomi's asymptotic start, iterated
 // until the correction is below a few eps (quadratic convergence: one more
-// step then changes nothing).
-template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n) {
+// step then changes nothing). Running out of max_newton throws no_convergence.
+template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n, int max_newton = 100) {
   using std::abs; using std::cos;
   auto r = std::make_shared<gl_rule<T>>();
   r->x.resize(n);
   r->w.resize(n);
   const T pi_ = pi<T>();
-  const int max_newton = 100;
   for (int k = 1; k <= (n + 1) / 2; ++k) {
     // Tricomi: x_k ~ (1 - (n-1)/(8n^3)) cos(pi (4k-1)/(4n+2)) (k-th largest root)
     const T nn = T(n);

@@ -65,7 +65,7 @@ namespace hs { namespace core {
 template <class T> struct general_options {
   int max_iterations = 100;  // Newton iterations per solve (continuation: per step)
   T rtol = T(0);             // 0: full precision of T
-  int max_order = 1024;      // largest Gauss-Legendre order per panel
+  int max_order = 1024;      // largest Gauss-Legendre order per panel (solver, energies and slips)
 };
 
 namespace gdetail {
@@ -380,6 +380,7 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   using base::dirR; using base::dirL; using base::iterations; using base::sign; using base::locate;
   int continuation_steps = 0;
   int order = 0;            // Gauss-Legendre order per panel of the accepted residual
+  int max_order = 1024;     // largest order of the energies and slips (general_options::max_order)
   std::shared_ptr<const pressure_model<T>> owned;  // mirrored view, if any
   const pressure_model<T> *pm = nullptr;            // canonical pressure (must outlive)
 
@@ -657,12 +658,13 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
       while (T(M) < start) M *= 2;
     }
     T v = f(M);
-    for (; 2 * M <= 1024; M *= 2) {
+    for (; 2 * M <= max_order; M *= 2) {
       const T v2 = f(2 * M);
       if (!(abs(v2 - v) > tol * abs(v2))) return v2;
       v = v2;
     }
-    return v;
+    // the orders allowed ran out before two agreed: report it (no silent value)
+    throw error(status::no_convergence, "zone energy or slip: no two orders agreed up to the order limit (max_order)");
   }
   T energy_hat(int z) const {
     if (!(zone_length(z) > 0)) return T(0);
@@ -903,6 +905,7 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
   general_solution<T> sol;
   sol.scene = sc;
   sol.rtol = opt.rtol;
+  sol.max_order = opt.max_order;
   T q = sc.q, s = sc.s;
   if (q < 0) { sol.negate = true; q = -q; s = -s; }
   if (s < 0) { sol.mirror = true; s = -s; }

@@ -149,17 +149,20 @@ template <class T> T opposite_G_state(const opposite_state<T> &st, const T &dl) 
 // c = cos(psi/2) this is psi - sin(psi) = pi (1 - q), psi in (0, pi], solved by
 // Newton (convex, from the cubic small-psi start); returns c and
 // w = sqrt(1 - c^2) = sin(psi/2), both without cancellation as q -> 1.
-template <class T> void sliding_stick_point(const T &q, T &c, T &w) {
+// Running out of max_iterations throws no_convergence.
+template <class T> void sliding_stick_point(const T &q, T &c, T &w, int max_iterations = 100) {
   using std::abs; using std::cbrt; using std::cos; using std::min; using std::sin;
   const T target = pi<T>() * (1 - q);
   T psi = min(cbrt(6 * target), pi<T>());
-  for (int i = 0; i < 100; ++i) {
+  int i = 0;
+  for (; i < max_iterations; ++i) {
     const T h = y_minus_sin(psi) - target;
     const T sh = sin(psi / 2);
     const T dpsi = h / (2 * sh * sh);
     psi = min(psi - dpsi, pi<T>());
     if (abs(dpsi) <= 2 * eps<T>() * psi) break;
   }
+  check_iterations(i, max_iterations, "sliding stick point: Newton iteration did not converge");
   c = cos(psi / 2);
   w = sin(psi / 2);
 }
