@@ -135,37 +135,37 @@ template <class T> std::shared_ptr<const gl_cumulative<T>> make_cumulative(std::
 
 }  // namespace gauss_detail
 
-// Gauss-Legendre rule of order n, cached per (order, precision); the
-// returned rule is immutable and shared.
-template <class T> std::shared_ptr<const gl_rule<T>> gauss_legendre(int n) {
-  auto &c = gauss_detail::rule_cache<T>::get();
+namespace gauss_detail {
+// The cache slot `slot` of order n: looked up, else made (outside the lock)
+// and inserted unless another thread was first.
+template <class T, class V, class Make>
+std::shared_ptr<const V> cached(std::shared_ptr<const V> rule_cache<T>::entry::*slot, int n, const Make &make) {
+  auto &c = rule_cache<T>::get();
   const std::pair<int, int> key{n, std::numeric_limits<T>::digits};
   {
     std::lock_guard<std::mutex> lock(c.mtx);
     auto it = c.map.find(key);
-    if (it != c.map.end() && it->second.rule) return it->second.rule;
+    if (it != c.map.end() && it->second.*slot) return it->second.*slot;
   }
-  auto r = gauss_detail::make_rule<T>(n);
+  std::shared_ptr<const V> v = make();
   std::lock_guard<std::mutex> lock(c.mtx);
   auto &e = c.map[key];
-  if (!e.rule) e.rule = r;
-  return e.rule;
+  if (!(e.*slot)) e.*slot = v;
+  return e.*slot;
+}
+}  // namespace gauss_detail
+
+// Gauss-Legendre rule of order n, cached per (order, precision); the
+// returned rule is immutable and shared.
+template <class T> std::shared_ptr<const gl_rule<T>> gauss_legendre(int n) {
+  return gauss_detail::cached<T, gl_rule<T>>(&gauss_detail::rule_cache<T>::entry::rule, n,
+                                             [n] { return gauss_detail::make_rule<T>(n); });
 }
 
 // The rule of order n with its cumulative matrix (same cache).
 template <class T> std::shared_ptr<const gl_cumulative<T>> gauss_legendre_cumulative(int n) {
-  auto &c = gauss_detail::rule_cache<T>::get();
-  const std::pair<int, int> key{n, std::numeric_limits<T>::digits};
-  {
-    std::lock_guard<std::mutex> lock(c.mtx);
-    auto it = c.map.find(key);
-    if (it != c.map.end() && it->second.cum) return it->second.cum;
-  }
-  auto cum = gauss_detail::make_cumulative<T>(gauss_legendre<T>(n));
-  std::lock_guard<std::mutex> lock(c.mtx);
-  auto &e = c.map[key];
-  if (!e.cum) e.cum = cum;
-  return e.cum;
+  return gauss_detail::cached<T, gl_cumulative<T>>(&gauss_detail::rule_cache<T>::entry::cum, n,
+                                                   [n] { return gauss_detail::make_cumulative<T>(gauss_legendre<T>(n)); });
 }
 
 }}  // namespace hs::core

@@ -97,7 +97,9 @@ bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T
 // F2(d) = I2L - I2R + pi q/2, falls monotonically from pi q/2 (d = 0) to
 // pi (q - 1)/2 (d -> 1); bracketed Illinois iteration in d to sqrt(eps).
 // (For a symmetric pressure this is eq (15) and b1 = b2 exactly; for an
-// asymmetric one it is a start for the 2D Newton.)
+// asymmetric one it is a start for the 2D Newton.) The iteration limit is
+// not an error: the result is only a start, which Newton validates (and
+// reports no_convergence if it cannot finish from it).
 template <class T>
 general_state<T> shear_only_start(const pressure_model<T> &pm, const T &q, int n) {
   using std::abs; using std::sqrt;
@@ -153,7 +155,8 @@ template <class T> bool sliding_point(const pressure_model<T> &pm, const T &q, T
 // ln e from two small widths. Newton in (x1, ln e) then follows x0 and the
 // width on a log scale. False if no such start exists (the stick zone would
 // be below the range of T: tiny_le is ln of the smallest width allowed).
-// below_range is set when the width would be below exp(tiny_le).
+// below_range is set when the width would be below exp(tiny_le). The secant
+// limit is not an error: the result is only a start, validated by Newton.
 template <class T>
 bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int n, const T &tiny_le,
                        general_state<T> &out, bool &below_range) {

@@ -519,6 +519,8 @@ template <class T> class history {
       const T mid = (lo + hi) / 2;
       if (inside(mid)) hi = mid; else lo = mid;
     }
+    // 200 halvings reach 4 eps for T up to ~60 digits; beyond, say so
+    if (!(hi - lo <= 4 * eps<T>())) throw error(status::no_convergence, "history: stick-zone entry bisection ran out");
     return hi;
   }
 
@@ -926,6 +928,8 @@ template <class T> class history {
       const T m = (d_in + d_out) / 2;
       if (limit_ratio(i, xat(m), nullptr) >= below) d_in = m; else d_out = m;
     }
+    if (!(d_out - d_in <= 4 * eps<T>() * (1 + L)))
+      throw error(status::no_convergence, "history: friction-limit bisection ran out");
     if (i == 1) jump(b1 - d_in, b2_); else jump(b1_, b2 - d_in);
     return true;
   }
@@ -1052,6 +1056,7 @@ template <class T> class history {
           const T m = (lo + hi) / 2;
           if ((g(m) > 0) == plo) lo = m; else hi = m;
         }
+        if (!(hi - lo <= 4 * eps<T>())) throw error(status::no_convergence, "history: crossing bisection ran out");
         return (lo + hi) / 2;
       };
       T ua = 0, ub = 1;
@@ -1182,6 +1187,7 @@ template <class T, class EOf> bool ramp_recedes(const T &q, const T &s, const EO
     const T mid = (lo + hi) / 2;
     if (e_of(mid * q, mid * s) > target) lo = mid; else hi = mid;
   }
+  if (!(hi - lo <= 2 * eps<T>())) throw error(status::no_convergence, "history: load bisection ran out");
   at_q = hi * q;
   return true;
 }
