@@ -110,13 +110,11 @@ template <unsigned D> class tier_solution_impl final : public tier_solution {
       else
         model_.reset(
             new core::power_law_pressure<T>(parse_decimal<T>(in.exponent, "exponent n is not a decimal number")));
-      core::general_scene<T> gs;
-      gs.a = sc.a; gs.p0 = sc.p0; gs.f = sc.f; gs.Estar = sc.Estar; gs.q = sc.q; gs.s = sc.s;
       core::general_options<T> opt;
       opt.max_iterations = max_iterations;
       opt.rtol = 0;  // full precision of T
       opt.max_order = general_max_order(D);
-      general_.reset(new core::general_solution<T>(core::solve_general(*model_, gs, opt)));
+      general_.reset(new core::general_solution<T>(core::solve_general(*model_, sc, opt)));
     } else {
       throw core::error(core::status::bad_option, "digits above the limit for non-Hertz geometries");
     }

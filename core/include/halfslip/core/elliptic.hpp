@@ -23,7 +23,9 @@
 
 namespace hs { namespace core {
 
-template <class T> T cel(T kc, T p, T a, T b) {
+// max_iterations: the loop's limit (the default is never reached for valid
+// input: each step squares the relative gap); running out throws no_convergence.
+template <class T> T cel(T kc, T p, T a, T b, int max_iterations = 200) {
   using std::abs; using std::sqrt;
   if (!(kc > 0) || !(p > 0)) throw error(status::internal, "cel: needs kc > 0 and p > 0");
   // The loop stops once kc and g agree to sqrt(eps): the last step is quadratic.
@@ -31,7 +33,8 @@ template <class T> T cel(T kc, T p, T a, T b) {
   T e = kc, em = T(1);
   p = sqrt(p);
   b /= p;
-  for (int i = 0; i < 200; ++i) {
+  int i = 0;
+  for (; i < max_iterations; ++i) {
     const T f = a;
     a += b / p;
     T g = e / p;
@@ -45,6 +48,7 @@ template <class T> T cel(T kc, T p, T a, T b) {
     kc += kc;
     e = kc * em;
   }
+  check_iterations(i, max_iterations, "cel: the AGM iteration did not converge");
   return boost::math::constants::half_pi<T>() * (b + a * em) / (em * (em + p));
 }
 

@@ -20,11 +20,14 @@
 
 namespace hs { namespace core {
 
-template <class T> struct hertz_scene {
-  T a{1}, p0{1}, f{1}, Estar{1};
-  T q{0};  // Q / (f P), P = pi a p0 / 2
-  T s{0};  // sigma / (f p0)
+// One contact scene for every solver (Hertz and general pressures alike).
+template <class T> struct contact_scene {
+  T a{1}, p0{1}, f{1}, Estar{1};  // p0 = 2P/(pi a)
+  T q{0};                          // Q / (f P), P = pi a p0 / 2
+  T s{0};                          // sigma / (f p0)
 };
+template <class T> using hertz_scene = contact_scene<T>;
+template <class T> using general_scene = contact_scene<T>;
 
 template <class T> struct solve_options {
   int max_iterations = 100;

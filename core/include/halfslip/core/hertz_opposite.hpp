@@ -23,6 +23,7 @@
 #include <type_traits>
 
 #include "elliptic.hpp"
+#include "newton.hpp"
 #include "numerics.hpp"
 #include "status.hpp"
 
@@ -69,6 +70,19 @@ template <class T> struct opposite_basis {
   }
 };
 
+// 3 b1^2 - 2 b1 b2 + 3 b2^2 - 4 written in d1 = 1 - b1, d2 = 1 - b2
+template <class T> T moments_poly(const T &d1, const T &d2) {
+  return -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;
+}
+
+// The single-zone moments A0, A1 from the Carlson basis B of the state (d1, d2, e)
+// (docs/errata.md: the corrected eqs (23)/(24)).
+template <class T, class Basis> void opposite_moments_of(const Basis &B, const T &d1, const T &d2, T &A0, T &A1) {
+  const T bdiff = d2 - d1;
+  A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
+  A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * moments_poly(d1, d2) * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
+}
+
 // Residuals and their derivatives in the coordinates c = (beta1 - beta2)/2
 // (centre of the stick zone) and ln e (e = beta1 + beta2). Written so that
 // every entry stays finite as e -> 0: R_D(0,Q,P) ~ 1/sqrt(e) enters only as
@@ -88,9 +102,9 @@ opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<
   const T d1 = st.d1, d2 = st.d2, e = st.e;
   const T b1 = 1 - d1, bdiff = d2 - d1;  // beta1 - beta2
   const Basis B(st);
-  const T A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
-  const T poly = -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;  // 3b1^2-2b1b2+3b2^2-4
-  const T A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * poly * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
+  const T poly = moments_poly(d1, d2);
+  T A0, A1;
+  opposite_moments_of(B, d1, d2, A0, A1);
   opposite_eval<T> r;
   r.F1 = pi_ * bdiff / 2 + 2 * A0 - pi_ * s / 4;
   // D1 = pi(3(b1^2+b2^2)/8 - b1 b2/4 - 1/2) written in d's (no cancellation)
@@ -111,13 +125,9 @@ opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<
   return r;
 }
 
-// The single-zone moments A0, A1 (exposed for tests).
+// The single-zone moments A0, A1 (exposed for tests: the residual's own formulas).
 template <class T> void opposite_moments(const opposite_state<T> &st, T &A0, T &A1) {
-  const T d1 = st.d1, d2 = st.d2, bdiff = d2 - d1;
-  const opposite_basis<T> B(st);
-  A0 = 2 * d1 * (B.RF + bdiff * B.op2 * B.RJc / 3 - d2 * B.eRDb / 3);
-  const T poly = -4 * (d1 + d2) + 3 * d1 * d1 - 2 * d1 * d2 + 3 * d2 * d2;
-  A1 = d1 * ((4 - 3 * d1 + d2) * B.RF / 2 + B.op2 * poly * B.RJc / 6 - d2 * bdiff * B.eRDb / 2);
+  opposite_moments_of(opposite_basis<T>(st), st.d1, st.d2, A0, A1);
 }
 
 // G(x) = int_{beta1}^{1} sqrt(1-t^2)/(sqrt((t-beta1)(t+beta2)) (t-x)) dt for a
@@ -139,17 +149,20 @@ template <class T> T opposite_G_state(const opposite_state<T> &st, const T &dl) 
 // c = cos(psi/2) this is psi - sin(psi) = pi (1 - q), psi in (0, pi], solved by
 // Newton (convex, from the cubic small-psi start); returns c and
 // w = sqrt(1 - c^2) = sin(psi/2), both without cancellation as q -> 1.
-template <class T> void sliding_stick_point(const T &q, T &c, T &w) {
+// Running out of max_iterations throws no_convergence.
+template <class T> void sliding_stick_point(const T &q, T &c, T &w, int max_iterations = 100) {
   using std::abs; using std::cbrt; using std::cos; using std::min; using std::sin;
   const T target = pi<T>() * (1 - q);
   T psi = min(cbrt(6 * target), pi<T>());
-  for (int i = 0; i < 100; ++i) {
+  int i = 0;
+  for (; i < max_iterations; ++i) {
     const T h = y_minus_sin(psi) - target;
     const T sh = sin(psi / 2);
     const T dpsi = h / (2 * sh * sh);
     psi = min(psi - dpsi, pi<T>());
     if (abs(dpsi) <= 2 * eps<T>() * psi) break;
   }
+  check_iterations(i, max_iterations, "sliding stick point: Newton iteration did not converge");
   c = cos(psi / 2);
   w = sin(psi / 2);
 }
@@ -166,122 +179,97 @@ template <class T> T residual_norm(const opposite_eval<T> &r) {
   return abs(r.F1) + abs(r.F2);
 }
 
+// The opposite-sign side conditions as a problem of damped_newton
+// (newton.hpp), in log coordinates for the lengths that may be tiny: (c, ln e)
+// while the right slip zone is longer than the stick zone, (ln d1, ln e) once
+// d1 < e (near the regime boundary), so that every iterate keeps d1, e > 0
+// and the Jacobian stays well conditioned as d1 -> 0 or e -> 0.
+template <class T, class Basis> struct opposite_problem {
+  using real = T;
+  using state = opposite_state<T>;
+  using eval = opposite_eval<T>;
+  const T &q, &s;
+  T floor0;
+  bool near_boundary = false;
+  T dd1 = 0, dd2 = 0, rel_de = 0;  // length changes of the last trial
+
+  opposite_problem(const T &q_, const T &s_) : q(q_), s(s_) {
+    // Residuals are sums of terms of size <= pi (1 + s): rounding leaves them
+    // at a few eps times that; a result is accepted only at that level.
+    floor0 = 64 * eps<T>() * pi<T>() * (1 + s);
+  }
+  eval residual(const state &st) const { return opposite_residual<T, Basis>(q, s, st); }
+  // rounding of the residual: of its terms (mag) and of the state itself (the
+  // lengths are known to an ulp of 2, and F moves by F_c per unit length;
+  // F_c ~ 1/(d1 + e) grows large as Q -> fP at large sigma)
+  T floor(const eval &f) const {
+    using std::abs; using std::max;
+    return max(floor0, 64 * eps<T>() * f.mag + 8 * eps<T>() * (abs(f.F1c) + abs(f.F2c)));
+  }
+  jacobian2<T> jacobian(const state &st, const eval &r) {
+    near_boundary = st.d1 < st.e;
+    // x = c: columns (Fc, Fl). x = ln d1 at fixed e: dc = -d1 dx, and at fixed
+    // d1 a change of ln e moves c by -e/2 d(ln e).
+    if (!near_boundary) return {r.F1c, r.F1l, r.F2c, r.F2l};
+    return {-st.d1 * r.F1c, r.F1l - st.e / 2 * r.F1c, -st.d1 * r.F2c, r.F2l - st.e / 2 * r.F2c};
+  }
+  bool shortcut(state &, const T &, const T &, const T &) const { return false; }
+  // trust region in ln d1 as in ln e
+  void cap_x(T &dx, T &dy) const {
+    using std::abs;
+    const T cap = 4;
+    if (near_boundary && abs(dx) > cap) { dy *= cap / abs(dx); dx = dx > 0 ? cap : -cap; }
+  }
+  bool trial(const state &st, const T &lam, const T &dx, const T &dy, state &nst) {
+    using std::exp; using std::expm1; using std::log;
+    using boost::math::expm1;
+    using boost::math::isfinite;
+    rel_de = expm1(lam * dy);
+    const T de = st.e * rel_de;
+    if (!near_boundary) {
+      const T dc = lam * dx;
+      dd1 = -dc - de / 2;
+      dd2 = dc - de / 2;
+    } else {
+      dd1 = st.d1 * expm1(lam * dx);
+      dd2 = -dd1 - de;
+    }
+    // fraction to the boundary for the linearly updated lengths
+    if (st.d1 + dd1 <= st.d1 / 4 || st.d2 + dd2 <= st.d2 / 4) return false;
+    // e from ln e: it may be below the range of T (then only le carries it)
+    const T nle = st.le + lam * dy;
+    nst = {st.d1 + dd1, st.d2 + dd2, exp(nle), nle};
+    // keep d1 + d2 + e = 2 exactly in the largest of the three
+    if (nst.d1 >= nst.d2 && nst.d1 >= nst.e) nst.d1 = 2 - nst.d2 - nst.e;
+    else if (nst.d2 >= nst.e) nst.d2 = 2 - nst.d1 - nst.e;
+    else { nst.e = 2 - nst.d1 - nst.d2; nst.le = log(nst.e); }
+    return isfinite(nst.le) && nst.e >= 0;
+  }
+  // relative change of each length (all three must settle); the stalled-step
+  // test on the absolute change of d1, d2
+  newton_steps<T> steps(const state &st, const T &, const T &, const T &) const {
+    using std::abs; using std::max;
+    return {max(max(abs(dd1) / st.d1, abs(dd2) / st.d2), T(abs(rel_de))), max(abs(dd1), abs(dd2))};
+  }
+  bool converged(const T &, const T &step, const T &norm, const T &floor) const {
+    return step <= 4 * eps<T>() && norm <= floor;
+  }
+};
+
 // Newton's method from a start; true on convergence (out, iterations set).
-//
-// Newton's method with a line search, in log coordinates for the lengths
-// that may be tiny: (c, ln e) while the right slip zone is longer than the
-// stick zone, (ln d1, ln e) once d1 < e (near the regime boundary), so that
-// every iterate keeps d1, e > 0 and the Jacobian stays well conditioned as
-// d1 -> 0 or e -> 0.
 template <class T, class Basis = opposite_basis<T>>
 bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int max_iterations,
                      opposite_state<T> &out, int &iterations) {
-  using std::abs; using std::max; using std::expm1;
-  using boost::math::expm1;
-  const T pi_ = pi<T>();
-  using std::exp; using std::log;
   using boost::math::isfinite;
   opposite_state<T> st = start;
   st.le = log_width(st);
   if (!(st.e >= 0) || !isfinite(st.le) || !(st.d1 > 0) || !(st.d2 > 0)) return false;
-  opposite_eval<T> r = opposite_residual<T, Basis>(q, s, st);
-  T norm = residual_norm(r);
-  const T tol = 4 * eps<T>();
-  // Residuals are sums of terms of size <= pi (1 + s): rounding leaves them
-  // at a few eps times that; a result is accepted only at that level.
-  const T floor0 = 64 * eps<T>() * pi_ * (1 + s);
-  // rounding of the residual: of its terms (mag) and of the state itself (the
-  // lengths are known to an ulp of 2, and F moves by F_c per unit length;
-  // F_c ~ 1/(d1 + e) grows large as Q -> fP at large sigma)
-  auto floor_of = [&](const opposite_eval<T> &f) {
-    return max(floor0, 64 * eps<T>() * f.mag + 8 * eps<T>() * (abs(f.F1c) + abs(f.F2c)));
-  };
-  T noise_floor = floor_of(r);
-  T prev_step = -1;
-  for (int it = 1; it <= max_iterations; ++it) {
-    // Columns of the Jacobian in the chosen coordinates (x, y = ln e).
-    const bool near_boundary = st.d1 < st.e;
-    // x = c: columns (Fc, Fl). x = ln d1 at fixed e: dc = -d1 dx, and at fixed
-    // d1 a change of ln e moves c by -e/2 d(ln e).
-    T a11, a12, a21, a22;
-    if (!near_boundary) {
-      a11 = r.F1c; a12 = r.F1l; a21 = r.F2c; a22 = r.F2l;
-    } else {
-      a11 = -st.d1 * r.F1c; a21 = -st.d1 * r.F2c;
-      a12 = r.F1l - st.e / 2 * r.F1c; a22 = r.F2l - st.e / 2 * r.F2c;
-    }
-    const T det = a11 * a22 - a12 * a21;
-    if (!(det != 0) || !(abs(det) < boost::math::tools::max_value<T>()))
-      return false;
-    T dx = -(r.F1 * a22 - r.F2 * a12) / det;
-    T dy = -(a11 * r.F2 - a21 * r.F1) / det;
-    // Affine-invariant monitor (Deuflhard's natural level function): the size
-    // of the Newton correction J^-1 F with this iteration's Jacobian. Near
-    // Q -> fP the two side conditions are nearly parallel, and |F| alone would
-    // accept steps that ruin the weakly determined direction.
-    auto level = [&](const opposite_eval<T> &f) {
-      return abs((f.F1 * a22 - f.F2 * a12) / det) + abs((a11 * f.F2 - a21 * f.F1) / det);
-    };
-    const T level0 = abs(dx) + abs(dy);
-    // trust region in the log coordinates
-    const T cap = 4;
-    if (abs(dy) > cap) { dx *= cap / abs(dy); dy = dy > 0 ? cap : -cap; }
-    if (near_boundary && abs(dx) > cap) { dy *= cap / abs(dx); dx = dx > 0 ? cap : -cap; }
-    T lam = 1;
-    opposite_state<T> nst;
-    opposite_eval<T> nr;
-    T nnorm = 0, dd1 = 0, dd2 = 0, de = 0, rel_de = 0;
-    bool decreased = false;
-    for (int k = 0; k < 40; ++k, lam /= 2) {
-      rel_de = expm1(lam * dy);
-      de = st.e * rel_de;
-      if (!near_boundary) {
-        const T dc = lam * dx;
-        dd1 = -dc - de / 2;
-        dd2 = dc - de / 2;
-      } else {
-        dd1 = st.d1 * expm1(lam * dx);
-        dd2 = -dd1 - de;
-      }
-      // fraction to the boundary for the linearly updated lengths
-      if (st.d1 + dd1 <= st.d1 / 4 || st.d2 + dd2 <= st.d2 / 4) continue;
-      // e from ln e: it may be below the range of T (then only le carries it)
-      const T nle = st.le + lam * dy;
-      nst = {st.d1 + dd1, st.d2 + dd2, exp(nle), nle};
-      // keep d1 + d2 + e = 2 exactly in the largest of the three
-      if (nst.d1 >= nst.d2 && nst.d1 >= nst.e) nst.d1 = 2 - nst.d2 - nst.e;
-      else if (nst.d2 >= nst.e) nst.d2 = 2 - nst.d1 - nst.e;
-      else { nst.e = 2 - nst.d1 - nst.d2; nst.le = log(nst.e); }
-      if (!isfinite(nst.le) || !(nst.e >= 0)) continue;
-      nr = opposite_residual<T, Basis>(q, s, nst);
-      nnorm = residual_norm(nr);
-      if (level(nr) <= (1 - lam / 4) * level0 || (nnorm <= floor_of(nr) && nnorm <= norm)) {
-        decreased = true;
-        break;
-      }
-    }
-    if (!decreased) {
-      // No step reduces the residual: we are at the rounding floor, or stuck.
-      if (norm <= noise_floor) { out = st; iterations = it; return true; }
-      return false;
-    }
-    // Relative change of each length; all three must settle.
-    const T step = max(max(abs(dd1) / st.d1, abs(dd2) / st.d2), T(abs(rel_de)));
-    const T abs_step = max(abs(dd1), abs(dd2));
-    st = nst;
-    r = nr;
-    norm = nnorm;
-    noise_floor = floor_of(r);
-    if (step <= tol && norm <= noise_floor) { out = st; iterations = it; return true; }
-    // Rounding-noise regime: the residual is at its rounding floor and the step
-    // stopped shrinking quadratically (a length far below 1, or one that the
-    // side conditions determine only weakly, e.g. as Q -> fP near the regime
-    // boundary, is then known to the accuracy the residual allows).
-    if (norm <= noise_floor && prev_step >= 0 && abs_step >= prev_step / 4)
-      { out = st; iterations = it; return true; }
-    prev_step = abs_step;
-  }
-  return false;
+  opposite_problem<T, Basis> p(q, s);
+  const newton_outcome o = damped_newton(p, st, p.residual(st), max_iterations);
+  if (!o.converged) return false;
+  out = st;
+  iterations = o.iterations;
+  return true;
 }
 
 // Wider type for one step of iterative refinement of a converged solution
@@ -309,10 +297,9 @@ opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T
   else w.e = 2 - w.d1 - w.d2;
   const auto r = opposite_residual<R>(R(q), R(s), w);
   // coordinates (c, ln e): dc changes d1 by -dc, d2 by +dc; ln e as in Newton
-  const R det = r.F1c * r.F2l - r.F1l * r.F2c;
-  if (!(det != 0)) return st;
-  const R dc = -(r.F1 * r.F2l - r.F2 * r.F1l) / det;
-  const R dl = -(r.F1c * r.F2 - r.F2c * r.F1) / det;
+  const auto x = solve2x2(r.F1c, r.F1l, r.F2c, r.F2l, r.F1, r.F2);
+  if (!(x.det != 0)) return st;
+  const R dc = -x.x1, dl = -x.x2;
   const R de = w.e * expm1(dl);
   opposite_state<R> n{w.d1 - dc - de / 2, w.d2 + dc - de / 2, w.e + de, le + dl};
   if (!(n.d1 > 0 && n.d2 > 0 && n.e >= 0)) return st;

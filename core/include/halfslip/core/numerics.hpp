@@ -10,38 +10,44 @@
 #include <boost/math/tools/precision.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
+#include "status.hpp"
+
 namespace hs { namespace core {
 
 template <class T> inline T pi() { return boost::math::constants::pi<T>(); }
 template <class T> inline T eps() { return boost::math::tools::epsilon<T>(); }
 
-// y - sin(y) for y >= 0, without cancellation for small y.
-template <class T> T y_minus_sin(const T &y) {
-  using std::abs; using std::sin;
-  if (y > T(1)) return y - sin(y);
-  // y^3/3! - y^5/5! + ...
+namespace detail {
+// The odd Taylor tail y^3/3! + sg y^5/5! + sg^2 y^7/7! + ... for 0 <= y <= 1:
+// y - sin(y) (sg = -1) and sinh(y) - y (sg = +1). Running out of max_terms
+// throws no_convergence (a NaN y ends the loop and propagates, as before).
+template <class T> T odd_tail_series(const T &y, int sg, int max_terms = 200) {
+  using std::abs;
   const T y2 = y * y;
   T term = y * y2 / 6, sum = term;
-  for (int k = 2; k < 200; ++k) {
-    term *= -y2 / T((2 * k) * (2 * k + 1));
+  int k = 2;
+  for (; k < max_terms; ++k) {
+    term *= (sg < 0 ? T(-y2) : y2) / T((2 * k) * (2 * k + 1));
     sum += term;
-    if (abs(term) <= eps<T>() * abs(sum)) break;
+    if (abs(term) <= eps<T>() * abs(sum) || !(sum == sum)) break;
   }
+  check_iterations(k, max_terms, "odd Taylor series (y - sin y, sinh y - y) did not converge");
   return sum;
+}
+}  // namespace detail
+
+// y - sin(y) for y >= 0, without cancellation for small y.
+template <class T> T y_minus_sin(const T &y) {
+  using std::sin;
+  if (y > T(1)) return y - sin(y);
+  return detail::odd_tail_series(y, -1);  // y^3/3! - y^5/5! + ...
 }
 
 // sinh(y) - y for y >= 0, without cancellation for small y.
 template <class T> T sinh_minus_y(const T &y) {
   using std::sinh;
   if (y > T(1)) return sinh(y) - y;
-  const T y2 = y * y;
-  T term = y * y2 / 6, sum = term;
-  for (int k = 2; k < 200; ++k) {
-    term *= y2 / T((2 * k) * (2 * k + 1));
-    sum += term;
-    if (term <= eps<T>() * sum) break;
-  }
-  return sum;
+  return detail::odd_tail_series(y, +1);
 }
 
 // Integral of sqrt(u^2 - w^2) du from u = w to u = w + delta (w > 0, delta >= 0),

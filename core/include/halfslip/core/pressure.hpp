@@ -27,77 +27,13 @@
 
 #include <boost/math/special_functions/gamma.hpp>
 
+#include "gauss.hpp"
 #include "numerics.hpp"
 #include "status.hpp"
 
 namespace hs { namespace core {
 
-// ---------------------------------------------------------------------------
-// Gauss-Legendre rules in the working precision T.
-template <class T> struct gl_rule {
-  std::vector<T> x, w;  // nodes and weights on [-1, 1], x increasing
-};
-
-// Nodes by Newton's method on P_n from Tricomi's asymptotic start, iterated
-// until the correction is below a few eps (quadratic convergence: one more
-// step then changes nothing). Cached per (order, precision) behind a mutex;
-// the returned rule is immutable and shared.
-template <class T> std::shared_ptr<const gl_rule<T>> gauss_legendre(int n) {
-  using std::abs; using std::cos;
-  static std::mutex mtx;
-  static std::map<std::pair<int, int>, std::shared_ptr<const gl_rule<T>>> cache;
-  const int digits = std::numeric_limits<T>::digits;
-  {
-    std::lock_guard<std::mutex> lock(mtx);
-    auto it = cache.find({n, digits});
-    if (it != cache.end()) return it->second;
-  }
-  auto r = std::make_shared<gl_rule<T>>();
-  r->x.resize(n);
-  r->w.resize(n);
-  const T pi_ = pi<T>();
-  for (int k = 1; k <= (n + 1) / 2; ++k) {
-    // Tricomi: x_k ~ (1 - (n-1)/(8n^3)) cos(pi (4k-1)/(4n+2)) (k-th largest root)
-    const T nn = T(n);
-    T x = (1 - (nn - 1) / (8 * nn * nn * nn)) * cos(pi_ * T(4 * k - 1) / T(4 * n + 2));
-    T dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      T p0 = 1, p1 = x;
-      for (int j = 2; j <= n; ++j) {
-        const T p2 = (T(2 * j - 1) * x * p1 - T(j - 1) * p0) / T(j);
-        p0 = p1;
-        p1 = p2;
-      }
-      // p1 = P_n(x), p0 = P_{n-1}(x)
-      dp = T(n) * (x * p1 - p0) / (x * x - 1);
-      const T dx = p1 / dp;
-      x -= dx;
-      if (abs(dx) <= 2 * eps<T>()) {
-        if (it > 0 && abs(dx) <= eps<T>() / 2) break;
-      }
-      if (abs(dx) <= eps<T>() / 4) break;
-    }
-    // final derivative at the converged node
-    {
-      T p0 = 1, p1 = x;
-      for (int j = 2; j <= n; ++j) {
-        const T p2 = (T(2 * j - 1) * x * p1 - T(j - 1) * p0) / T(j);
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = T(n) * (x * p1 - p0) / (x * x - 1);
-    }
-    const T w = 2 / ((1 - x * x) * dp * dp);
-    r->x[n - k] = x;
-    r->w[n - k] = w;
-    r->x[k - 1] = -x;
-    r->w[k - 1] = w;
-  }
-  if (n % 2 == 1) r->x[n / 2] = 0;
-  std::lock_guard<std::mutex> lock(mtx);
-  auto ins = cache.emplace(std::make_pair(n, digits), r);
-  return ins.first->second;
-}
+// Gauss-Legendre rules (gl_rule, gauss_legendre): gauss.hpp.
 
 // A point of (-1, 1) where phi is not smooth. graded: phi' is log-singular
 // there (or phi has a |x - x_k|^alpha term); quadrature panels ending there

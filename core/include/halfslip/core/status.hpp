@@ -39,4 +39,12 @@ class error : public std::exception {
   const char *msg_;
 };
 
+// For every loop that can run out (as Boost.Math's check_series_iterations):
+// `used` is the count at exit, equal to `max` only when the loop ran out
+// without meeting its stopping rule; then the result is not converged and
+// this throws no_convergence (the C ABI returns HS_ERR_NO_CONVERGENCE).
+inline void check_iterations(long used, long max, const char *what) {
+  if (used >= max) throw error(status::no_convergence, what);
+}
+
 }}  // namespace hs::core

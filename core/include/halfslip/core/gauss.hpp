@@ -1,0 +1,171 @@
+// halfslip core: Gauss-Legendre rules in the working precision T, the
+// Legendre three-term recurrence they are built from, the cumulative
+// (Legendre integration) matrix of a rule, and the one cache that holds both
+// per (order, precision) behind a mutex (the only global mutable state of the
+// core).
+#pragma once
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
+
+#include "numerics.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+template <class T> struct gl_rule {
+  std::vector<T> x, w;  // nodes and weights on [-1, 1], x increasing
+};
+
+// Gauss-Legendre rule of order n with its Legendre table P_j(x_k), j <= n, and
+// the cumulative matrix S_ik = int_{x_i}^{1} l_k(x) dx of the Lagrange basis
+// (exact for polynomials of degree < n).
+template <class T> struct gl_cumulative {
+  std::shared_ptr<const gl_rule<T>> rule;
+  std::vector<T> P;  // P[k * (n + 1) + j] = P_j(x_k)
+  std::vector<T> S;  // S[i * n + k]
+  int n = 0;
+};
+
+// Bonnet's recurrence: P_j(x) from P_{j-1} = p1 and P_{j-2} = p0 (j >= 2).
+template <class T> T legendre_next(int j, const T &x, const T &p1, const T &p0) {
+  return (T(2 * j - 1) * x * p1 - T(j - 1) * p0) / T(j);
+}
+
+// P_n(x) (returned in pn) and P_{n-1}(x) (in pn1), n >= 1.
+template <class T> void legendre_pair(int n, const T &x, T &pn, T &pn1) {
+  T p0 = 1, p1 = x;
+  for (int j = 2; j <= n; ++j) {
+    const T p2 = legendre_next(j, x, p1, p0);
+    p0 = p1;
+    p1 = p2;
+  }
+  pn = p1;
+  pn1 = p0;
+}
+
+namespace gauss_detail {
+
+// The one rule cache: (order, digits of T) -> the rule and, once asked for,
+// its cumulative matrix. Entries are immutable and shared; a rule built twice
+// by racing threads is kept once (the first inserted).
+template <class T> struct rule_cache {
+  struct entry {
+    std::shared_ptr<const gl_rule<T>> rule;
+    std::shared_ptr<const gl_cumulative<T>> cum;
+  };
+  std::mutex mtx;
+  std::map<std::pair<int, int>, entry> map;
+  static rule_cache &get() {
+    static rule_cache c;
+    return c;
+  }
+};
+
+// Nodes by Newton's method on P_n from Tricomi's asymptotic start, iterated
+// until the correction is below a few eps (quadratic convergence: one more
+// step then changes nothing). Running out of max_newton throws no_convergence.
+template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n, int max_newton = 100) {
+  using std::abs; using std::cos;
+  auto r = std::make_shared<gl_rule<T>>();
+  r->x.resize(n);
+  r->w.resize(n);
+  const T pi_ = pi<T>();
+  for (int k = 1; k <= (n + 1) / 2; ++k) {
+    // Tricomi: x_k ~ (1 - (n-1)/(8n^3)) cos(pi (4k-1)/(4n+2)) (k-th largest root)
+    const T nn = T(n);
+    T x = (1 - (nn - 1) / (8 * nn * nn * nn)) * cos(pi_ * T(4 * k - 1) / T(4 * n + 2));
+    T dp = 1, p1 = 0, p0 = 0;
+    int it = 0;
+    for (; it < max_newton; ++it) {
+      legendre_pair(n, x, p1, p0);
+      // p1 = P_n(x), p0 = P_{n-1}(x)
+      dp = T(n) * (x * p1 - p0) / (x * x - 1);
+      const T dx = p1 / dp;
+      x -= dx;
+      if (abs(dx) <= 2 * eps<T>()) {
+        if (it > 0 && abs(dx) <= eps<T>() / 2) break;
+      }
+      if (abs(dx) <= eps<T>() / 4) break;
+    }
+    check_iterations(it, max_newton, "Gauss-Legendre nodes: Newton iteration on P_n did not converge");
+    // final derivative at the converged node
+    legendre_pair(n, x, p1, p0);
+    dp = T(n) * (x * p1 - p0) / (x * x - 1);
+    const T w = 2 / ((1 - x * x) * dp * dp);
+    r->x[n - k] = x;
+    r->w[n - k] = w;
+    r->x[k - 1] = -x;
+    r->w[k - 1] = w;
+  }
+  if (n % 2 == 1) r->x[n / 2] = 0;
+  return r;
+}
+
+template <class T> std::shared_ptr<const gl_cumulative<T>> make_cumulative(std::shared_ptr<const gl_rule<T>> rule) {
+  auto c = std::make_shared<gl_cumulative<T>>();
+  const int n = int(rule->x.size());
+  c->n = n;
+  c->rule = std::move(rule);
+  const auto &x = c->rule->x;
+  c->P.assign(std::size_t(n) * (n + 1), T(0));
+  for (int k = 0; k < n; ++k) {
+    T *p = &c->P[std::size_t(k) * (n + 1)];
+    p[0] = 1;
+    p[1] = x[k];
+    for (int j = 2; j <= n; ++j) p[j] = legendre_next(j, x[k], p[j - 1], p[j - 2]);
+  }
+  // int_{x_i}^{1} P_0 = 1 - x_i; int_{x_i}^{1} P_j = (P_{j-1}(x_i) - P_{j+1}(x_i))/(2j + 1)
+  c->S.assign(std::size_t(n) * n, T(0));
+  for (int i = 0; i < n; ++i) {
+    const T *pi_ = &c->P[std::size_t(i) * (n + 1)];
+    for (int k = 0; k < n; ++k) {
+      const T *pk = &c->P[std::size_t(k) * (n + 1)];
+      T s = (1 - x[i]) / 2;
+      for (int j = 1; j < n; ++j) s += pk[j] * (pi_[j - 1] - pi_[j + 1]) / 2;
+      c->S[std::size_t(i) * n + k] = c->rule->w[k] * s;
+    }
+  }
+  return c;
+}
+
+}  // namespace gauss_detail
+
+namespace gauss_detail {
+// The cache slot `slot` of order n: looked up, else made (outside the lock)
+// and inserted unless another thread was first.
+template <class T, class V, class Make>
+std::shared_ptr<const V> cached(std::shared_ptr<const V> rule_cache<T>::entry::*slot, int n, const Make &make) {
+  auto &c = rule_cache<T>::get();
+  const std::pair<int, int> key{n, std::numeric_limits<T>::digits};
+  {
+    std::lock_guard<std::mutex> lock(c.mtx);
+    auto it = c.map.find(key);
+    if (it != c.map.end() && it->second.*slot) return it->second.*slot;
+  }
+  std::shared_ptr<const V> v = make();
+  std::lock_guard<std::mutex> lock(c.mtx);
+  auto &e = c.map[key];
+  if (!(e.*slot)) e.*slot = v;
+  return e.*slot;
+}
+}  // namespace gauss_detail
+
+// Gauss-Legendre rule of order n, cached per (order, precision); the
+// returned rule is immutable and shared.
+template <class T> std::shared_ptr<const gl_rule<T>> gauss_legendre(int n) {
+  return gauss_detail::cached<T, gl_rule<T>>(&gauss_detail::rule_cache<T>::entry::rule, n,
+                                             [n] { return gauss_detail::make_rule<T>(n); });
+}
+
+// The rule of order n with its cumulative matrix (same cache).
+template <class T> std::shared_ptr<const gl_cumulative<T>> gauss_legendre_cumulative(int n) {
+  return gauss_detail::cached<T, gl_cumulative<T>>(&gauss_detail::rule_cache<T>::entry::cum, n,
+                                                   [n] { return gauss_detail::make_cumulative<T>(gauss_legendre<T>(n)); });
+}
+
+}}  // namespace hs::core

@@ -1,0 +1,335 @@
+// halfslip core, general pressures (general.hpp): the solution and its
+// post-processing: Cauchy integrals, slips and zone energies (fixed-rule and
+// adaptive reference evaluations), traction and pressure.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "frame.hpp"
+#include "gauss.hpp"
+#include "general_panels.hpp"
+#include "hertz.hpp"
+#include "numerics.hpp"
+#include "pressure.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+template <class T>
+class general_solution : public canonical_solution<general_solution<T>, T, general_scene<T>> {
+ public:
+  using base = canonical_solution<general_solution<T>, T, general_scene<T>>;
+  using base::reg; using base::beta1; using base::beta2; using base::delta1; using base::delta2;
+  using base::width; using base::rtol; using base::scene; using base::mirror; using base::negate;
+  using base::dirR; using base::dirL; using base::iterations; using base::sign; using base::locate;
+  int continuation_steps = 0;
+  int order = 0;            // Gauss-Legendre order per panel of the accepted residual
+  int max_order = 1024;     // largest order of the energies and slips (general_options::max_order)
+  std::shared_ptr<const pressure_model<T>> owned;  // mirrored view, if any
+  const pressure_model<T> *pm = nullptr;            // canonical pressure (must outlive)
+
+  T quad_tol() const {
+    using std::cbrt;
+    const T c = cbrt(eps<T>());
+    return c * c;  // tanh-sinh converges quadratically: far below this in practice
+  }
+
+  // C_Z(xi) = int_Z p_hat(t) / (R(t) (t - xi)) dt (principal value when xi in Z)
+  // for the canonical point xi at distance dl from the stick edge of zone pz.
+  T cauchy(int zside, int pz, const T &dl) const {
+    using std::asin; using std::cos; using std::sin; using std::sqrt;
+    const T d = zside > 0 ? delta1 : delta2;
+    if (!(d > 0)) return T(0);
+    const T e = width;
+    auto H = [&](const T &th, const T &thc) {  // thc: pi/2 - th
+      const T sn = sin(th), cs = sin(thc);
+      const T s2 = sn * sn, c2 = cs * cs;
+      const T ds = d * s2;
+      const gdetail::zone_point<T> x = gdetail::zone_point_at(zside, d, s2, c2);
+      return 2 * d * c2 * sqrt(x.far(zside)) * pm->phi(x.t, x.dm, x.dp) / sqrt(e + ds);
+    };
+    const T half_pi = pi<T>() / 2;
+    std::vector<T> cuts;
+    for (const auto &k : gdetail::zone_kinks(*pm, zside, d)) cuts.push_back(k.first);
+    const T tol = quad_tol();
+    if (pz != zside) {
+      // no singularity: |t - xi| = e + dl + d sin^2
+      auto f = [&](const T &th, const T &thc) {
+        const T sn = sin(th);
+        const T den = e + dl + d * sn * sn;
+        return H(th, thc) / den;
+      };
+      const T sum = integrate_pieces<T>(f, T(0), half_pi, cuts, tol);
+      // zone R: t - xi > 0 (xi in zone L); zone L: t - xi < 0 (xi in zone R)
+      return zside > 0 ? sum : -sum;
+    }
+    // principal value: t - xi = +-d (sin^2 th - sin^2 thx); PV int_0^{pi/2} dth/(sin^2 th - c) = 0
+    if (!(dl > 0)) return T(0);
+    const T ratio = dl / d;
+    const T thx = ratio >= 1 ? half_pi : asin(sqrt(ratio));
+    const T thxc = ratio >= 1 ? T(0) : half_pi - thx;
+    const T Hx = H(thx, thxc);
+    cuts.push_back(T(0));
+    cuts.push_back(half_pi);
+    cuts.push_back(thx);
+    std::sort(cuts.begin(), cuts.end());
+    T sum = 0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const T lo = cuts[i], hi = cuts[i + 1];
+      if (!(hi > lo)) continue;
+      sum += integrate_ts<T>([&](const T &th, const T &xc) {
+        // exact distance to thx when thx is an end of this piece
+        T delta;
+        if (xc < 0 && lo == thx) delta = -xc;
+        else if (xc > 0 && hi == thx) delta = -xc;
+        else delta = th - thx;
+        const T thc = (xc > 0 && hi == half_pi) ? xc : half_pi - th;
+        const T den = sin(delta) * sin(2 * thx + delta);
+        if (den == 0) return T(0);
+        return (H(th, thc) - Hx) / den;
+      }, lo, hi, tol);
+    }
+    return zside > 0 ? sum / d : -sum / d;
+  }
+
+  // canonical dimensionless B_x (units f p0 / E*) at distance dl from the
+  // stick edge of zone z (+1: R, -1: L)
+  T bhat(int z, const T &dl) const {
+    using std::sqrt;
+    if (!(dl > 0)) return T(0);
+    const T Rx = sqrt(dl * (width + dl));
+    const T br = dirR * cauchy(+1, z, dl) - dirL * cauchy(-1, z, dl);
+    return (z > 0 ? -2 : 2) * Rx * br / pi<T>();
+  }
+  // d h / d(dl) in zone z (h = 0 at the stick edge)
+  T hgrad(int z, const T &dl) const { return z > 0 ? bhat(z, dl) : -bhat(z, dl); }
+  T zone_length(int z) const { return z > 0 ? delta1 : delta2; }
+
+  std::vector<T> kink_distances(int z) const {
+    std::vector<T> v;
+    const T d = zone_length(z);
+    for (const auto &bp : pm->breakpoints()) {
+      const T dist = gdetail::kink_distance(z, d, bp.x);
+      if (dist > 0 && dist < d) v.push_back(dist);
+    }
+    return v;
+  }
+
+  // canonical slip (units f p0 a / E*), reference evaluation by nested
+  // adaptive tanh-sinh
+  T hhat_adaptive(int z, const T &dl) const {
+    if (!(dl > 0)) return T(0);
+    std::vector<T> cuts;
+    for (const T &k : kink_distances(z))
+      if (k < dl) cuts.push_back(k / dl);
+    return dl * integrate_split<T>([&](const T &w) { return hgrad(z, w * dl); }, cuts, quad_tol());
+  }
+
+  // ---- fixed-rule zone energy and slip ----
+  // Zone z is covered by the solver's panels in theta (u = d sin^2 theta the
+  // distance from the stick edge) with Gauss-Legendre of order M per panel
+  // (the outer rule). h'(u) = -(2/pi) R(u) (dirR C_R - dirL C_L) is needed at
+  // the outer nodes only; the Cauchy integrals C_Z use the same panels of
+  // zone Z with order M + 1 (the inner rule). On the own zone, the nodes of
+  // orders M and M + 1 on the same panel interlace, so the subtracted
+  // principal-value quotient (H(theta) - H(theta_x))/(sin^2 theta -
+  // sin^2 theta_x) never sees a near-zero denominator; the pressure is
+  // evaluated once per node. Cost: O(M^2 panels^2) arithmetic.
+
+  // Order of the inner rule on the graded panels of the own zone (0: none,
+  // the inner rule M + 1 there too). For an outer node theta_j = k - delta
+  // near a graded kink k, the quotient (H(theta) - H_j)/(sin^2 theta -
+  // sin^2 theta_j) on the graded panel across k continues the other side's
+  // log term: poles at u = (delta/L)^(1/m) exp(+-i pi/m) (u the graded
+  // variable there), which the rule of order M + 1 resolves only
+  // algebraically (measured at 50 digits, M = 64, no layers: 7e-26 for the
+  // graded outer nodes; 2e-48 still from the layer next to them; the own
+  // graded panel 6e-35). 6M + 1 (also interlacing) reaches the precision.
+  // Not needed in double (m = 4: the errors stay below 1e-16).
+  static int graded_inner_order(int M) {
+    return std::numeric_limits<T>::digits10 > 20 ? 6 * M + 1 : 0;
+  }
+
+  // h' at the first `count` outer nodes O of zone z (inner rules IR, IL;
+  // G: the high-order rule on the graded panels of zone z, or null).
+  std::vector<T> hgrad_nodes(int z, const gdetail::zone_nodes<T> &O, const gdetail::zone_nodes<T> &IR,
+                             const gdetail::zone_nodes<T> &IL, std::size_t count,
+                             const gdetail::zone_nodes<T> *G = nullptr) const {
+    using std::sqrt;
+    const T e = width;
+    std::vector<T> g(count, T(0));
+    for (std::size_t j = 0; j < count; ++j) {
+      const T sj = O.s2[j], cj = O.c2[j];
+      const T u = O.d * sj;
+      T br = 0;
+      for (int Z : {+1, -1}) {
+        const int dir = Z > 0 ? dirR : dirL;
+        const auto &I = Z > 0 ? IR : IL;
+        if (dir == 0 || !(I.d > 0)) continue;
+        const std::size_t n = I.s2.size();
+        T sum = 0;
+        if (Z == z) {
+          // t - xi = Z d (sin^2 theta - sin^2 theta_j); PV int_0^{pi/2} dtheta/(sin^2 theta - c) = 0
+          const T Hj = O.H[j];
+          const bool hi = G && !G->s2.empty();
+          for (std::size_t i = 0; i < n; ++i) {
+            if (hi && I.graded[i]) continue;
+            const T den = (I.s2[i] + sj < 1) ? I.s2[i] - sj : cj - I.c2[i];
+            // den = 0 only where both nodes have merged into a graded panel
+            // end in rounding (high orders): weights there are negligible
+            if (den != 0) sum += I.w[i] * (I.H[i] - Hj) / den;
+          }
+          if (hi) {
+            for (std::size_t i = 0; i < G->s2.size(); ++i) {
+              const T den = (G->s2[i] + sj < 1) ? G->s2[i] - sj : cj - G->c2[i];
+              if (den != 0) sum += G->w[i] * (G->H[i] - Hj) / den;
+            }
+          }
+          sum /= I.d;
+        } else {
+          // |t - xi| = e + u + d_Z sin^2 theta
+          const T base = e + u;
+          for (std::size_t i = 0; i < n; ++i) sum += I.w[i] * I.H[i] / (base + I.d * I.s2[i]);
+        }
+        // C_Z = Z sum; br = dirR C_R - dirL C_L
+        br += T(dir) * sum;
+      }
+      g[j] = -2 * sqrt(u * (e + u)) * br / pi<T>();
+    }
+    return g;
+  }
+
+  // zone energy with the outer order M (see above), by parts:
+  // int_0^d tail(d - u) h'(u) du with the tail cumulated on the outer nodes
+  T energy_hat_order(int z, int M) const {
+    using std::abs; using std::sqrt;
+    const T d = zone_length(z);
+    if (!(d > 0)) return T(0);
+    const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
+    const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1);
+    const auto IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1);
+    const int Kg = graded_inner_order(M);
+    gdetail::zone_nodes<T> G;
+    if (Kg > 0) G = gdetail::make_zone_nodes<T>(*pm, z, d, width, Kg, nullptr, true);
+    const std::vector<T> g = hgrad_nodes(z, O, IR, IL, O.s2.size(), Kg > 0 ? &G : nullptr);
+    const auto cum = gauss_legendre_cumulative<T>(M);
+    std::vector<T> f(M);
+    T after = 0, E = 0;
+    for (std::size_t P = O.panels.size(); P-- > 0;) {
+      const std::size_t b = P * M;
+      T tot = 0;
+      for (int k = 0; k < M; ++k) {
+        // p_hat du/dtheta, du/dtheta = 2 d sin cos
+        f[k] = O.p[b + k] * 2 * d * sqrt(O.s2[b + k] * O.c2[b + k]);
+        tot += O.w[b + k] * f[k];
+      }
+      for (int i = 0; i < M; ++i) {
+        T tail = 0;
+        for (int k = 0; k < M; ++k) tail += cum->S[std::size_t(i) * M + k] * O.jac[b + k] * f[k];
+        tail += after;
+        E += O.w[b + i] * 2 * d * sqrt(O.s2[b + i] * O.c2[b + i]) * tail * g[b + i];
+      }
+      after += tot;
+    }
+    return abs(E);
+  }
+
+  // slip at distance dl from the stick edge with the outer order M: the
+  // panels of zone z (outer and inner rules alike, so that their nodes still
+  // interlace) get an extra end at theta_x = asin(sqrt(dl/d)); h is the sum
+  // over the panels below it (relative accuracy also for dl << d).
+  T hhat_order(int z, const T &dl, int M) const {
+    using std::asin; using std::sqrt;
+    const T d = zone_length(z);
+    if (!(dl > 0) || !(d > 0)) return T(0);
+    const T half_pi = pi<T>() / 2;
+    const T thx = dl >= d ? half_pi : (2 * dl <= d ? T(asin(sqrt(dl / d))) : half_pi - asin(sqrt((d - dl) / d)));
+    const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M, &thx);
+    std::size_t np = 0;
+    while (np < O.panels.size() && !(O.panels[np].hi > thx)) ++np;
+    const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1, z > 0 ? &thx : nullptr);
+    const auto IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1, z < 0 ? &thx : nullptr);
+    const int Kg = graded_inner_order(M);
+    gdetail::zone_nodes<T> G;
+    if (Kg > 0) G = gdetail::make_zone_nodes<T>(*pm, z, d, width, Kg, &thx, true);
+    const std::vector<T> g = hgrad_nodes(z, O, IR, IL, np * M, Kg > 0 ? &G : nullptr);
+    T h = 0;
+    for (std::size_t j = 0; j < np * std::size_t(M); ++j) h += O.w[j] * 2 * d * sqrt(O.s2[j] * O.c2[j]) * g[j];
+    return h;
+  }
+
+  // canonical zone energy int p_hat |h| (units f^2 p0^2 a^2 / E*), by parts:
+  // dir * int_0^d tail(d - u) h'(u) du. Reference evaluation by nested
+  // adaptive tanh-sinh (slow: pressure tails and Cauchy integrals per node).
+  T energy_hat_adaptive(int z) const {
+    using std::abs;
+    const T d = zone_length(z);
+    if (!(d > 0)) return T(0);
+    std::vector<T> cuts;
+    for (const T &k : kink_distances(z)) cuts.push_back(k);
+    // c: distance to the contact edge
+    const T sum = integrate_pieces<T>([&](const T &u, const T &c) { return pm->tail(z, c) * hgrad(z, u); }, T(0), d,
+                                      cuts, quad_tol());
+    return abs(sum);
+  }
+
+  // Outer order control: from the smallest power of two >= 2/3 of the
+  // digits of T (as the solver starts; 1/2 beyond double), the order doubles until two
+  // successive results agree to energy_tol(); the
+  // result of the higher order is returned (its error is far below the
+  // difference: geometric convergence on the smooth panels, N^(-4m) on the
+  // graded ones).
+  T energy_tol() const {
+    using std::max; using std::sqrt;
+    const T e34 = sqrt(eps<T>() * sqrt(eps<T>()));
+    return max(rtol, e34);
+  }
+  template <class F> T by_order(const F &f) const {
+    using std::abs; using std::max;
+    const T tol = energy_tol();
+    int M = 4;
+    {
+      using std::log10;
+      const T digits = -log10(eps<T>());
+      // with the kink layers (beyond double) every panel converges
+      // geometrically; order 32 is already within ~1e-39 at 50 digits
+      const T start = gdetail::kink_layers<T>() > 0 ? digits / 2 : digits * 2 / 3;
+      while (T(M) < start) M *= 2;
+    }
+    T v = f(M);
+    for (; 2 * M <= max_order; M *= 2) {
+      const T v2 = f(2 * M);
+      if (!(abs(v2 - v) > tol * abs(v2))) return v2;
+      v = v2;
+    }
+    // the orders allowed ran out before two agreed: report it (no silent value)
+    throw error(status::no_convergence, "zone energy or slip: no two orders agreed up to the order limit (max_order)");
+  }
+  T energy_hat(int z) const {
+    if (!(zone_length(z) > 0)) return T(0);
+    return by_order([&](int M) { return energy_hat_order(z, M); });
+  }
+  T hhat(int z, const T &dl) const {
+    if (!(dl > 0) || !(zone_length(z) > 0)) return T(0);
+    return by_order([&](int M) { return hhat_order(z, dl, M); });
+  }
+
+  // Shear traction q(x) on body 1 (traction.hpp), split at the pressure's kinks.
+  std::vector<T> user_kinks() const {
+    std::vector<T> k;
+    for (const auto &bp : pm->breakpoints()) k.push_back(scene.a * (mirror ? -bp.x : bp.x));
+    return k;
+  }
+  T traction(const T &x) const { return this->traction_generic(x, user_kinks()); }
+
+  T pressure(const T &x) const {
+    const T xi = (mirror ? -x : x) / scene.a;
+    if (!(xi > -1 && xi < 1)) return T(0);
+    return scene.p0 * pm->p(xi);
+  }
+};
+
+}}  // namespace hs::core

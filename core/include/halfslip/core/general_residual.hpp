@@ -1,0 +1,107 @@
+// halfslip core, general pressures (general.hpp): the zone integrals of the
+// side conditions and their derivatives, and the residual of the unified
+// system in (x1, ln e).
+#pragma once
+#include <cmath>
+#include <vector>
+
+#include "general_panels.hpp"
+#include "numerics.hpp"
+#include "pressure.hpp"
+
+namespace hs { namespace core {
+
+// Sums of the single-zone integrals (I2: the moment about the stick-zone
+// centre, int p_hat (t - c)/R(t) dt) and their derivatives in the zone length
+// d at fixed stick-zone length e (a translation of the stick zone) and in e
+// at fixed d. Derivatives in b1 and b2 separately are each O(1/e) and cancel
+// in the translation: formed that way, the Jacobian lost every digit once
+// e < ~1e-16 (large sigma; issue 13). The d-derivative below is O(ln(1/e));
+// the e-derivative is kept as e dI/de (the 1/e^(3/2) of each node times e
+// overflowed for e < 1e-205).
+template <class T> struct zone_sums {
+  T I1{0}, I2{0}, I1d{0}, I2d{0}, I1le{0}, I2le{0};
+};
+
+// Single-zone integrals I_j = int_zone p_hat t^(j-1)/R(t) dt, j = 1, 2, and
+// (if jac) their derivatives in b1 and b2, by the composite rule of order n.
+// side = +1: zone (b1, 1) of length d = d1; side = -1: zone (-1, -b2), d = d2.
+// e = b1 + b2 > 0.
+template <class T>
+zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, const T &e, int n, bool jac) {
+  using std::asin; using std::cos; using std::sin; using std::sqrt;
+  zone_sums<T> r;
+  if (!(d > 0)) return r;
+  const auto panels = gdetail::make_panels<T>(d, e, gdetail::zone_kinks(pm, side, d));
+  gdetail::for_nodes<T>(panels, n, [&](const T &th, const T &w) {
+    const T sn = sin(th), cs = cos(th);
+    const T s2 = sn * sn, c2 = cs * cs;
+    const T ds = d * s2;           // distance to the stick edge
+    const T g = e + ds;            // |t - (other stick edge)|: t + b2 (R) or b1 - t (L)
+    const gdetail::zone_point<T> x = gdetail::zone_point_at(side, d, s2, c2);
+    T dph = 0;
+    const T ph = jac ? pm.phi_dphi(x.t, x.dm, x.dp, dph) : pm.phi(x.t, x.dm, x.dp);
+    const T sf = sqrt(x.far(side));  // sqrt of the distance to the far contact edge
+    const T psi = sf * ph;                 // p_hat / sqrt(distance to the near edge)
+    const T rg = 1 / sqrt(g);
+    const T base = 2 * d * c2 * psi * rg;  // integrand of I_1 (per dtheta)
+    // t - c: +(ds + e/2) in zone R, -(ds + e/2) in zone L
+    const T u = side > 0 ? ds + e / 2 : -(ds + e / 2);
+    r.I1 += w * base;
+    r.I2 += w * base * u;
+    if (!jac) return;
+    // psi' = d psi / dt
+    const T dpsi = side > 0 ? ph / (2 * sf) + sf * dph : -ph / (2 * sf) + sf * dph;
+    // at fixed theta: t = 1 - d cos^2 (R) or -1 + d cos^2 (L), g = e + d sin^2
+    const T dtdd = side > 0 ? -c2 : c2;
+    // d base/d e = -base/(2g); d base/d d = 2 c2 psi/sqrt(g) + 2 d c2 psi' t_d/sqrt(g)
+    // - base sin^2/(2g), whose last term is at most base/(2d): no 1/e
+    const T bd = 2 * c2 * psi * rg + 2 * d * c2 * dpsi * dtdd * rg - base * s2 / (2 * g);
+    const T ble = -base * (e / (2 * g));  // e d base/d e, at most base/2
+    // u_d = +-sin^2, e u_e = +-e/2
+    const T sgn = side > 0 ? T(1) : T(-1);
+    r.I1d += w * bd;
+    r.I2d += w * (bd * u + sgn * base * s2);
+    r.I1le += w * ble;
+    r.I2le += w * (ble * u + sgn * base * e / 2);
+  });
+  return r;
+}
+
+// Residuals and Jacobian in (x1, ln e) of the unified system.
+template <class T> struct general_eval {
+  T F1, F2;
+  T J11, J12, J21, J22;  // dF/dx1, dF/dln e
+};
+
+template <class T> struct general_state {
+  T x1;  // +d1 (same sign), -d1 (opposite sign)
+  T e;   // b1 + b2
+  T d1() const { using std::abs; return abs(x1); }
+  T d2() const { return 2 - d1() - e; }
+  int sR() const { return x1 < 0 ? -1 : 1; }
+};
+
+template <class T>
+general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const T &s, const general_state<T> &st,
+                                 int n, bool jac) {
+  const T pi_ = pi<T>();
+  const T d1 = st.d1(), d2 = st.d2(), e = st.e;
+  const int sR = st.sR();
+  const zone_sums<T> R = zone_integrals(pm, +1, d1, e, n, jac);
+  const zone_sums<T> L = zone_integrals(pm, -1, d2, e, n, jac);
+  general_eval<T> r;
+  r.F1 = L.I1 - sR * R.I1 - pi_ * s / 4;
+  r.F2 = L.I2 - sR * R.I2 + pi_ * q / 2;  // F2 - c F1 (see the top of this file)
+  if (!jac) return r;
+  // d1 = |x1|, d2 = 2 - d1 - e: at fixed e, d d1/d x1 = sg, d d2/d x1 = -sg;
+  // at fixed x1, d d2/d e = -1 (and b1 - b2 = d2 - d1)
+  const T sg = T(sR);
+  r.J11 = -sg * L.I1d - R.I1d;
+  r.J21 = -sg * L.I2d - R.I2d;
+  r.J12 = L.I1le - sR * R.I1le - e * L.I1d;
+  r.J22 = L.I2le - sR * R.I2le - e * L.I2d;
+  return r;
+}
+
+}}  // namespace hs::core

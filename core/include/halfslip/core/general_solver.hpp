@@ -1,0 +1,364 @@
+// halfslip core, general pressures (general.hpp): the solver: Newton at a
+// fixed order (the damped_newton kernel of newton.hpp), the starts (Hertz,
+// shear-only, large sigma), continuation in sigma, and the order control.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <boost/math/tools/precision.hpp>
+
+#include "general_post.hpp"
+#include "general_residual.hpp"
+#include "hertz.hpp"
+#include "newton.hpp"
+#include "numerics.hpp"
+#include "pressure.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+template <class T> struct general_options {
+  int max_iterations = 100;  // Newton iterations per solve (continuation: per step)
+  T rtol = T(0);             // 0: full precision of T
+  int max_order = 1024;      // largest Gauss-Legendre order per panel (solver, energies and slips)
+};
+
+namespace gdetail {
+
+template <class T> T residual_norm(const general_eval<T> &r) {
+  using std::abs;
+  return abs(r.F1) + abs(r.F2);
+}
+
+// The unified side conditions at fixed order n as a problem of damped_newton
+// (newton.hpp), in (x1, ln e).
+template <class T> struct general_problem {
+  using real = T;
+  using state = general_state<T>;
+  using eval = general_eval<T>;
+  const pressure_model<T> &pm;
+  const T &q, &s;
+  int n;
+  const T &tol_step;
+  T tiny, noise_floor;
+
+  general_problem(const pressure_model<T> &pm_, const T &q_, const T &s_, int n_, const T &tol_step_)
+      : pm(pm_), q(q_), s(s_), n(n_), tol_step(tol_step_) {
+    tiny = boost::math::tools::min_value<T>() / eps<T>();
+    noise_floor = 64 * eps<T>() * pi<T>() * (1 + s);
+  }
+  eval residual(const state &st) const { return general_residual(pm, q, s, st, n, true); }
+  T floor(const eval &) const { return noise_floor; }
+  jacobian2<T> jacobian(const state &, const eval &r) const { return {r.J11, r.J12, r.J21, r.J22}; }
+  // a full step below the step tolerance after a converging one: take it
+  // without evaluating the residual there (it would only confirm the step)
+  bool shortcut(state &st, const T &dx, const T &dy, const T &prev_step) const {
+    using std::abs; using std::exp; using std::max;
+    if (prev_step >= 0 && max(abs(dx), abs(dy)) <= tol_step && max(abs(dx), abs(dy)) <= prev_step) {
+      st.x1 += dx;
+      st.e *= exp(dy);
+      return true;
+    }
+    return false;
+  }
+  // x1 = +-d1 moves by at most the contact half-width
+  void cap_x(T &dx, T &dy) const {
+    using std::abs;
+    if (abs(dx) > 1) { dy /= abs(dx); dx = dx > 0 ? T(1) : T(-1); }
+  }
+  bool trial(const state &st, const T &lam, const T &dx, const T &dy, state &nst) const {
+    using std::exp;
+    nst.x1 = st.x1 + lam * dx;
+    nst.e = st.e * exp(lam * dy);
+    const T nd2 = nst.d2();
+    return nst.e > tiny && nd2 > st.d2() / 4 && nst.d1() < 2;
+  }
+  newton_steps<T> steps(const state &, const T &lam, const T &dx, const T &dy) const {
+    using std::abs; using std::max;
+    const T step = max(abs(lam * dx), abs(lam * dy));
+    return {step, step};
+  }
+  bool converged(const T &lam, const T &step, const T &, const T &) const { return lam == 1 && step <= tol_step; }
+};
+
+// Newton from a start at fixed order n; true on convergence. iterations is
+// increased by the iterations begun.
+template <class T>
+bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n, const T &tol_step,
+            int max_it, int &iterations, const general_eval<T> *r0 = nullptr) {
+  general_problem<T> p(pm, q, s, n, tol_step);
+  const newton_outcome o = damped_newton(p, st, r0 ? *r0 : p.residual(st), max_it);
+  iterations += o.iterations;
+  return o.converged;
+}
+
+// Start at s = 0: the restriction of F2 to b1 = b2 = 1 - d (e = 2 - 2d),
+// F2(d) = I2L - I2R + pi q/2, falls monotonically from pi q/2 (d = 0) to
+// pi (q - 1)/2 (d -> 1); bracketed Illinois iteration in d to sqrt(eps).
+// (For a symmetric pressure this is eq (15) and b1 = b2 exactly; for an
+// asymmetric one it is a start for the 2D Newton.) The iteration limit is
+// not an error: the result is only a start, which Newton validates (and
+// reports no_convergence if it cannot finish from it).
+template <class T>
+general_state<T> shear_only_start(const pressure_model<T> &pm, const T &q, int n) {
+  using std::abs; using std::sqrt;
+  auto F = [&](const T &d) {
+    return general_residual(pm, q, T(0), general_state<T>{d, 2 * (1 - d)}, n, false).F2;
+  };
+  T lo = 0, hi = 1, flo = pi<T>() * q / 2, fhi = pi<T>() * (q - 1) / 2;
+  int side = 0;
+  const T tol = sqrt(eps<T>());
+  for (int it = 0; it < 200 && hi - lo > tol; ++it) {
+    T d = (lo * fhi - hi * flo) / (fhi - flo);
+    if (!(d > lo && d < hi)) d = (lo + hi) / 2;
+    const T fd = F(d);
+    if (fd > 0) {
+      lo = d; flo = fd;
+      if (side == +1) fhi /= 2;
+      side = +1;
+    } else {
+      hi = d; fhi = fd;
+      if (side == -1) flo /= 2;
+      side = -1;
+    }
+  }
+  const T d = (lo + hi) / 2;
+  return {d, 2 * (1 - d)};
+}
+
+// Sliding stick point (issue 13): as s grows the stick zone shrinks onto the
+// point x0 where the limiting friction forces of the two slip zones balance
+// Q, q pi/2 = int_{-1}^{x0} p_hat - int_{x0}^{1} p_hat, i.e. the tail of p_hat
+// beyond x0 is pi (1 - q)/4. Returns d_inf = 1 - x0 (Illinois on the tail,
+// which grows monotonically with its length; false if the iteration limit is
+// reached).
+template <class T> bool sliding_point(const pressure_model<T> &pm, const T &q, T &d_inf) {
+  using std::abs;
+  const T target = pi<T>() * (1 - q) / 4;
+  T lo = 0, hi = 2, flo = -target, fhi = pi<T>() / 2 - target;
+  int side = 0;
+  for (int it = 0; it < 200; ++it) {
+    T d = (lo * fhi - hi * flo) / (fhi - flo);
+    if (!(d > lo && d < hi)) d = (lo + hi) / 2;
+    const T fd = pm.tail(+1, d) - target;
+    if (fd < 0) { lo = d; flo = fd; if (side == -1) fhi /= 2; side = -1; }
+    else { hi = d; fhi = fd; if (side == +1) flo /= 2; side = +1; }
+    if (hi - lo <= 4 * eps<T>() * hi || fd == 0) { d_inf = fd == 0 ? d : (lo + hi) / 2; return true; }
+  }
+  return false;
+}
+
+// Start for large s (issue 13): the stick zone centred on the sliding stick
+// point x0, its width e from F1 = 0 at that centre. F1 is nearly linear in
+// ln e once e << 1 (the zone integrals grow like ln(1/e)): secant steps in
+// ln e from two small widths. Newton in (x1, ln e) then follows x0 and the
+// width on a log scale. False if no such start exists (the stick zone would
+// be below the range of T: tiny_le is ln of the smallest width allowed).
+// below_range is set when the width would be below exp(tiny_le). The secant
+// limit is not an error: the result is only a start, validated by Newton.
+template <class T>
+bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int n, const T &tiny_le,
+                       general_state<T> &out, bool &below_range) {
+  using std::abs; using std::exp; using std::log; using std::max; using std::min;
+  T d_inf;
+  if (!sliding_point(pm, q, d_inf) || !(d_inf > 0 && d_inf < 2)) return false;
+  auto F1 = [&](const T &le) {
+    const T e = exp(le);
+    return general_residual(pm, q, s, general_state<T>{-(d_inf - e / 2), e}, n, false).F1;
+  };
+  const T cap = log(min(min(T(1), T(d_inf / 2)), T((2 - d_inf) / 2)));
+  T l0 = min(T(-8), cap), l1 = l0 - 8;
+  T f0 = F1(l0), f1 = F1(l1);
+  for (int it = 0; it < 30; ++it) {
+    if (!(f1 != f0) || !(f0 == f0) || !(f1 == f1)) return false;
+    T l2 = l1 - f1 * (l1 - l0) / (f1 - f0);
+    l2 = min(l2, cap);
+    if (!(l2 > tiny_le)) { below_range = l2 <= tiny_le; return false; }
+    const T f2 = F1(l2);
+    l0 = l1; f0 = f1; l1 = l2; f1 = f2;
+    if (abs(l1 - l0) <= T(1e-3) * (1 + abs(l1))) break;
+  }
+  const T e = exp(l1);
+  out = {-(d_inf - e / 2), e};
+  return out.d2() > 0;
+}
+
+// Continuation in s from s = 0 with the tangent predictor dx/ds = -J^-1 dF/ds.
+template <class T>
+bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
+                  const T &tol_step, int max_it, int &iterations, int &steps) {
+  using std::abs; using std::exp; using std::ldexp;
+  T sc = 0;
+  // (s may be denormal: s/4 and s 2^-40 then underflow to 0; every step
+  // must make progress, else a zero step loops for ever: fuzzer input
+  // tests/fuzz/corpus/solve/timeout-denormal-sigma)
+  T h = s / 4;
+  if (!(h > 0)) h = s;
+  const T hmin = s * ldexp(T(1), -40);
+  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
+  while (sc < s) {
+    if (!(h > 0) || h < hmin) return false;
+    const T sn = (s - sc <= h || !(sc + h > sc)) ? s : sc + h;
+    const T ds = sn - sc;
+    // tangent predictor
+    general_state<T> pred = st;
+    const general_eval<T> r = general_residual(pm, q, sc, st, n, true);
+    const T pi_ = pi<T>();
+    const T Fs1 = -pi_ / 4, Fs2 = 0;  // F2 (the moment about the centre) has no s
+    const auto x = solve2x2(r.J11, r.J12, r.J21, r.J22, Fs1, Fs2);
+    if (x.det != 0) {
+      const T dx = -x.x1, dy = -x.x2;
+      general_state<T> p2{st.x1 + ds * dx, st.e * exp(ds * dy)};
+      if (p2.e > tiny && p2.d2() > 0 && p2.d1() < 2) pred = p2;
+    }
+    int its = 0;
+    general_state<T> trial = pred;
+    ++steps;
+    if (newton(pm, q, sn, trial, n, tol_step, max_it, its)) {
+      iterations += its;
+      st = trial;
+      sc = sn;
+      if (its <= 4) h *= 2;
+    } else {
+      iterations += its;
+      h /= 4;
+    }
+  }
+  return true;
+}
+
+}  // namespace gdetail
+
+// Solve a general scene for the pressure pm (dimensionless model; scene
+// gives a, p0, f, E* for the dimensional outputs). pm must outlive the
+// solution. Throws hs::core::error on bad input or failure.
+template <class T>
+general_solution<T> solve_general(const pressure_model<T> &pm, const general_scene<T> &sc,
+                                  const general_options<T> &opt = {}) {
+  using std::abs; using std::max; using std::sqrt;
+  validate(sc);
+  if (opt.max_iterations < 1 || opt.max_order < 2 || !(opt.rtol >= 0))
+    throw error(status::bad_option, "bad solver options");
+  general_solution<T> sol;
+  sol.scene = sc;
+  sol.rtol = opt.rtol;
+  sol.max_order = opt.max_order;
+  T q = sc.q, s = sc.s;
+  if (q < 0) { sol.negate = true; q = -q; s = -s; }
+  if (s < 0) { sol.mirror = true; s = -s; }
+  if (sol.mirror && !pm.symmetric()) {
+    auto mp = std::make_shared<mirrored_pressure<T>>(pm);
+    sol.owned = mp;
+    sol.pm = mp.get();
+  } else {
+    sol.pm = &pm;
+  }
+  const pressure_model<T> &P = *sol.pm;
+  if (q == 0 && s == 0) { sol.reg = regime::stuck; return sol; }
+
+  const T tolq = max(opt.rtol, 64 * eps<T>());
+  const T tol_step = max(opt.rtol, 4 * eps<T>());
+  const T qtol = tolq * pi<T>() * (1 + s);
+  // initial order from the tolerance: the smallest power of two >= 2/3 of
+  // the digits asked for (the residual is then validated at twice the order)
+  int n = 4;
+  {
+    using std::log10;
+    const T digits = -log10(tolq);
+    while (T(n) < digits * 2 / 3) n *= 2;
+  }  // start: the Hertz solution of the same (q, s)
+  general_state<T> st;
+  {
+    hertz_scene<T> hs;
+    hs.q = q; hs.s = s;
+    const auto h = solve_hertz(hs);
+    st.x1 = h.reg == regime::opposite_sign ? -h.delta1 : h.delta1;
+    st.e = h.width;
+    // for a model with a known shear-only stick half-width c, scale the Hertz
+    // stick zone about its centre by c / sqrt(1 - q) (exact at sigma = 0)
+    T c;
+    if (P.shear_only_half_width(q, c) && c > 0 && c <= 1) {
+      using std::sqrt;
+      const T cH = sqrt(1 - q);
+      const T m = (h.delta2 - h.delta1) / 2, w = h.width / 2 * (c / cH);
+      const T nb1 = m + w, nb2 = w - m;
+      if (nb1 < 1 && nb2 < 1 && w > 0) {
+        st.x1 = h.reg == regime::opposite_sign ? -(1 - nb1) : 1 - nb1;
+        st.e = 2 * w;
+      }
+    }
+  }
+  int its = 0;
+  general_state<T> trial = st;
+  bool ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+  if (!ok && st.x1 < 0 && st.e < T(0.1)) {
+    // large sigma: start from the sliding stick point (issue 13)
+    using std::log;
+    const T tiny_le = log(boost::math::tools::min_value<T>() / eps<T>());
+    bool below = false;
+    if (gdetail::large_sigma_start(P, q, s, n, tiny_le, trial, below))
+      ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+    else if (below) {
+      // the quadrature needs the width itself: a clear error, not seconds of
+      // continuation that cannot succeed (docs/models.md, domain)
+      throw error(status::overflow,
+                  "general solver: sigma/(f p0) too large: the stick zone would be narrower than the range of the "
+                  "floating-point type (1e-292 a in double)");
+    }
+  }
+  if (!ok) {
+    // fallback: continuation in s from the shear-only solution
+    general_state<T> s0 = gdetail::shear_only_start(P, q, n);
+    if (!gdetail::newton(P, q, T(0), s0, n, tol_step, opt.max_iterations, its))
+      throw error(status::no_convergence, "general solver: no convergence at sigma = 0");
+    trial = s0;
+    if (s > 0 && !gdetail::continuation(P, q, s, trial, n, tol_step, opt.max_iterations, its,
+                                        sol.continuation_steps))
+      throw error(status::no_convergence, "general solver: continuation in sigma failed");
+  }
+  st = trial;
+  // order control: accept n when the residual with 2n is within qtol; finish
+  // with one Newton step on the 2n residual.
+  for (;;) {
+    const general_eval<T> r2 = general_residual(P, q, s, st, 2 * n, true);
+    if (gdetail::residual_norm(r2) <= qtol) {
+      const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
+      if (x.det != 0) {
+        using std::exp;
+        const T dx = -x.x1, dy = -x.x2;
+        general_state<T> ns{st.x1 + dx, st.e * exp(dy)};
+        // keep the regime of the accepted state unless the state sits on the boundary
+        if (ns.d2() > 0 && ns.e > 0 && (ns.x1 == 0 || (ns.x1 > 0) == (st.x1 > 0) || abs(st.x1) <= qtol))
+          st = ns;
+      }
+      n *= 2;
+      break;
+    }
+    n *= 2;
+    if (2 * n > opt.max_order)
+      throw error(status::no_convergence, "general solver: quadrature order limit reached");
+    // Newton at the doubled order from the residual just evaluated there
+    if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its, &r2))
+      throw error(status::no_convergence, "general solver: Newton iteration did not converge");
+  }
+  sol.iterations = its;
+  sol.order = n;
+  sol.delta1 = st.d1();
+  sol.width = st.e;
+  sol.delta2 = st.d2();
+  sol.beta1 = 1 - sol.delta1;
+  sol.beta2 = 1 - sol.delta2;
+  if (st.x1 < 0) {
+    sol.reg = regime::opposite_sign;
+    sol.dirR = -1;
+  } else {
+    sol.reg = regime::same_sign;
+    sol.dirR = sol.delta1 > 0 ? 1 : 0;
+  }
+  sol.dirL = 1;
+  return sol;
+}
+
+
+}}  // namespace hs::core
