@@ -190,6 +190,47 @@ std::shared_ptr<const core::pressure_model<double>> pressure_of_geometry(const h
 
 }}  // namespace hs::capi
 
+namespace {
+// The contact state of each kind of solution (issue 15; C++ overloads, so
+// outside extern "C")
+core::contact_state<double> state_of_solution(const core::hertz_solution<double> &s, double bulk2) {
+  return core::hertz_state(s, bulk2);
+}
+core::contact_state<double> state_of_solution(const core::general_solution<double> &s, double bulk2) {
+  return core::general_state_of(s, bulk2);
+}
+template <class S> core::contact_state<double> state_of_solution(const S &s, double bulk2) {
+  return core::make_state<double>(s, bulk2);
+}
+
+// The one solve behind hs_solve and hs_solve_geometry: the Hertz geometry
+// (geometry NULL; the scene carries it) or another geometry.
+hs_solution *solve_scene(const hs_scene &scene, const hs_geometry *geometry, const hs_options *opts) {
+  core::general_scene<double> sc;
+  hs::capi::request req;
+  hs::capi::reference_input ref;
+  auto h = std::make_unique<hs_solution>();
+  if (!geometry) {
+    const auto c = to_core(&scene);
+    req = read_options(opts);
+    sc.a = c.a; sc.p0 = c.p0; sc.f = c.f; sc.Estar = c.Estar; sc.q = c.q; sc.s = c.s;
+    if (req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
+  } else {
+    req = read_options(opts);
+    h->model = hs::capi::pressure_of_geometry(scene, *geometry, sc);
+    if ((req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) &&
+        (geometry->kind == HS_GEOMETRY_FLAT_ROUNDED || geometry->kind == HS_GEOMETRY_POWER_LAW)) {
+      ref = reference_of(sc);
+      ref.text.geometry = geometry->kind;
+      ref.text.flat_over_a = hs::capi::exact_decimal(geometry->flat_over_a);
+      ref.text.exponent = hs::capi::exact_decimal(geometry->exponent);
+    }
+  }
+  hs::capi::solve_models(*h, !geometry, sc, req, ref);
+  return h.release();
+}
+}  // namespace
+
 extern "C" {
 
 int hs_version(int *major, int *minor, int *patch) {
@@ -250,7 +291,7 @@ namespace {
 // The scene of a contact of half-width a under the load P (shared by the
 // dimensional constructors); *scene is written only on success.
 void scene_from_loads(double a, double P, double E_star, double f, double Q, double sigma, hs_scene *scene) {
-  const double p0 = 2 * P / (core::pi<double>() * a);
+  const double p0 = core::pressure_unit(P, a);
   require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
           "contact size not representable");
   const double q = Q / (f * P);
@@ -280,19 +321,7 @@ int hs_scene_from_power_law_loads(double P, double A, double n, double E_star, d
   return guard([&] {
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
     check_loads({P, A, n, E_star, f, Q, sigma}, P, E_star, f);
-    require(A > 0, core::status::bad_size, "profile coefficient A must be > 0");
-    require(n > 1 && n < 1000, core::status::bad_geometry, "power law: need 1 < n < 1000");
-    // a^n = 2 P Gamma(n/2+1) / (E* n A sqrt(pi) Gamma((n+1)/2)): directly (a few
-    // rounding errors, divided by n in a), or in logarithms if that under/overflows
-    const double ratio = std::exp(std::lgamma(n / 2 + 1) - std::lgamma((n + 1) / 2));
-    const double an = 2 * P / (E_star * n * A * std::sqrt(core::pi<double>())) * ratio;
-    double a;
-    if (std::isnormal(an)) {
-      a = std::pow(an, 1 / n);
-    } else {
-      a = std::exp((std::log(2 * P) + std::lgamma(n / 2 + 1) - std::lgamma((n + 1) / 2) - std::log(E_star) -
-                    std::log(n) - std::log(A) - 0.5 * std::log(core::pi<double>())) / n);
-    }
+    const double a = core::power_law_pressure<double>::half_width_from_load(P, E_star, A, n);
     scene_from_loads(a, P, E_star, f, Q, sigma, scene);
   });
 }
@@ -319,7 +348,8 @@ int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, doubl
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
     check_loads({P, R, E_star, f, Q, sigma}, P, E_star, f);
     require(R > 0, core::status::bad_size, "R must be > 0");
-    scene_from_loads(std::sqrt(4 * P * R / (core::pi<double>() * E_star)), P, E_star, f, Q, sigma, scene);
+    scene_from_loads(core::hertz_pressure<double>::half_width_from_load(P, R, E_star), P, E_star, f, Q, sigma,
+                     scene);
   });
 }
 
@@ -337,15 +367,8 @@ int hs_options_default(hs_options *opts) {
 int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
   return guard([&] {
     require(out != nullptr, core::status::null_pointer, "output handle pointer is NULL");
-    const auto c = to_core(scene);
-    const auto r = read_options(opts);
-    core::general_scene<double> sc;
-    sc.a = c.a; sc.p0 = c.p0; sc.f = c.f; sc.Estar = c.Estar; sc.q = c.q; sc.s = c.s;
-    auto h = std::make_unique<hs_solution>();
-    hs::capi::reference_input ref;
-    if (r.model == HS_MODEL_AUTO || r.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
-    hs::capi::solve_models(*h, true, sc, r, ref);
-    *out = h.release();
+    require(scene != nullptr, core::status::null_pointer, "scene is NULL");
+    *out = solve_scene(*scene, nullptr, opts);
   });
 }
 
@@ -375,7 +398,8 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
       r.p0 = s.scene.p0;
       return 0;
     });
-    r.quadrature_order = sol->general ? sol->general->order : 0;
+    const auto *general = std::get_if<core::general_solution<double>>(&sol->solution);
+    r.quadrature_order = general ? general->order : 0;
     r.model = sol->model_used;
     r.error_estimate = sol->error_estimate;
     r.struct_size = n;
@@ -412,26 +436,12 @@ int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const 
     require(out != nullptr && scene != nullptr && geometry != nullptr, core::status::null_pointer, "NULL argument");
     require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry struct_size");
     if (geometry->kind == HS_GEOMETRY_HERTZ) {
-      hs_scene h = *scene;
+      hs_scene h = *scene;  // the geometry argument decides, not scene->geometry
       h.geometry = HS_GEOMETRY_HERTZ;
-      const int st = hs_solve(&h, opts, out);
-      if (st != HS_OK) throw core::error(core::status(st), "hertz");
-      return;
+      *out = solve_scene(h, nullptr, opts);
+    } else {
+      *out = solve_scene(*scene, geometry, opts);
     }
-    core::general_scene<double> sc;
-    const auto req = read_options(opts);
-    auto h = std::make_unique<hs_solution>();
-    hs::capi::reference_input ref;
-    h->model = hs::capi::pressure_of_geometry(*scene, *geometry, sc);
-    if ((req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) &&
-        (geometry->kind == HS_GEOMETRY_FLAT_ROUNDED || geometry->kind == HS_GEOMETRY_POWER_LAW)) {
-      ref = reference_of(sc);
-      ref.text.geometry = geometry->kind;
-      ref.text.flat_over_a = hs::capi::exact_decimal(geometry->flat_over_a);
-      ref.text.exponent = hs::capi::exact_decimal(geometry->exponent);
-    }
-    hs::capi::solve_models(*h, false, sc, req, ref);
-    *out = h.release();
   });
 }
 
@@ -450,14 +460,8 @@ int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *
 
 // issue 15: the contact state of a solution (bulk2: stress the pad carries)
 namespace {
-hs::core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
-  auto make = [&] {
-    if (h.hertz) return hs::core::hertz_state(*h.hertz, bulk2);
-    if (h.general) return hs::core::general_state_of(*h.general, bulk2);
-    if (h.edge) return hs::core::make_state<double>(*h.edge, bulk2);
-    return hs::core::make_state<double>(*h.ref, bulk2);
-  };
-  auto st = make();
+core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
+  auto st = h.visit([&](const auto &s) { return state_of_solution(s, bulk2); });
   // the panels do not depend on bulk2: one set per solution, made on first use
   std::call_once(h.panels_once, [&] {
     if (hs::core::needs_panels(st)) h.panels = hs::core::make_panels(st);
