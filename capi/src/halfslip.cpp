@@ -271,6 +271,32 @@ const char *hs_strerror(int status) {
   }
 }
 
+namespace {
+// The model names, indexed by HS_MODEL_* (the only copy: the CLI and the
+// bindings ask hs_model_name / hs_model_from_name).
+const char *const model_names[] = {"default", "auto", "asymptotic", "closed-form", "quadrature", "reference"};
+static_assert(HS_MODEL_DEFAULT == 0 && HS_MODEL_AUTO == 1 && HS_MODEL_ASYMPTOTIC == 2 && HS_MODEL_CLOSED_FORM == 3 &&
+                  HS_MODEL_QUADRATURE == 4 && HS_MODEL_REFERENCE == 5 &&
+                  sizeof model_names / sizeof *model_names == HS_MODEL_REFERENCE + 1,
+              "model name table");
+}  // namespace
+
+const char *hs_model_name(int model) {
+  return model >= HS_MODEL_DEFAULT && model <= HS_MODEL_REFERENCE ? model_names[model] : nullptr;
+}
+
+int hs_model_from_name(const char *name, int *model) {
+  return guard([&] {
+    require(name != nullptr && model != nullptr, core::status::null_pointer, "NULL argument");
+    for (int m = HS_MODEL_DEFAULT; m <= HS_MODEL_REFERENCE; ++m)
+      if (std::strcmp(name, model_names[m]) == 0) {
+        *model = m;
+        return;
+      }
+    throw core::error(core::status::bad_option, "unknown model name");
+  });
+}
+
 int hs_scene_default(hs_scene *scene) {
   if (!scene) return HS_ERR_NULL_POINTER;
   hs_scene s;
