@@ -320,15 +320,21 @@ bool is_number(const std::string &t, double &v) {
   return *end == '\0';
 }
 
-samples read_samples(const std::string &path) {
-  samples s;
-  s.path = path;
+// The whole file named by the option flag (or die naming both).
+std::string read_whole_file(const std::string &path, const char *flag) {
   FILE *f = std::fopen(path.c_str(), "r");
-  if (!f) die("bad value for --pressure-file: cannot open '" + path + "'");
+  if (!f) die(std::string("bad value for ") + flag + ": cannot open '" + path + "'");
   std::string all;
   char buf[4096];
   for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) all.append(buf, n);
   std::fclose(f);
+  return all;
+}
+
+samples read_samples(const std::string &path) {
+  samples s;
+  s.path = path;
+  std::string all = read_whole_file(path, "--pressure-file");
   if (all.compare(0, 3, "\xEF\xBB\xBF") == 0) all.erase(0, 3);  // UTF-8 byte order mark
   bool header_allowed = true;
   size_t pos = 0;
@@ -560,12 +566,7 @@ const char *model_name(int m) {
 // --fields-at FILE: points 'x y' per line (whitespace or one comma, '#' comments,
 // blank lines, a header line first); errors name the file and the line
 void read_points(const std::string &path, std::vector<double> &px, std::vector<double> &py) {
-  FILE *f = std::fopen(path.c_str(), "r");
-  if (!f) die("bad value for --fields-at: cannot open '" + path + "'");
-  std::string all;
-  char buf[4096];
-  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) all.append(buf, n);
-  std::fclose(f);
+  const std::string all = read_whole_file(path, "--fields-at");
   size_t pos = 0;
   int ln = 0;
   bool header_allowed = true;

@@ -49,6 +49,18 @@ using hs::capi::guard;
 
 using hs::capi::require;
 
+// hs_*_default: a zeroed struct with its struct_size, then set(s); written
+// to *out only when out is not NULL.
+template <class S, class F> int fill_default(S *out, F &&set) {
+  if (!out) return HS_ERR_NULL_POINTER;
+  S s;
+  std::memset(&s, 0, sizeof s);
+  s.struct_size = sizeof(S);
+  set(s);
+  *out = s;
+  return HS_OK;
+}
+
 // Validated solver options (NULL: the defaults). A 0.2 caller passes the
 // size without the model field and gets HS_MODEL_DEFAULT.
 hs::capi::request read_options(const hs_options *opts) {
@@ -298,19 +310,15 @@ int hs_model_from_name(const char *name, int *model) {
 }
 
 int hs_scene_default(hs_scene *scene) {
-  if (!scene) return HS_ERR_NULL_POINTER;
-  hs_scene s;
-  std::memset(&s, 0, sizeof s);
-  s.struct_size = sizeof(hs_scene);
-  s.geometry = HS_GEOMETRY_HERTZ;
-  s.a = 1.0;
-  s.p0 = 1.0;
-  s.f = 1.0;
-  s.E_star = 1.0;
-  s.Q_over_fP = 0.5;
-  s.sigma_over_fp0 = 0.5;
-  *scene = s;
-  return HS_OK;
+  return fill_default(scene, [](hs_scene &s) {
+    s.geometry = HS_GEOMETRY_HERTZ;
+    s.a = 1.0;
+    s.p0 = 1.0;
+    s.f = 1.0;
+    s.E_star = 1.0;
+    s.Q_over_fP = 0.5;
+    s.sigma_over_fp0 = 0.5;
+  });
 }
 
 namespace {
@@ -380,14 +388,10 @@ int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, doubl
 }
 
 int hs_options_default(hs_options *opts) {
-  if (!opts) return HS_ERR_NULL_POINTER;
-  hs_options o;
-  std::memset(&o, 0, sizeof o);
-  o.struct_size = sizeof(hs_options);
-  o.max_iterations = 100;
-  o.rtol = 0.0;
-  *opts = o;
-  return HS_OK;
+  return fill_default(opts, [](hs_options &o) {
+    o.max_iterations = 100;
+    o.rtol = 0.0;
+  });
 }
 
 int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
@@ -445,15 +449,11 @@ int hs_solution_energy(const hs_solution *sol, double energy[2]) {
 }
 
 int hs_geometry_default(hs_geometry *geometry) {
-  if (!geometry) return HS_ERR_NULL_POINTER;
-  hs_geometry g;
-  std::memset(&g, 0, sizeof g);
-  g.struct_size = sizeof(hs_geometry);
-  g.kind = HS_GEOMETRY_HERTZ;
-  g.flat_over_a = 0.5;
-  g.exponent = 2.0;
-  *geometry = g;
-  return HS_OK;
+  return fill_default(geometry, [](hs_geometry &g) {
+    g.kind = HS_GEOMETRY_HERTZ;
+    g.flat_over_a = 0.5;
+    g.exponent = 2.0;
+  });
 }
 
 int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const hs_options *opts,
@@ -618,13 +618,8 @@ int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_comparison *
 }
 
 int hs_ref_scene_default(hs_ref_scene *scene) {
-  if (!scene) return HS_ERR_NULL_POINTER;
-  hs_ref_scene s;
-  std::memset(&s, 0, sizeof s);
-  s.struct_size = sizeof(hs_ref_scene);
-  s.geometry = HS_GEOMETRY_HERTZ;
-  *scene = s;  // NULL strings mean the defaults of hs::reference::text_scene
-  return HS_OK;
+  // NULL strings mean the defaults of hs::reference::text_scene
+  return fill_default(scene, [](hs_ref_scene &s) { s.geometry = HS_GEOMETRY_HERTZ; });
 }
 
 int hs_ref_max_digits(void) { return hs::reference::max_digits(); }
