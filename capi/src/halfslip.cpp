@@ -14,6 +14,7 @@
 #include "halfslip/core/asymptotic.hpp"
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
+#include "halfslip/core/select.hpp"
 #include "halfslip/reference/backend.hpp"
 #include "solution.hpp"
 #include "halfslip/core/fields.hpp"
@@ -73,15 +74,10 @@ hs::capi::request read_options(const hs_options *opts) {
           "max_iterations out of range");
   r.model = n == sizeof(hs_options) ? opts->model : HS_MODEL_DEFAULT;
   require(r.model >= HS_MODEL_DEFAULT && r.model <= HS_MODEL_REFERENCE, core::status::bad_option, "unknown model");
-  const double t = opts->rtol;
-  if (r.model == HS_MODEL_AUTO)
-    require(std::isfinite(t) && (t == 0 || (t >= std::ldexp(1.0, -53) && t <= 0.5)), core::status::bad_option,
-            "rtol out of range");
-  else
-    require(std::isfinite(t) && (t == 0 || (t >= 1e-15 && t <= 1e-2)), core::status::bad_option,
-            "rtol out of range");
+  require(core::tolerance_in_range(opts->rtol, r.model == HS_MODEL_AUTO), core::status::bad_option,
+          "rtol out of range");
   r.max_iterations = opts->max_iterations;
-  r.rtol = t;
+  r.rtol = opts->rtol;
   return r;
 }
 

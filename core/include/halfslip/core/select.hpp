@@ -130,6 +130,17 @@ error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, con
   return e;
 }
 
+// The tolerances a caller may ask for (hs_options.rtol): 0 (full precision);
+// for model selection (HS_MODEL_AUTO) the error the chosen model must meet,
+// in [2^-53, 0.5]; for one model, the quadrature's tolerance in [1e-15, 1e-2].
+template <class T> bool tolerance_in_range(const T &rtol, bool model_selection) {
+  using std::isfinite; using std::ldexp;
+  if (!isfinite(rtol)) return false;
+  if (rtol == 0) return true;
+  if (model_selection) return rtol >= ldexp(T(1), -53) && rtol <= T(0.5);
+  return rtol >= T(1e-15) && rtol <= T(1e-2);
+}
+
 // The quadrature tolerance rt for which the quadrature's estimate meets tol
 // (model selection, HS_MODEL_AUTO): the estimate's form 16 (eps + rt)(1 + a/d_min)
 // inverted with a margin of 4, with d_min guessed by the Hertz closed form
