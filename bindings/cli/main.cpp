@@ -291,6 +291,16 @@ std::string trim(const std::string &t) {
   return b == std::string::npos ? "" : t.substr(b, e - b + 1);
 }
 
+// The content of a line of an input file, in place: no CR, no '#' comment, no
+// surrounding blanks; false if nothing is left.
+bool content_of_line(std::string &t) {
+  if (!t.empty() && t.back() == '\r') t.pop_back();
+  const size_t hash = t.find('#');
+  if (hash != std::string::npos) t.erase(hash);
+  t = trim(t);
+  return !t.empty();
+}
+
 // Fields of one line: comma-separated if it has a comma, else whitespace-separated.
 std::vector<std::string> split_fields(const std::string &t) {
   std::vector<std::string> out;
@@ -344,11 +354,7 @@ samples read_samples(const std::string &path) {
     std::string t = all.substr(pos, nl - pos);
     pos = nl + 1;
     const int ln = ++s.last_line;
-    if (!t.empty() && t.back() == '\r') t.pop_back();
-    const size_t hash = t.find('#');
-    if (hash != std::string::npos) t.erase(hash);
-    t = trim(t);
-    if (t.empty()) continue;
+    if (!content_of_line(t)) continue;
     const std::vector<std::string> fl = split_fields(t);
     double x = 0, p = 0;
     const bool xnum = is_number(fl[0], x);
@@ -572,11 +578,7 @@ void read_points(const std::string &path, std::vector<double> &px, std::vector<d
     std::string t = all.substr(pos, nl - pos);
     pos = nl + 1;
     ++ln;
-    if (!t.empty() && t.back() == '\r') t.pop_back();
-    const size_t hash = t.find('#');
-    if (hash != std::string::npos) t.erase(hash);
-    t = trim(t);
-    if (t.empty()) continue;
+    if (!content_of_line(t)) continue;
     const std::vector<std::string> fl = split_fields(t);
     const std::string where = "--fields-at " + path + ": line " + std::to_string(ln) + ": ";
     double x = 0, y = 0;

@@ -491,6 +491,17 @@ core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
   st.panels = h.panels;
   return st;
 }
+// The points (x, y) of a stress evaluation, each in its body; false: none (n = 0).
+bool check_body_points(int body, size_t n, const double *x, const double *y, const double *out) {
+  if (n == 0) return false;
+  require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+  for (size_t i = 0; i < n; ++i) {
+    require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
+    require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
+            "point outside the body (body 1: y >= 0, body 2: y <= 0)");
+  }
+  return true;
+}
 void check_fields_input(const hs_solution *sol, int body, double bulk2) {
   require(sol != nullptr, core::status::null_pointer, "solution is NULL");
   require(body == 1 || body == 2, core::status::bad_option, "body must be 1 or 2");
@@ -515,13 +526,7 @@ int hs_eval_stress(const hs_solution *sol, int body, double bulk2, size_t n, con
                    double *out) {
   return guard([&] {
     check_fields_input(sol, body, bulk2);
-    if (n == 0) return;
-    require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
-    for (size_t i = 0; i < n; ++i) {
-      require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
-      require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
-              "point outside the body (body 1: y >= 0, body 2: y <= 0)");
-    }
+    if (!check_body_points(body, n, x, y, out)) return;
     const auto st = state_of(*sol, bulk2);
     std::vector<double> tmp(3 * n);
     for (size_t i = 0; i < n; ++i) {
@@ -540,13 +545,7 @@ int hs_eval_stress_scalar(const hs_solution *sol, int body, double bulk2, int qu
             "quantity must be one of HS_STRESS_XX .. HS_STRESS_MAX_SHEAR");
     require(std::isfinite(nu), core::status::not_finite, "Poisson's ratio nu is NaN or infinite");
     require(nu >= -1 && nu <= 0.5, core::status::bad_option, "Poisson's ratio nu must lie in [-1, 0.5]");
-    if (n == 0) return;
-    require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
-    for (size_t i = 0; i < n; ++i) {
-      require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
-      require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
-              "point outside the body (body 1: y >= 0, body 2: y <= 0)");
-    }
+    if (!check_body_points(body, n, x, y, out)) return;
     const auto st = state_of(*sol, bulk2);
     std::vector<double> tmp(n);
     for (size_t i = 0; i < n; ++i) {
