@@ -750,7 +750,8 @@ int cmd_solve(int argc, char **argv) {
   if (args.count("--model")) {
     if (hs_model_from_name(args.at("--model").c_str(), &opts.model) != HS_OK) {
       std::string names;
-      for (int m = 0; hs_model_name(m); ++m) names += std::string(m ? ", " : "") + hs_model_name(m);
+      for (int m = 0; hs_model_name(m); ++m)
+        names += std::string(m == 0 ? "" : hs_model_name(m + 1) ? ", " : " or ") + hs_model_name(m);
       die("bad value for --model: " + names);
     }
   } else if (args.count("--rtol")) {
