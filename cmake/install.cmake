@@ -34,23 +34,13 @@ foreach(l IN LISTS CMAKE_CXX_IMPLICIT_LINK_LIBRARIES)
 endforeach()
 set(HS_STATIC_DEPS mpfr gmp ${HS_CXX_RUNTIME_LIBS})
 
-# The static library links halfslip_reference (an in-tree INTERFACE target)
-# and MPFR/GMP by absolute path PRIVATEly; for a static library these end up
-# in its link interface, which would make it impossible to export. Keep them
-# for the build tree only, and give installed consumers the plain library
-# names (found on the linker's search path, as pkg-config's Libs.private).
-get_target_property(hs_static_links halfslip_static INTERFACE_LINK_LIBRARIES)
-if(NOT hs_static_links)
-  set(hs_static_links "")
-endif()
-set(hs_static_iface "")
-foreach(l IN LISTS hs_static_links)
-  list(APPEND hs_static_iface "$<BUILD_INTERFACE:${l}>")
+# The static library's link interface: MPFR and GMP as the imported target
+# PkgConfig::HS_MP (re-created by halfslipConfig.cmake), halfslip_reference for
+# the build tree only (top CMakeLists), and for installed consumers the C++
+# runtime, which a C program's link line lacks.
+foreach(l IN LISTS HS_CXX_RUNTIME_LIBS)
+  target_link_libraries(halfslip_static INTERFACE "$<INSTALL_INTERFACE:$<LINK_ONLY:${l}>>")
 endforeach()
-foreach(l IN LISTS HS_STATIC_DEPS)
-  list(APPEND hs_static_iface "$<INSTALL_INTERFACE:$<LINK_ONLY:${l}>>")
-endforeach()
-set_property(TARGET halfslip_static PROPERTY INTERFACE_LINK_LIBRARIES "${hs_static_iface}")
 
 # ---- CMake package --------------------------------------------------------------
 install(EXPORT halfslipTargets NAMESPACE halfslip:: DESTINATION ${HALFSLIP_INSTALL_CMAKEDIR})

@@ -331,6 +331,24 @@ int main(void) {
     hs_ref_solution_free(NULL);
   }
 
+  /* the model-name table (since 0.4): names and values both ways */
+  {
+    int m, k = -7;
+    for (m = HS_MODEL_DEFAULT; m <= HS_MODEL_REFERENCE; ++m) {
+      const char *name = hs_model_name(m);
+      CHECK(name != NULL);
+      if (name) CHECK(hs_model_from_name(name, &k) == HS_OK && k == m);
+    }
+    CHECK(strcmp(hs_model_name(HS_MODEL_CLOSED_FORM), "closed-form") == 0);
+    CHECK(strcmp(hs_model_name(HS_MODEL_AUTO), "auto") == 0);
+    CHECK(hs_model_name(-1) == NULL && hs_model_name(HS_MODEL_REFERENCE + 1) == NULL);
+    k = -7;
+    CHECK(hs_model_from_name("Closed-Form", &k) == HS_ERR_BAD_OPTION && k == -7);
+    CHECK(hs_model_from_name("", &k) == HS_ERR_BAD_OPTION && k == -7);
+    CHECK(hs_model_from_name(NULL, &k) == HS_ERR_NULL_POINTER && k == -7);
+    CHECK(hs_model_from_name("auto", NULL) == HS_ERR_NULL_POINTER);
+  }
+
   printf("capi: %d passed, %d failed\n", passed, failed);
   return failed == 0 ? 0 : 1;
 }

@@ -291,6 +291,16 @@ std::string trim(const std::string &t) {
   return b == std::string::npos ? "" : t.substr(b, e - b + 1);
 }
 
+// The content of a line of an input file, in place: no CR, no '#' comment, no
+// surrounding blanks; false if nothing is left.
+bool content_of_line(std::string &t) {
+  if (!t.empty() && t.back() == '\r') t.pop_back();
+  const size_t hash = t.find('#');
+  if (hash != std::string::npos) t.erase(hash);
+  t = trim(t);
+  return !t.empty();
+}
+
 // Fields of one line: comma-separated if it has a comma, else whitespace-separated.
 std::vector<std::string> split_fields(const std::string &t) {
   std::vector<std::string> out;
@@ -320,15 +330,21 @@ bool is_number(const std::string &t, double &v) {
   return *end == '\0';
 }
 
-samples read_samples(const std::string &path) {
-  samples s;
-  s.path = path;
+// The whole file named by the option flag (or die naming both).
+std::string read_whole_file(const std::string &path, const char *flag) {
   FILE *f = std::fopen(path.c_str(), "r");
-  if (!f) die("bad value for --pressure-file: cannot open '" + path + "'");
+  if (!f) die(std::string("bad value for ") + flag + ": cannot open '" + path + "'");
   std::string all;
   char buf[4096];
   for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) all.append(buf, n);
   std::fclose(f);
+  return all;
+}
+
+samples read_samples(const std::string &path) {
+  samples s;
+  s.path = path;
+  std::string all = read_whole_file(path, "--pressure-file");
   if (all.compare(0, 3, "\xEF\xBB\xBF") == 0) all.erase(0, 3);  // UTF-8 byte order mark
   bool header_allowed = true;
   size_t pos = 0;
@@ -338,11 +354,7 @@ samples read_samples(const std::string &path) {
     std::string t = all.substr(pos, nl - pos);
     pos = nl + 1;
     const int ln = ++s.last_line;
-    if (!t.empty() && t.back() == '\r') t.pop_back();
-    const size_t hash = t.find('#');
-    if (hash != std::string::npos) t.erase(hash);
-    t = trim(t);
-    if (t.empty()) continue;
+    if (!content_of_line(t)) continue;
     const std::vector<std::string> fl = split_fields(t);
     double x = 0, p = 0;
     const bool xnum = is_number(fl[0], x);
@@ -396,6 +408,27 @@ bool is_dimensional(const Args &args) {
   return args.count("--P") || args.count("--R") || args.count("--A") || args.count("--Q") || args.count("--sigma");
 }
 
+// A status of a C call that takes the scene options: the C library checked
+// the ranges; its message (hs_strerror) is printed after the options whose
+// values it is about.
+void check_input(int st, const Args &args, const std::string &what = "scene") {
+  if (st == HS_OK) return;
+  const bool dim = is_dimensional(args);
+  std::string flags;
+  switch (st) {
+    case HS_ERR_GROSS_SLIDING: flags = dim ? "--Q" : "--Q-over-fP"; break;
+    case HS_ERR_BAD_FRICTION: flags = "--f"; break;
+    case HS_ERR_BAD_SIZE: flags = dim ? "--P, --R, --A or --E-star" : "--a, --p0 or --E-star"; break;
+    case HS_ERR_BAD_GEOMETRY:  // a geometry parameter given (else: the model or geometry)
+      for (const char *k : {"--flat-over-a", "--flat-width", "--exponent"})
+        if (args.count(k)) flags = k;
+      break;
+    default: break;
+  }
+  if (!flags.empty()) die("bad value for " + flags + ": " + hs_strerror(st));
+  check(st, what);
+}
+
 void check_dimensional(const Args &args) {
   for (const char *k : {"--P", "--R", "--E-star", "--f", "--Q", "--sigma"})
     if (!args.count(k)) die(std::string("dimensional input needs ") + k + " (give --P --R --E-star --f --Q --sigma)");
@@ -415,7 +448,8 @@ int ref_geometry_kind(const Args &args, const char *what) {
   return g == "flat-rounded" ? HS_GEOMETRY_FLAT_ROUNDED : g == "power-law" ? HS_GEOMETRY_POWER_LAW : HS_GEOMETRY_HERTZ;
 }
 
-// A geometry parameter value (exact decimal text) in its range, else die.
+// A geometry parameter value (exact decimal text) in its range, else die
+// (table: the whole grid is checked before the first, possibly long, solve).
 void check_geometry_param(int kind, const char *flag, const std::string &v) {
   const double x = parse_number(flag, v.c_str());
   if (kind == HS_GEOMETRY_FLAT_ROUNDED && !(x >= 0 && x < 1)) die(std::string("bad value for ") + flag + ": need 0 <= b_f/a < 1");
@@ -447,11 +481,9 @@ int solve_reference(const Args &args, int digits) {
   sc.geometry = kind;
   if (kind == HS_GEOMETRY_FLAT_ROUNDED) {
     in["flat_over_a"] = decimal_arg(args, "--flat-over-a", "0.5");
-    check_geometry_param(kind, "--flat-over-a", in["flat_over_a"]);
     sc.flat_over_a = in["flat_over_a"].c_str();
   } else if (kind == HS_GEOMETRY_POWER_LAW) {
     in["exponent"] = decimal_arg(args, "--exponent", "2");
-    check_geometry_param(kind, "--exponent", in["exponent"]);
     sc.exponent = in["exponent"].c_str();
   }
   in["f"] = decimal_arg(args, "--f", "1");
@@ -461,7 +493,6 @@ int solve_reference(const Args &args, int digits) {
   if (is_dimensional(args)) {
     check_dimensional(args);
     for (const char *k : {"--P", "--R", "--Q", "--sigma"}) in[k + 2] = decimal_arg(args, k, "");
-    if (!(std::strtod(in["P"].c_str(), nullptr) > 0)) die("bad value for --P: must be > 0");
     sc.P = in["P"].c_str();
     sc.R = in["R"].c_str();
     sc.Q = in["Q"].c_str();
@@ -471,15 +502,13 @@ int solve_reference(const Args &args, int digits) {
     in["sigma_over_fp0"] = decimal_arg(args, "--sigma-over-fp0", "0.5");
     in["a"] = decimal_arg(args, "--a", "1");
     in["p0"] = decimal_arg(args, "--p0", "1");
-    if (!(std::fabs(std::strtod(in["Q_over_fP"].c_str(), nullptr)) < 1))
-      die("bad value for --Q-over-fP: |Q/fP| must be < 1 (gross sliding)");
     sc.a = in["a"].c_str();
     sc.p0 = in["p0"].c_str();
     sc.Q_over_fP = in["Q_over_fP"].c_str();
     sc.sigma_over_fp0 = in["sigma_over_fp0"].c_str();
   }
   hs_ref_solution *sol = nullptr;
-  check(hs_ref_solve(&sc, digits, &sol), "reference solve");
+  check_input(hs_ref_solve(&sc, digits, &sol), args, "reference solve");  // the C library checks the ranges
   hs_ref_summary sm;
   sm.struct_size = sizeof sm;
   check(hs_ref_solution_summary(sol, &sm), "summary");
@@ -529,26 +558,17 @@ int solve_reference(const Args &args, int digits) {
   return 0;
 }
 
+// the C library's model names (hs_model_name)
 const char *model_name(int m) {
-  switch (m) {
-    case HS_MODEL_ASYMPTOTIC: return "asymptotic";
-    case HS_MODEL_CLOSED_FORM: return "closed-form";
-    case HS_MODEL_QUADRATURE: return "quadrature";
-    case HS_MODEL_REFERENCE: return "reference";
-    default: return "unknown";
-  }
+  const char *name = hs_model_name(m);
+  return name ? name : "unknown";
 }
 
 
 // --fields-at FILE: points 'x y' per line (whitespace or one comma, '#' comments,
 // blank lines, a header line first); errors name the file and the line
 void read_points(const std::string &path, std::vector<double> &px, std::vector<double> &py) {
-  FILE *f = std::fopen(path.c_str(), "r");
-  if (!f) die("bad value for --fields-at: cannot open '" + path + "'");
-  std::string all;
-  char buf[4096];
-  for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) all.append(buf, n);
-  std::fclose(f);
+  const std::string all = read_whole_file(path, "--fields-at");
   size_t pos = 0;
   int ln = 0;
   bool header_allowed = true;
@@ -558,11 +578,7 @@ void read_points(const std::string &path, std::vector<double> &px, std::vector<d
     std::string t = all.substr(pos, nl - pos);
     pos = nl + 1;
     ++ln;
-    if (!t.empty() && t.back() == '\r') t.pop_back();
-    const size_t hash = t.find('#');
-    if (hash != std::string::npos) t.erase(hash);
-    t = trim(t);
-    if (t.empty()) continue;
+    if (!content_of_line(t)) continue;
     const std::vector<std::string> fl = split_fields(t);
     const std::string where = "--fields-at " + path + ": line " + std::to_string(ln) + ": ";
     double x = 0, y = 0;
@@ -637,11 +653,9 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
   if (geometry == "flat-rounded") {
     geo.kind = HS_GEOMETRY_FLAT_ROUNDED;
     if (args.count("--flat-over-a")) geo.flat_over_a = get("--flat-over-a", 0.5);
-    if (!(geo.flat_over_a >= 0 && geo.flat_over_a < 1)) die("bad value for --flat-over-a: need 0 <= b_f/a < 1");
   } else if (geometry == "power-law") {
     geo.kind = HS_GEOMETRY_POWER_LAW;
     geo.exponent = get("--exponent", 2.0);
-    if (!(geo.exponent > 1 && geo.exponent < 1000)) die("bad value for --exponent: need 1 < n < 1000");
   } else if (geometry == "samples") {
     geo.kind = HS_GEOMETRY_SAMPLES;
     if (!args.count("--pressure-file")) die("--geometry samples needs --pressure-file F (two columns x p)");
@@ -672,26 +686,20 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
     if (!pl && args.count("--A")) die("--A needs --geometry power-law");
     const double P = get("--P", 0), E = get("--E-star", 0), f = get("--f", 0);
     const double Q = get("--Q", 0), sg = get("--sigma", 0);
-    if (!(P > 0)) die("bad value for --P: must be > 0");
-    if (!(E > 0)) die("bad value for --E-star: must be > 0");
-    if (!(f > 0)) die("bad value for --f: must be > 0");
-    if (!(std::fabs(Q) < f * P)) die("bad value for --Q: |Q| >= fP means gross sliding");
+    // the C library checks the ranges; its message names the rule broken
     if (pl) {
       const double A = get("--A", 0);
-      if (!(A > 0)) die("bad value for --A: must be > 0");
-      check(hs_scene_from_power_law_loads(P, A, geo.exponent, E, f, Q, sg, &scene), "scene");
+      check_input(hs_scene_from_power_law_loads(P, A, geo.exponent, E, f, Q, sg, &scene), args);
     } else {
       const double R = get("--R", 0);
-      if (!(R > 0)) die("bad value for --R: must be > 0");
       if (geometry == "flat-rounded") {
         if (!args.count("--flat-width")) die("dimensional flat-rounded input needs --flat-width (b_f)");
         if (args.count("--flat-over-a"))
           die("--flat-over-a cannot be combined with dimensional input (give --flat-width)");
         const double bf = get("--flat-width", 0);
-        if (!(bf >= 0)) die("bad value for --flat-width: must be >= 0");
-        check(hs_scene_from_flat_rounded_loads(P, R, bf, E, f, Q, sg, &scene, &geo.flat_over_a), "scene");
+        check_input(hs_scene_from_flat_rounded_loads(P, R, bf, E, f, Q, sg, &scene, &geo.flat_over_a), args);
       } else {
-        check(hs_scene_from_hertz_loads(P, R, E, f, Q, sg, &scene), "scene");
+        check_input(hs_scene_from_hertz_loads(P, R, E, f, Q, sg, &scene), args);
       }
     }
   } else {
@@ -701,12 +709,12 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
     scene.p0 = get("--p0", 1.0);
     scene.f = get("--f", 1.0);
     scene.E_star = get("--E-star", 1.0);
-    if (!(std::fabs(scene.Q_over_fP) < 1)) die("bad value for --Q-over-fP: |Q/fP| must be < 1 (gross sliding)");
-    if (!(scene.a > 0)) die("bad value for --a: must be > 0");
-    if (!(scene.p0 > 0)) die("bad value for --p0: must be > 0");
-    if (!(scene.f > 0)) die("bad value for --f: must be > 0");
-    if (!(scene.E_star > 0)) die("bad value for --E-star: must be > 0");
-    if (geometry == "samples") check_samples(samp, scene.a);
+    // the scene's ranges are checked by the C library when it solves (check_input);
+    // the samples' rules are checked here, against a, to name the file's line
+    if (geometry == "samples") {
+      if (!(scene.a > 0)) die("bad value for --a: must be > 0");
+      check_samples(samp, scene.a);
+    }
   }
 }
 
@@ -740,19 +748,18 @@ int cmd_solve(int argc, char **argv) {
   hs_options opts;
   hs_options_default(&opts);
   if (args.count("--model")) {
-    const std::string m = args.at("--model");
-    const char *names[] = {"default", "auto", "asymptotic", "closed-form", "quadrature", "reference"};
-    int k = -1;
-    for (int i = 0; i < 6; ++i)
-      if (m == names[i]) k = i;
-    if (k < 0) die("bad value for --model: default, auto, asymptotic, closed-form, quadrature or reference");
-    opts.model = k;
+    if (hs_model_from_name(args.at("--model").c_str(), &opts.model) != HS_OK) {
+      std::string names;
+      for (int m = 0; hs_model_name(m); ++m)
+        names += std::string(m == 0 ? "" : hs_model_name(m + 1) ? ", " : " or ") + hs_model_name(m);
+      die("bad value for --model: " + names);
+    }
   } else if (args.count("--rtol")) {
     opts.model = HS_MODEL_AUTO;
   }
   opts.rtol = rtol;
   hs_solution *sol = nullptr;
-  check(hs_solve_geometry(&scene, &geo, &opts, &sol), "solve");
+  check_input(hs_solve_geometry(&scene, &geo, &opts, &sol), args, "solve");
   hs_summary sm;
   sm.struct_size = sizeof sm;
   check(hs_solution_summary(sol, &sm), "summary");
@@ -929,7 +936,7 @@ int cmd_history(int argc, char **argv) {
     else die("bad value for --ramp: '" + r + "' (sigma-first, together or q-first)");
   }
   hs_history *h = nullptr;
-  check(hs_history_new(&scene, &geo, &ho, &h), "history");
+  check_input(hs_history_new(&scene, &geo, &ho, &h), args, "history");
   bool cyc = false;
   if (args.count("--path")) {
     const auto path = parse_path(args.at("--path"));
@@ -1200,10 +1207,8 @@ int cmd_table(int argc, char **argv) {
   std::atomic<size_t> done(0);
   std::mutex progress_mutex;
   std::atomic<size_t> next(lo);
-  std::atomic<bool> failed(false);
-  std::string first_error;
   auto worker = [&]() {
-    for (size_t r = next++; r < hi && !failed; r = next++) {
+    for (size_t r = next++; r < hi; r = next++) {
       const std::string &g = gs[r / (qs.size() * ss.size())], &q = qs[r / ss.size() % qs.size()],
                         &s = ss[r % ss.size()];
       hs_ref_scene sc;
@@ -1266,7 +1271,6 @@ int cmd_table(int argc, char **argv) {
     std::printf("\n");
   }
   for (const auto &l : lines) std::printf("%s\n", l.c_str());
-  (void)first_error;
   return 0;
 }
 
@@ -1277,10 +1281,10 @@ int cmd_asymptotic_error(int argc, char **argv) {
   const std::string l = args.at("--loading");
   if (l != "shear" && l != "bulk") die("bad value for --loading: '" + l + "' (shear or bulk)");
   const double b = parse_number("--b-over-a", args.at("--b-over-a").c_str());
-  if (!(b > 0 && b < 1)) die("bad value for --b-over-a: need 0 < b/a < 1");
   hs_asymptotic_comparison c;
   c.struct_size = sizeof c;
-  check(hs_asymptotic_error(l == "shear" ? HS_LOADING_SHEAR : HS_LOADING_BULK, b, &c), "asymptotic-error");
+  // the C library checks 0 < b/a < 1
+  check(hs_asymptotic_error(l == "shear" ? HS_LOADING_SHEAR : HS_LOADING_BULK, b, &c), "bad value for --b-over-a " + g10(b));
   if (args.count("--json")) {
     std::printf("{\"loading\": \"%s\", \"b_over_a\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, "
                 "\"d_full\": %s, \"d_asymptotic\": %s, \"energy_full\": %s, \"energy_asymptotic\": %s, "

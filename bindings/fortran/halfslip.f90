@@ -246,6 +246,7 @@ module halfslip
   end type c_string
 
   public :: hs_version, hs_version_string, hs_strerror
+  public :: hs_model_name, hs_model_from_name
   public :: hs_scene_default, hs_scene_from_hertz_loads, hs_options_default
   public :: hs_scene_from_power_law_loads, hs_scene_from_flat_rounded_loads
   public :: hs_solve, hs_solution_free, hs_solution_summary, hs_solution_energy
@@ -290,6 +291,19 @@ module halfslip
       integer(c_int), value :: status
       type(c_ptr) :: s
     end function c_hs_strerror
+
+    function c_hs_model_name(model) bind(c, name="hs_model_name") result(s)
+      import :: c_int, c_ptr
+      integer(c_int), value :: model
+      type(c_ptr) :: s
+    end function c_hs_model_name
+
+    function c_hs_model_from_name(name, model) bind(c, name="hs_model_from_name") result(st)
+      import :: c_int, c_char
+      character(kind=c_char), intent(in) :: name(*)
+      integer(c_int), intent(inout) :: model
+      integer(c_int) :: st
+    end function c_hs_model_from_name
 
     function c_hs_scene_default(scene) bind(c, name="hs_scene_default") result(st)
       import :: c_int, hs_scene
@@ -736,6 +750,29 @@ contains
     character(len=:), allocatable :: msg
     msg = from_c(c_hs_strerror(int(status, c_int)))
   end function hs_strerror
+
+  ! Name of a model, HS_MODEL_* ('closed-form', ...; '' for another value):
+  ! the C library's table, as the command line spells the names.
+  function hs_model_name(model) result(name)
+    integer, intent(in) :: model
+    character(len=:), allocatable :: name
+    name = from_c(c_hs_model_name(int(model, c_int)))
+  end function hs_model_name
+
+  ! HS_MODEL_* of a name (exact match, trailing blanks ignored); model is
+  ! untouched on error (HS_ERR_BAD_OPTION: unknown name).
+  subroutine hs_model_from_name(name, model, ierr)
+    character(len=*), intent(in) :: name
+    integer, intent(inout) :: model
+    integer, intent(out), optional :: ierr
+    character(kind=c_char), allocatable :: cs(:)
+    integer(c_int) :: m, st
+    call to_c(trim(name), cs)
+    m = int(model, c_int)
+    st = c_hs_model_from_name(cs, m)
+    if (st == HS_OK) model = int(m)
+    call check(st, 'hs_model_from_name', ierr)
+  end subroutine hs_model_from_name
 
   ! ---- scenes and options ----------------------------------------------------------------
 

@@ -14,6 +14,7 @@
 #include "halfslip/core/asymptotic.hpp"
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
+#include "halfslip/core/select.hpp"
 #include "halfslip/reference/backend.hpp"
 #include "solution.hpp"
 #include "halfslip/core/fields.hpp"
@@ -49,6 +50,18 @@ using hs::capi::guard;
 
 using hs::capi::require;
 
+// hs_*_default: a zeroed struct with its struct_size, then set(s); written
+// to *out only when out is not NULL.
+template <class S, class F> int fill_default(S *out, F &&set) {
+  if (!out) return HS_ERR_NULL_POINTER;
+  S s;
+  std::memset(&s, 0, sizeof s);
+  s.struct_size = sizeof(S);
+  set(s);
+  *out = s;
+  return HS_OK;
+}
+
 // Validated solver options (NULL: the defaults). A 0.2 caller passes the
 // size without the model field and gets HS_MODEL_DEFAULT.
 hs::capi::request read_options(const hs_options *opts) {
@@ -61,15 +74,10 @@ hs::capi::request read_options(const hs_options *opts) {
           "max_iterations out of range");
   r.model = n == sizeof(hs_options) ? opts->model : HS_MODEL_DEFAULT;
   require(r.model >= HS_MODEL_DEFAULT && r.model <= HS_MODEL_REFERENCE, core::status::bad_option, "unknown model");
-  const double t = opts->rtol;
-  if (r.model == HS_MODEL_AUTO)
-    require(std::isfinite(t) && (t == 0 || (t >= std::ldexp(1.0, -53) && t <= 0.5)), core::status::bad_option,
-            "rtol out of range");
-  else
-    require(std::isfinite(t) && (t == 0 || (t >= 1e-15 && t <= 1e-2)), core::status::bad_option,
-            "rtol out of range");
+  require(core::tolerance_in_range(opts->rtol, r.model == HS_MODEL_AUTO), core::status::bad_option,
+          "rtol out of range");
   r.max_iterations = opts->max_iterations;
-  r.rtol = t;
+  r.rtol = opts->rtol;
   return r;
 }
 
@@ -190,6 +198,47 @@ std::shared_ptr<const core::pressure_model<double>> pressure_of_geometry(const h
 
 }}  // namespace hs::capi
 
+namespace {
+// The contact state of each kind of solution (issue 15; C++ overloads, so
+// outside extern "C")
+core::contact_state<double> state_of_solution(const core::hertz_solution<double> &s, double bulk2) {
+  return core::hertz_state(s, bulk2);
+}
+core::contact_state<double> state_of_solution(const core::general_solution<double> &s, double bulk2) {
+  return core::general_state_of(s, bulk2);
+}
+template <class S> core::contact_state<double> state_of_solution(const S &s, double bulk2) {
+  return core::make_state<double>(s, bulk2);
+}
+
+// The one solve behind hs_solve and hs_solve_geometry: the Hertz geometry
+// (geometry NULL; the scene carries it) or another geometry.
+hs_solution *solve_scene(const hs_scene &scene, const hs_geometry *geometry, const hs_options *opts) {
+  core::general_scene<double> sc;
+  hs::capi::request req;
+  hs::capi::reference_input ref;
+  auto h = std::make_unique<hs_solution>();
+  if (!geometry) {
+    const auto c = to_core(&scene);
+    req = read_options(opts);
+    sc.a = c.a; sc.p0 = c.p0; sc.f = c.f; sc.Estar = c.Estar; sc.q = c.q; sc.s = c.s;
+    if (req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
+  } else {
+    req = read_options(opts);
+    h->model = hs::capi::pressure_of_geometry(scene, *geometry, sc);
+    if ((req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) &&
+        (geometry->kind == HS_GEOMETRY_FLAT_ROUNDED || geometry->kind == HS_GEOMETRY_POWER_LAW)) {
+      ref = reference_of(sc);
+      ref.text.geometry = geometry->kind;
+      ref.text.flat_over_a = hs::capi::exact_decimal(geometry->flat_over_a);
+      ref.text.exponent = hs::capi::exact_decimal(geometry->exponent);
+    }
+  }
+  hs::capi::solve_models(*h, !geometry, sc, req, ref);
+  return h.release();
+}
+}  // namespace
+
 extern "C" {
 
 int hs_version(int *major, int *minor, int *patch) {
@@ -230,27 +279,49 @@ const char *hs_strerror(int status) {
   }
 }
 
+namespace {
+// The model names, indexed by HS_MODEL_* (the only copy: the CLI and the
+// bindings ask hs_model_name / hs_model_from_name).
+const char *const model_names[] = {"default", "auto", "asymptotic", "closed-form", "quadrature", "reference"};
+static_assert(HS_MODEL_DEFAULT == 0 && HS_MODEL_AUTO == 1 && HS_MODEL_ASYMPTOTIC == 2 && HS_MODEL_CLOSED_FORM == 3 &&
+                  HS_MODEL_QUADRATURE == 4 && HS_MODEL_REFERENCE == 5 &&
+                  sizeof model_names / sizeof *model_names == HS_MODEL_REFERENCE + 1,
+              "model name table");
+}  // namespace
+
+const char *hs_model_name(int model) {
+  return model >= HS_MODEL_DEFAULT && model <= HS_MODEL_REFERENCE ? model_names[model] : nullptr;
+}
+
+int hs_model_from_name(const char *name, int *model) {
+  return guard([&] {
+    require(name != nullptr && model != nullptr, core::status::null_pointer, "NULL argument");
+    for (int m = HS_MODEL_DEFAULT; m <= HS_MODEL_REFERENCE; ++m)
+      if (std::strcmp(name, model_names[m]) == 0) {
+        *model = m;
+        return;
+      }
+    throw core::error(core::status::bad_option, "unknown model name");
+  });
+}
+
 int hs_scene_default(hs_scene *scene) {
-  if (!scene) return HS_ERR_NULL_POINTER;
-  hs_scene s;
-  std::memset(&s, 0, sizeof s);
-  s.struct_size = sizeof(hs_scene);
-  s.geometry = HS_GEOMETRY_HERTZ;
-  s.a = 1.0;
-  s.p0 = 1.0;
-  s.f = 1.0;
-  s.E_star = 1.0;
-  s.Q_over_fP = 0.5;
-  s.sigma_over_fp0 = 0.5;
-  *scene = s;
-  return HS_OK;
+  return fill_default(scene, [](hs_scene &s) {
+    s.geometry = HS_GEOMETRY_HERTZ;
+    s.a = 1.0;
+    s.p0 = 1.0;
+    s.f = 1.0;
+    s.E_star = 1.0;
+    s.Q_over_fP = 0.5;
+    s.sigma_over_fp0 = 0.5;
+  });
 }
 
 namespace {
 // The scene of a contact of half-width a under the load P (shared by the
 // dimensional constructors); *scene is written only on success.
 void scene_from_loads(double a, double P, double E_star, double f, double Q, double sigma, hs_scene *scene) {
-  const double p0 = 2 * P / (core::pi<double>() * a);
+  const double p0 = core::pressure_unit(P, a);
   require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
           "contact size not representable");
   const double q = Q / (f * P);
@@ -280,19 +351,7 @@ int hs_scene_from_power_law_loads(double P, double A, double n, double E_star, d
   return guard([&] {
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
     check_loads({P, A, n, E_star, f, Q, sigma}, P, E_star, f);
-    require(A > 0, core::status::bad_size, "profile coefficient A must be > 0");
-    require(n > 1 && n < 1000, core::status::bad_geometry, "power law: need 1 < n < 1000");
-    // a^n = 2 P Gamma(n/2+1) / (E* n A sqrt(pi) Gamma((n+1)/2)): directly (a few
-    // rounding errors, divided by n in a), or in logarithms if that under/overflows
-    const double ratio = std::exp(std::lgamma(n / 2 + 1) - std::lgamma((n + 1) / 2));
-    const double an = 2 * P / (E_star * n * A * std::sqrt(core::pi<double>())) * ratio;
-    double a;
-    if (std::isnormal(an)) {
-      a = std::pow(an, 1 / n);
-    } else {
-      a = std::exp((std::log(2 * P) + std::lgamma(n / 2 + 1) - std::lgamma((n + 1) / 2) - std::log(E_star) -
-                    std::log(n) - std::log(A) - 0.5 * std::log(core::pi<double>())) / n);
-    }
+    const double a = core::power_law_pressure<double>::half_width_from_load(P, E_star, A, n);
     scene_from_loads(a, P, E_star, f, Q, sigma, scene);
   });
 }
@@ -319,33 +378,23 @@ int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, doubl
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
     check_loads({P, R, E_star, f, Q, sigma}, P, E_star, f);
     require(R > 0, core::status::bad_size, "R must be > 0");
-    scene_from_loads(std::sqrt(4 * P * R / (core::pi<double>() * E_star)), P, E_star, f, Q, sigma, scene);
+    scene_from_loads(core::hertz_pressure<double>::half_width_from_load(P, R, E_star), P, E_star, f, Q, sigma,
+                     scene);
   });
 }
 
 int hs_options_default(hs_options *opts) {
-  if (!opts) return HS_ERR_NULL_POINTER;
-  hs_options o;
-  std::memset(&o, 0, sizeof o);
-  o.struct_size = sizeof(hs_options);
-  o.max_iterations = 100;
-  o.rtol = 0.0;
-  *opts = o;
-  return HS_OK;
+  return fill_default(opts, [](hs_options &o) {
+    o.max_iterations = 100;
+    o.rtol = 0.0;
+  });
 }
 
 int hs_solve(const hs_scene *scene, const hs_options *opts, hs_solution **out) {
   return guard([&] {
     require(out != nullptr, core::status::null_pointer, "output handle pointer is NULL");
-    const auto c = to_core(scene);
-    const auto r = read_options(opts);
-    core::general_scene<double> sc;
-    sc.a = c.a; sc.p0 = c.p0; sc.f = c.f; sc.Estar = c.Estar; sc.q = c.q; sc.s = c.s;
-    auto h = std::make_unique<hs_solution>();
-    hs::capi::reference_input ref;
-    if (r.model == HS_MODEL_AUTO || r.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
-    hs::capi::solve_models(*h, true, sc, r, ref);
-    *out = h.release();
+    require(scene != nullptr, core::status::null_pointer, "scene is NULL");
+    *out = solve_scene(*scene, nullptr, opts);
   });
 }
 
@@ -375,7 +424,8 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
       r.p0 = s.scene.p0;
       return 0;
     });
-    r.quadrature_order = sol->general ? sol->general->order : 0;
+    const auto *general = std::get_if<core::general_solution<double>>(&sol->solution);
+    r.quadrature_order = general ? general->order : 0;
     r.model = sol->model_used;
     r.error_estimate = sol->error_estimate;
     r.struct_size = n;
@@ -395,15 +445,11 @@ int hs_solution_energy(const hs_solution *sol, double energy[2]) {
 }
 
 int hs_geometry_default(hs_geometry *geometry) {
-  if (!geometry) return HS_ERR_NULL_POINTER;
-  hs_geometry g;
-  std::memset(&g, 0, sizeof g);
-  g.struct_size = sizeof(hs_geometry);
-  g.kind = HS_GEOMETRY_HERTZ;
-  g.flat_over_a = 0.5;
-  g.exponent = 2.0;
-  *geometry = g;
-  return HS_OK;
+  return fill_default(geometry, [](hs_geometry &g) {
+    g.kind = HS_GEOMETRY_HERTZ;
+    g.flat_over_a = 0.5;
+    g.exponent = 2.0;
+  });
 }
 
 int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const hs_options *opts,
@@ -412,26 +458,12 @@ int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const 
     require(out != nullptr && scene != nullptr && geometry != nullptr, core::status::null_pointer, "NULL argument");
     require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry struct_size");
     if (geometry->kind == HS_GEOMETRY_HERTZ) {
-      hs_scene h = *scene;
+      hs_scene h = *scene;  // the geometry argument decides, not scene->geometry
       h.geometry = HS_GEOMETRY_HERTZ;
-      const int st = hs_solve(&h, opts, out);
-      if (st != HS_OK) throw core::error(core::status(st), "hertz");
-      return;
+      *out = solve_scene(h, nullptr, opts);
+    } else {
+      *out = solve_scene(*scene, geometry, opts);
     }
-    core::general_scene<double> sc;
-    const auto req = read_options(opts);
-    auto h = std::make_unique<hs_solution>();
-    hs::capi::reference_input ref;
-    h->model = hs::capi::pressure_of_geometry(*scene, *geometry, sc);
-    if ((req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) &&
-        (geometry->kind == HS_GEOMETRY_FLAT_ROUNDED || geometry->kind == HS_GEOMETRY_POWER_LAW)) {
-      ref = reference_of(sc);
-      ref.text.geometry = geometry->kind;
-      ref.text.flat_over_a = hs::capi::exact_decimal(geometry->flat_over_a);
-      ref.text.exponent = hs::capi::exact_decimal(geometry->exponent);
-    }
-    hs::capi::solve_models(*h, false, sc, req, ref);
-    *out = h.release();
   });
 }
 
@@ -450,20 +482,25 @@ int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *
 
 // issue 15: the contact state of a solution (bulk2: stress the pad carries)
 namespace {
-hs::core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
-  auto make = [&] {
-    if (h.hertz) return hs::core::hertz_state(*h.hertz, bulk2);
-    if (h.general) return hs::core::general_state_of(*h.general, bulk2);
-    if (h.edge) return hs::core::make_state<double>(*h.edge, bulk2);
-    return hs::core::make_state<double>(*h.ref, bulk2);
-  };
-  auto st = make();
+core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
+  auto st = h.visit([&](const auto &s) { return state_of_solution(s, bulk2); });
   // the panels do not depend on bulk2: one set per solution, made on first use
   std::call_once(h.panels_once, [&] {
     if (hs::core::needs_panels(st)) h.panels = hs::core::make_panels(st);
   });
   st.panels = h.panels;
   return st;
+}
+// The points (x, y) of a stress evaluation, each in its body; false: none (n = 0).
+bool check_body_points(int body, size_t n, const double *x, const double *y, const double *out) {
+  if (n == 0) return false;
+  require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+  for (size_t i = 0; i < n; ++i) {
+    require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
+    require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
+            "point outside the body (body 1: y >= 0, body 2: y <= 0)");
+  }
+  return true;
 }
 void check_fields_input(const hs_solution *sol, int body, double bulk2) {
   require(sol != nullptr, core::status::null_pointer, "solution is NULL");
@@ -489,13 +526,7 @@ int hs_eval_stress(const hs_solution *sol, int body, double bulk2, size_t n, con
                    double *out) {
   return guard([&] {
     check_fields_input(sol, body, bulk2);
-    if (n == 0) return;
-    require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
-    for (size_t i = 0; i < n; ++i) {
-      require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
-      require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
-              "point outside the body (body 1: y >= 0, body 2: y <= 0)");
-    }
+    if (!check_body_points(body, n, x, y, out)) return;
     const auto st = state_of(*sol, bulk2);
     std::vector<double> tmp(3 * n);
     for (size_t i = 0; i < n; ++i) {
@@ -514,13 +545,7 @@ int hs_eval_stress_scalar(const hs_solution *sol, int body, double bulk2, int qu
             "quantity must be one of HS_STRESS_XX .. HS_STRESS_MAX_SHEAR");
     require(std::isfinite(nu), core::status::not_finite, "Poisson's ratio nu is NaN or infinite");
     require(nu >= -1 && nu <= 0.5, core::status::bad_option, "Poisson's ratio nu must lie in [-1, 0.5]");
-    if (n == 0) return;
-    require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
-    for (size_t i = 0; i < n; ++i) {
-      require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
-      require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
-              "point outside the body (body 1: y >= 0, body 2: y <= 0)");
-    }
+    if (!check_body_points(body, n, x, y, out)) return;
     const auto st = state_of(*sol, bulk2);
     std::vector<double> tmp(n);
     for (size_t i = 0; i < n; ++i) {
@@ -588,13 +613,8 @@ int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_comparison *
 }
 
 int hs_ref_scene_default(hs_ref_scene *scene) {
-  if (!scene) return HS_ERR_NULL_POINTER;
-  hs_ref_scene s;
-  std::memset(&s, 0, sizeof s);
-  s.struct_size = sizeof(hs_ref_scene);
-  s.geometry = HS_GEOMETRY_HERTZ;
-  *scene = s;  // NULL strings mean the defaults of hs::reference::text_scene
-  return HS_OK;
+  // NULL strings mean the defaults of hs::reference::text_scene
+  return fill_default(scene, [](hs_ref_scene &s) { s.geometry = HS_GEOMETRY_HERTZ; });
 }
 
 int hs_ref_max_digits(void) { return hs::reference::max_digits(); }

@@ -73,18 +73,10 @@ const core::pressure_model<double> &pressure_of(hs_solution &h) {
   return *h.model;
 }
 
-void clear(hs_solution &h) {
-  h.hertz.reset();
-  h.general.reset();
-  h.edge.reset();
-  h.ref.reset();
-}
-
 // est: the model's error estimate if the caller has computed it already (< 0: not yet)
 void run_asymptotic(hs_solution &h, const core::general_scene<double> &sc, double est = -1) {
   const auto &pm = pressure_of(h);
-  clear(h);
-  h.edge.reset(new core::edge_solution<double>(pm, sc));
+  h.solution.emplace<core::edge_solution<double>>(pm, sc);
   h.model_used = HS_MODEL_ASYMPTOTIC;
   h.error_estimate = est >= 0 ? est : core::asymptotic_estimate(pm, sc).value();
 }
@@ -93,10 +85,9 @@ void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, cons
   core::solve_options<double> o;
   o.max_iterations = r.max_iterations;
   o.rtol = r.rtol;
-  clear(h);
-  h.hertz.reset(new core::hertz_solution<double>(core::solve_hertz<double>(hertz_of(sc), o)));
+  const auto &s = h.solution.emplace<core::hertz_solution<double>>(core::solve_hertz<double>(hertz_of(sc), o));
   h.model_used = HS_MODEL_CLOSED_FORM;
-  h.error_estimate = core::closed_form_estimate(h.hertz->d1() / sc.a, h.hertz->d2() / sc.a, sc.q, sc.s).value();
+  h.error_estimate = core::closed_form_estimate(s.d1() / sc.a, s.d2() / sc.a, sc.q, sc.s).value();
   // rtol > 0 relaxes the quadrature of the opposite-sign slip and energies
   if (16 * r.rtol > h.error_estimate) h.error_estimate = 16 * r.rtol;
 }
@@ -106,19 +97,16 @@ void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int m
   o.max_iterations = max_iterations;
   o.rtol = rt;
   const auto &pm = pressure_of(h);
-  clear(h);
-  h.general.reset(new core::general_solution<double>(core::solve_general<double>(pm, sc, o)));
+  const auto &s = h.solution.emplace<core::general_solution<double>>(core::solve_general<double>(pm, sc, o));
   h.model_used = HS_MODEL_QUADRATURE;
-  h.error_estimate =
-      core::quadrature_estimate(rt, h.general->d1() / sc.a, h.general->d2() / sc.a, h.general->width, sc.q).value();
+  h.error_estimate = core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q).value();
 }
 
 void run_reference(hs_solution &h, const core::general_scene<double> &sc, const request &r,
                    const reference_input &ref) {
   require(ref.available, core::status::bad_geometry,
           "the reference backend supports the Hertz, flat-rounded and power-law geometries only");
-  clear(h);
-  h.ref.reset(new reference_double(ref.text, sc, r.max_iterations < 1000 ? 1000 : r.max_iterations));
+  h.solution.emplace<reference_double>(ref.text, sc, r.max_iterations < 1000 ? 1000 : r.max_iterations);
   h.model_used = HS_MODEL_REFERENCE;
   h.error_estimate = std::ldexp(1.0, -53);
 }
@@ -152,15 +140,7 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
       return;
     }
   } else {
-    // the quadrature tolerance from the estimate's form 16 (eps + rt)(1 + a/d_min),
-    // with d_min guessed by the Hertz closed form of the same loads
-    double rt = 0;
-    if (tol > 0) {
-      const auto g = core::solve_hertz<double>(hertz_of(sc));
-      const double dm = core::smallest_zone(g.d1() / sc.a, g.d2() / sc.a);
-      rt = dm > 0 ? tol / (64 * (1 + 1 / dm)) : 0;
-      if (rt < 1e-15) rt = 0;
-    }
+    const double rt = core::quadrature_tolerance(tol, hertz_of(sc));
     run_quadrature(h, sc, r.max_iterations, rt);
     if (h.error_estimate > tol && rt > 0) run_quadrature(h, sc, r.max_iterations, 0);
   }

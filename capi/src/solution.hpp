@@ -5,6 +5,9 @@
 #include <mutex>
 #include <new>
 #include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
 
 #include "halfslip/core/asymptotic.hpp"
 #include "halfslip/core/field_panels.hpp"
@@ -79,24 +82,30 @@ std::string exact_decimal(double v);
 }}  // namespace hs::capi
 
 struct hs_solution {
-  // exactly one of hertz / general / edge / ref is set; general and edge
-  // refer to the pressure model, which the handle owns
-  std::unique_ptr<hs::core::hertz_solution<double>> hertz;
+  // the pressure model, which the general and edge solutions refer to
+  // (declared before them: destroyed after them); null for closed forms
   std::shared_ptr<const hs::core::pressure_model<double>> model;
-  std::unique_ptr<hs::core::general_solution<double>> general;
-  std::unique_ptr<hs::core::edge_solution<double>> edge;
-  std::unique_ptr<hs::capi::reference_double> ref;
+  // the solution of the model that ran (monostate only while it runs)
+  std::variant<std::monostate, hs::core::hertz_solution<double>, hs::core::general_solution<double>,
+               hs::core::edge_solution<double>, hs::capi::reference_double>
+      solution;
   int model_used = 0;           // HS_MODEL_*
   double error_estimate = 0;
   // issue 15: p and q cached on graded panels for the stresses, built on the
   // first field evaluation that needs them (thread-safe; null: closed forms)
   mutable std::once_flag panels_once;
   mutable std::shared_ptr<const hs::core::traction_panels<double>> panels;
+  // f(solution) for the solution that ran, whatever its type
   template <class F> auto visit(F &&f) const {
-    if (hertz) return f(*hertz);
-    if (general) return f(*general);
-    if (edge) return f(*edge);
-    return f(*ref);
+    using R = decltype(f(std::declval<const hs::core::hertz_solution<double> &>()));
+    return std::visit(
+        [&](const auto &s) -> R {
+          if constexpr (std::is_same<std::decay_t<decltype(s)>, std::monostate>::value)
+            throw hs::core::error(hs::core::status::internal, "solution handle holds no solution");
+          else
+            return f(s);
+        },
+        solution);
   }
 };
 

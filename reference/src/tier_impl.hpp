@@ -1,5 +1,5 @@
 // Implementation of one precision tier: the core templates on a fixed
-// precision MPFR type. Included by the tier_D.cpp translation units only.
+// precision MPFR type. Included by reference/src/tier.cpp only (compiled once per tier).
 #pragma once
 #include <boost/multiprecision/mpfr.hpp>
 #include <cctype>
@@ -85,9 +85,8 @@ template <unsigned D> class tier_solution_impl final : public tier_solution {
       const T sg = parse_decimal<T>(in.sigma, "sigma is not a decimal number");
       if (!(P > 0 && R > 0 && sc.Estar > 0)) throw core::error(core::status::bad_size, "P, R, E* must be > 0");
       if (!(sc.f > 0)) throw core::error(core::status::bad_friction, "f must be > 0");
-      const T pi = core::pi<T>();
-      sc.a = sqrt(4 * P * R / (pi * sc.Estar));
-      sc.p0 = 2 * P / (pi * sc.a);
+      sc.a = core::hertz_pressure<T>::half_width_from_load(P, R, sc.Estar);
+      sc.p0 = core::pressure_unit(P, sc.a);
       sc.q = Q / (sc.f * P);
       sc.s = sg / (sc.f * sc.p0);
     } else {

@@ -196,6 +196,16 @@ contains
     call expect(hs_strerror(HS_OK) == 'success', 'hs_strerror(HS_OK)')
     call expect(index(hs_strerror(12345), 'unknown') > 0, 'hs_strerror(unknown code)')
     call expect(hs_strerror(HS_ERR_BAD_FRICTION) /= hs_strerror(HS_ERR_BAD_SIZE), 'distinct messages')
+    ! the model-name table of the C library (since 0.4)
+    call expect(hs_model_name(HS_MODEL_CLOSED_FORM) == 'closed-form', 'hs_model_name(HS_MODEL_CLOSED_FORM)')
+    call expect(hs_model_name(-1) == '', 'hs_model_name(unknown)')
+    ma = -1
+    call hs_model_from_name('quadrature', ma, ierr)
+    call expect_code(ierr, HS_OK, 'hs_model_from_name status')
+    call expect(ma == HS_MODEL_QUADRATURE, 'hs_model_from_name(quadrature)')
+    call hs_model_from_name('no-such-model', ma, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'hs_model_from_name(unknown)')
+    call expect(ma == HS_MODEL_QUADRATURE, 'hs_model_from_name: model untouched on error')
   end subroutine test_version_and_messages
 
   ! Same-sign closed form: b1/a = sqrt(1 - Q/fP) + sigma/(4 f p0), b2 with the minus sign.

@@ -89,13 +89,27 @@ class _NamedInt(enum.IntEnum):
 
 
 class Model(_NamedInt):
-    """hs_options.model / hs_summary.model (HS_MODEL_*), docs/models.md."""
+    """hs_options.model / hs_summary.model (HS_MODEL_*), docs/models.md. The
+    names are the C library's (hs_model_name, hs_model_from_name); "-" and "_"
+    and the case are free."""
     DEFAULT = 0
     AUTO = 1
     ASYMPTOTIC = 2
     CLOSED_FORM = 3
     QUADRATURE = 4
     REFERENCE = 5
+
+    def __str__(self):
+        return _lib.hs_model_name(int(self)).decode("ascii")
+
+    @classmethod
+    def _parse(cls, value, what):
+        if isinstance(value, str):
+            m = ctypes.c_int()
+            name = value.strip().lower().replace("_", "-").encode("utf-8", "replace")
+            if _lib.hs_model_from_name(name, ctypes.byref(m)) == OK:
+                return cls(m.value)
+        return super()._parse(value, what)
 
 
 MODEL_DEFAULT = Model.DEFAULT
@@ -104,7 +118,6 @@ MODEL_ASYMPTOTIC = Model.ASYMPTOTIC
 MODEL_CLOSED_FORM = Model.CLOSED_FORM
 MODEL_QUADRATURE = Model.QUADRATURE
 MODEL_REFERENCE = Model.REFERENCE
-_MODEL_NAMES = {str(m): m for m in Model}
 
 GEOMETRY_HERTZ = 1
 GEOMETRY_FLAT_ROUNDED = 2

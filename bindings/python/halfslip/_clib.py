@@ -196,6 +196,8 @@ _SIGNATURES = {
     "hs_version": (c_int, [POINTER(c_int), POINTER(c_int), POINTER(c_int)]),
     "hs_version_string": (c_char_p, []),
     "hs_strerror": (c_char_p, [c_int]),
+    "hs_model_name": (c_char_p, [c_int]),  # since 0.4
+    "hs_model_from_name": (c_int, [c_char_p, POINTER(c_int)]),
     "hs_scene_default": (c_int, [POINTER(Scene)]),
     "hs_scene_from_hertz_loads": (c_int, [c_double] * 6 + [POINTER(Scene)]),
     "hs_scene_from_power_law_loads": (c_int, [c_double] * 7 + [POINTER(Scene)]),

@@ -466,6 +466,20 @@ class TestNamesAndMessages(unittest.TestCase):
         self.assertEqual([str(m) for m in halfslip.Model],
                          ["default", "auto", "asymptotic", "closed-form", "quadrature", "reference"])
 
+    def test_model_names_are_the_c_librarys(self):
+        # one table, in the C library: hs_model_name / hs_model_from_name
+        lib = halfslip._lib
+        for m in halfslip.Model:
+            self.assertEqual(str(m), lib.hs_model_name(int(m)).decode("ascii"))
+        self.assertIsNone(lib.hs_model_name(-1))
+        k = ctypes.c_int(-7)
+        self.assertEqual(lib.hs_model_from_name(b"closed-form", ctypes.byref(k)), halfslip.OK)
+        self.assertEqual(k.value, halfslip.Model.CLOSED_FORM)
+        self.assertEqual(lib.hs_model_from_name(b"nonsense", ctypes.byref(k)), halfslip.ERR_BAD_OPTION)
+        self.assertEqual(k.value, halfslip.Model.CLOSED_FORM)
+        with self.assertRaises(ValueError):
+            halfslip.Model._parse("nonsense", "model")
+
     def test_value_errors_name_the_argument(self):
         cases = [
             (lambda: halfslip.solve(model="fastest"), "model='fastest'"),

@@ -142,6 +142,14 @@ HS_EXPORT int hs_scene_from_flat_rounded_loads(double P, double R, double flat_w
 #define HS_MODEL_REFERENCE   5  /* MPFR reference backend, certified and rounded to double
                                    (Hertz, flat-rounded, power law) */
 
+/* Since 0.4: the one table of model names, as the command line and the
+   bindings spell them: "default", "auto", "asymptotic", "closed-form",
+   "quadrature", "reference". hs_model_name gives NULL for a value that is no
+   HS_MODEL_*; hs_model_from_name (exact match) gives HS_OK,
+   HS_ERR_NULL_POINTER or HS_ERR_BAD_OPTION (unknown name, *model untouched). */
+HS_EXPORT const char *hs_model_name(int model);
+HS_EXPORT int hs_model_from_name(const char *name, int *model);
+
 typedef struct hs_options {
   size_t struct_size;   /* = sizeof(hs_options), set by hs_options_default */
   int max_iterations;   /* Newton iteration cap, >= 1 (default 100) */

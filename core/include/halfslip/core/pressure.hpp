@@ -143,7 +143,16 @@ template <class T> class hertz_pressure final : public pressure_model<T> {
     return true;
   }
   T tail(int, const T &c) const override { return pressure_tail(c); }
+  // Contact half-width from the load per unit length P of a cylinder of
+  // radius R (plane strain, E* the contact modulus): a = sqrt(4 P R / (pi E*)).
+  static T half_width_from_load(const T &P, const T &R, const T &Estar) {
+    using std::sqrt;
+    return sqrt(4 * P * R / (pi<T>() * Estar));
+  }
 };
+
+// The pressure unit of every model, p0 = 2P/(pi a) (the Hertz peak pressure).
+template <class T> T pressure_unit(const T &P, const T &a) { return 2 * P / (pi<T>() * a); }
 
 // ---------------------------------------------------------------------------
 // b. Flat punch of half-width b_f with corners rounded to radius R
@@ -341,6 +350,22 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     if (!even_ && !odd_ && !near_int_)
       conn_ = boost::math::constants::root_pi<T>() / 2 * boost::math::tgamma(T(-m_)) /
               boost::math::tgamma(T(T(0.5) - m_));
+  }
+  // Contact half-width from the load per unit length P of the profile
+  // g = coef |x|^n (E*: contact modulus; coef > 0 (bad_size) and 1 < n < 1000
+  // (bad_geometry) are checked here, P and E* by the caller):
+  //   a^n = 2 P Gamma(n/2+1) / (E* n coef sqrt(pi) Gamma((n+1)/2)),
+  // directly (a few rounding errors, divided by n in a), or in logarithms
+  // where a^n under- or overflows.
+  static T half_width_from_load(const T &P, const T &Estar, const T &coef, const T &n) {
+    using std::exp; using std::lgamma; using std::log; using std::pow; using std::sqrt; using std::isnormal;
+    if (!(coef > 0)) throw error(status::bad_size, "power law: profile coefficient must be > 0");
+    if (!(n > 1) || !(n < 1000)) throw error(status::bad_geometry, "power law: need 1 < n < 1000");
+    const T ratio = exp(lgamma(n / 2 + 1) - lgamma((n + 1) / 2));
+    const T an = 2 * P / (Estar * n * coef * sqrt(pi<T>())) * ratio;
+    if (isnormal(an)) return pow(an, 1 / n);
+    return exp((log(2 * P) + lgamma(n / 2 + 1) - lgamma((n + 1) / 2) - log(Estar) - log(n) - log(coef) -
+                T(0.5) * log(pi<T>())) / n);
   }
   T phi(const T &x, const T &dm, const T &dp) const override {
     using std::min;

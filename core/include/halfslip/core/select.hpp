@@ -48,6 +48,7 @@
 
 #include "asymptotic.hpp"
 #include "general.hpp"
+#include "hertz.hpp"
 
 namespace hs { namespace core {
 
@@ -127,6 +128,31 @@ error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, con
   e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / wc);
   e.energy = 3 * e.slip_zone;
   return e;
+}
+
+// The tolerances a caller may ask for (hs_options.rtol): 0 (full precision);
+// for model selection (HS_MODEL_AUTO) the error the chosen model must meet,
+// in [2^-53, 0.5]; for one model, the quadrature's tolerance in [1e-15, 1e-2].
+template <class T> bool tolerance_in_range(const T &rtol, bool model_selection) {
+  using std::isfinite; using std::ldexp;
+  if (!isfinite(rtol)) return false;
+  if (rtol == 0) return true;
+  if (model_selection) return rtol >= ldexp(T(1), -53) && rtol <= T(0.5);
+  return rtol >= T(1e-15) && rtol <= T(1e-2);
+}
+
+// The quadrature tolerance rt for which the quadrature's estimate meets tol
+// (model selection, HS_MODEL_AUTO): the estimate's form 16 (eps + rt)(1 + a/d_min)
+// inverted with a margin of 4, with d_min guessed by the Hertz closed form
+// under the same loads. 0 (full precision) for tol = 0, for a stuck contact
+// and when rt would be below 1e-15.
+template <class T> T quadrature_tolerance(const T &tol, const hertz_scene<T> &sc) {
+  if (!(tol > 0)) return T(0);
+  const auto g = solve_hertz<T>(sc);
+  const T dm = smallest_zone(T(g.d1() / sc.a), T(g.d2() / sc.a));
+  T rt = dm > 0 ? T(tol / (64 * (1 + 1 / dm))) : T(0);
+  if (rt < T(1e-15)) rt = 0;
+  return rt;
 }
 
 }}  // namespace hs::core

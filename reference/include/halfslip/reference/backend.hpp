@@ -6,7 +6,8 @@
 // at different precisions would interfere. The reference therefore uses
 // fixed-precision MPFR types, number<mpfr_float_backend<D>, et_off>, for a
 // ladder of D (decimal digits). Each tier is explicitly instantiated in its
-// own translation unit (reference/src/tier_D.cpp). A request for N digits
+// own translation unit (reference/src/tier.cpp, compiled once per tier with
+// -DHS_TIER_DIGITS=D). A request for N digits
 // runs at the smallest tier with D >= N + guard, and again at the next tier;
 // the agreement of the two runs certifies the digits. The precision is in
 // the type, so it is per call by construction and there is no global state.
