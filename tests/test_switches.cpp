@@ -15,6 +15,9 @@
 //                                series for z^2 < cbrt(eps))             difference at 50 digits)
 //   cel_log                     (elliptic.hpp: log continuation below   Carlson R_F, R_J (Boost.Math) at
 //                                kc = eps^0.6 min(1, sqrt p))            50 digits
+//   add_semi_ellipse            (fields.hpp: real arithmetic on the     pi amp c (X - nu), pi amp (nu/X - 1)
+//                                real axis for |nu| > 1, complex         with X = +-sqrt(nu^2 - 1) or
+//                                otherwise)                              i sqrt(1 - nu^2), at 50 digits
 // Errors are measured in units of eps of the type under test. Every bound is
 // justified where it is set. Each switch was checked to fail when the branch on
 // one side is broken (see the commit message of this file).
@@ -30,6 +33,7 @@
 #include <boost/multiprecision/mpfr.hpp>
 
 #include "halfslip/core/elliptic.hpp"
+#include "halfslip/core/fields.hpp"
 #include "halfslip/core/numerics.hpp"
 #include "halfslip/core/pressure.hpp"
 #include "testing.hpp"
@@ -377,6 +381,46 @@ TEST_CASE_TEMPLATE("switch: cel_log at kc = eps^0.6 min(1, sqrt p) (cel above, l
         CHECK(e <= 32);
         worst = std::max(worst, e);
       }
+    }
+  }
+  MESSAGE("worst relative error in eps: " << worst);
+}
+
+// ---------------------------------------------------------------------------
+TEST_CASE_TEMPLATE("switch: add_semi_ellipse on the real axis at |nu| = 1 (real form outside, complex inside)", T,
+                   double, long double) {
+  // c = 1, e = 0: nu = zeta exactly. Outside the support X = sign(nu) sqrt(nu^2 - 1);
+  // on it (the limit from Im zeta > 0) X = i sqrt(1 - nu^2). nu = +-1 itself has F1 infinite: skipped.
+  double worst = 0;
+  for (T side : {T(1), T(-1)}) {
+    for (const T &m : spots(T(1))) {
+      const T nu = side * m;
+      if (std::abs(nu) == 1) continue;
+      CAPTURE(double(nu));
+      const T amp = T(0.3);
+      core::cauchy_pair<T> out;
+      core::add_semi_ellipse<T>(amp, T(1), T(0), std::complex<T>(nu, T(0)), out);
+      const mp N(nu), A(amp), pi = boost::math::constants::pi<mp>();
+      mp f0r, f0i, f1r, f1i;
+      if (abs(N) > 1) {
+        const mp X = (N > 0 ? 1 : -1) * sqrt(N * N - 1);
+        f0r = pi * A * (X - N); f0i = 0;
+        f1r = pi * A * (N / X - 1); f1i = 0;
+      } else {
+        const mp Y = sqrt(1 - N * N);  // X = i Y
+        f0r = -pi * A * N; f0i = pi * A * Y;
+        f1r = -pi * A; f1i = -pi * A * N / Y;  // nu / (i Y) = -i nu / Y
+      }
+      // |F - ref| / |ref| (complex moduli): sqrt of a product with nu - 1 exact
+      // (Sterbenz), a division and a product with pi: a few ulps. Bound 8 eps.
+      const auto err = [&](const std::complex<T> &v, const mp &re, const mp &im) {
+        const mp dr = mp(v.real()) - re, di = mp(v.imag()) - im;
+        return double(sqrt(dr * dr + di * di) / sqrt(re * re + im * im)) / double(eps<T>());
+      };
+      const double e0 = err(out.F0, f0r, f0i), e1 = err(out.F1, f1r, f1i);
+      CHECK(e0 <= 8);
+      CHECK(e1 <= 8);
+      worst = std::max(worst, std::max(e0, e1));
     }
   }
   MESSAGE("worst relative error in eps: " << worst);
