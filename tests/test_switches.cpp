@@ -12,7 +12,8 @@
 //                                1/8 of an integer; polynomial, n even)
 //   flat_rounded_pressure phi   (pressure.hpp: edge form for 2c <= c0,  Ciavarella-Hills-Monno bracket
 //   and dphi                     kink-safe form otherwise; k_ratio       at 50 digits (derivative: central
-//                                series for z^2 < cbrt(eps))             difference at 50 digits)
+//                                series for z^2 < cbrt(eps); phi = 1     difference at 50 digits)
+//                                at beta = 0; D = 0 at the kink)
 //   cel_log                     (elliptic.hpp: log continuation below   Carlson R_F, R_J (Boost.Math) at
 //                                kc = eps^0.6 min(1, sqrt p))            50 digits
 //   add_semi_ellipse            (fields.hpp: real arithmetic on the     pi amp c (X - nu), pi amp (nu/X - 1)
@@ -352,6 +353,26 @@ TEST_CASE_TEMPLATE("switch: flat-punch phi at the kink x = beta (D = 0 handled a
       const double e = rel_err(fp.phi(x, 1 + x, 1 - x), flat_phi_ref(X, mp(beta)));
       // kink-safe form, no cancellation at the kink (the (|x| - s0) ln|D| term
       // vanishes): bound 16 eps.
+      CHECK(e <= 16);
+      worst = std::max(worst, e);
+    }
+  }
+  MESSAGE("worst relative error in eps: " << worst);
+}
+
+TEST_CASE_TEMPLATE("switch: flat-punch phi at beta = 0 (Hertz, phi = 1) and just above", T, double, long double) {
+  // beta == 0 returns phi = 1 (Hertz); any beta > 0 takes the logarithmic forms, whose
+  // terms of size beta ln(..) must then vanish smoothly: beta = 1e-300 .. 1e-3.
+  double worst = 0;
+  for (T beta : {T(0), std::numeric_limits<T>::min(), T(1e-300), T(1e-30), T(1e-10), T(1e-3)}) {
+    const core::flat_rounded_pressure<T> fp(beta);
+    for (T x : {T(0), T(0.25), T(0.5), T(0.875), T(1) - T(1) / 1024}) {
+      CAPTURE(double(beta)); CAPTURE(double(x));
+      const T ph = fp.phi(x, 1 + x, 1 - x);
+      // the reference: phi = 1 at beta = 0; at x = 0 < beta the formula's |x| = 0 is fine
+      const mp ref = beta == 0 ? mp(1) : flat_phi_ref(mp(x), mp(beta));
+      // both forms as above, no cancellation for small beta: bound 16 eps
+      const double e = rel_err(ph, ref);
       CHECK(e <= 16);
       worst = std::max(worst, e);
     }
