@@ -40,8 +40,8 @@
 #include "testing.hpp"
 
 namespace core = hs::core;
-using mp = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>,
-                                         boost::multiprecision::et_off>;
+using mp =
+    boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>, boost::multiprecision::et_off>;
 
 namespace {
 
@@ -151,10 +151,11 @@ TEST_CASE_TEMPLATE("switch: sqrt_quadratic_integral at S = w (asinh form below, 
     lo = down(hi);
     REQUIRE(S(lo) <= w);
     REQUIRE(!(S(hi) <= w));
-    std::vector<T> ds_v{lo * (1 - T(1) / 128), down(lo, 4), lo, hi, up(hi, 4), hi * (1 + T(1) / 128),
-                        w * T(1e-6), w * T(50)};
+    std::vector<T> ds_v{lo * (1 - T(1) / 128), down(lo, 4), lo,       hi, up(hi, 4),
+                        hi * (1 + T(1) / 128), w * T(1e-6), w * T(50)};
     for (const T &d : ds_v) {
-      CAPTURE(double(w)); CAPTURE(double(d));
+      CAPTURE(double(w));
+      CAPTURE(double(d));
       const mp W(w), D(d), U = W + D, SS = sqrt(D * (2 * W + D));
       const mp ref = (U * SS - W * W * log((U + SS) / W)) / 2;
       // asinh form: w^2/4 * sinh_minus_y(2 theta) (<= 8 eps, above) with theta = asinh(S/w)
@@ -189,7 +190,8 @@ TEST_CASE_TEMPLATE("switch: power-law F at z = 1 - x^2 = 1/2 (series below, othe
   double worst = 0;
   for (T n : {T(1.5), T(2.5), T(3), T(3.1), T(4.9), T(5)}) {
     for (const T &z : spots(T(0.5))) {
-      CAPTURE(double(n)); CAPTURE(double(z));
+      CAPTURE(double(n));
+      CAPTURE(double(z));
       const T x = std::sqrt(1 - z);
       // Series: terms of ratio <= z <= 1/2, ~55 (double) to ~65 (long double)
       // terms each adding <= 1 eps, the sum dominated by its first terms: few eps.
@@ -218,7 +220,8 @@ TEST_CASE_TEMPLATE("switch: power-law F at the exponent switches (odd, near-inte
       if (!(n > 1)) continue;
       for (T x : {T(0.125), T(0.25), T(0.5)}) {  // z = 1 - x^2 exact
         const T z = 1 - x * x;
-        CAPTURE(double(n)); CAPTURE(double(x));
+        CAPTURE(double(n));
+        CAPTURE(double(x));
         // Bound as above: 32 eps.
         const double e = power_law_err(n, x, z);
         CHECK(e <= 32);
@@ -241,7 +244,11 @@ template <class T, class P> void straddle(T x, const P &pred, T &lo, T &hi) {
   T y = x;
   // walk up until the predicate changes (at most a few ulps from the rounded switch point)
   for (int i = 0; i < 100000 && pred(y) == p0; ++i) y = up(y);
-  if (pred(y) != p0) { lo = down(y); hi = y; return; }
+  if (pred(y) != p0) {
+    lo = down(y);
+    hi = y;
+    return;
+  }
   y = x;
   for (int i = 0; i < 100000 && pred(y) == p0; ++i) y = down(y);
   lo = y;
@@ -269,7 +276,8 @@ TEST_CASE_TEMPLATE("switch: flat-punch phi at 2c = c0 (kink-safe form inside, ed
     REQUIRE(!edge_form(lo));
     REQUIRE(edge_form(hi));
     for (const T &x : spots_pair(lo, hi)) {
-      CAPTURE(double(beta)); CAPTURE(double(x));
+      CAPTURE(double(beta));
+      CAPTURE(double(x));
       const mp X(x), B(beta);
       T d;
       const T ph = fp.phi_dphi(x, 1 + x, 1 - x, d);
@@ -296,8 +304,8 @@ TEST_CASE_TEMPLATE("switch: flat-punch phi at 2c = c0 (kink-safe form inside, ed
   MESSAGE("worst error in eps: phi " << worst_p << " (relative), dphi " << worst_d << " (of phi/c^2)");
 }
 
-TEST_CASE_TEMPLATE("switch: flat-punch dphi at z^2 = cbrt(eps) (k_ratio series below, closed form above)", T,
-                   double, long double) {
+TEST_CASE_TEMPLATE("switch: flat-punch dphi at z^2 = cbrt(eps) (k_ratio series below, closed form above)", T, double,
+                   long double) {
   double worst_below = 0, worst_above = 0;
   const T kthr = std::cbrt(eps<T>());
   for (T beta : {T(0.05), T(0.3), T(0.9)}) {
@@ -315,7 +323,8 @@ TEST_CASE_TEMPLATE("switch: flat-punch dphi at z^2 = cbrt(eps) (k_ratio series b
     REQUIRE(closed(lo));
     REQUIRE(!closed(hi));
     for (const T &x : spots_pair(lo, hi)) {
-      CAPTURE(double(beta)); CAPTURE(double(x));
+      CAPTURE(double(beta));
+      CAPTURE(double(x));
       const mp X(x), B(beta);
       T d;
       const T ph = fp.phi_dphi(x, 1 + x, 1 - x, d);
@@ -336,9 +345,9 @@ TEST_CASE_TEMPLATE("switch: flat-punch dphi at z^2 = cbrt(eps) (k_ratio series b
       }
     }
   }
-  MESSAGE("worst relative error of dphi in eps: series side " << worst_below << ", closed-form side "
-                                                              << worst_above << " (eps^(-1/3) = "
-                                                              << std::cbrt(1 / double(eps<T>())) << ")");
+  MESSAGE("worst relative error of dphi in eps: series side " << worst_below << ", closed-form side " << worst_above
+                                                              << " (eps^(-1/3) = " << std::cbrt(1 / double(eps<T>()))
+                                                              << ")");
 }
 
 TEST_CASE_TEMPLATE("switch: flat-punch phi at the kink x = beta (D = 0 handled apart)", T, double, long double) {
@@ -346,7 +355,8 @@ TEST_CASE_TEMPLATE("switch: flat-punch phi at the kink x = beta (D = 0 handled a
   for (T beta : {T(0.3), T(0.6), T(0.9)}) {
     const core::flat_rounded_pressure<T> fp(beta);
     for (const T &x : {down(beta, 4), down(beta), beta, up(beta), up(beta, 4)}) {
-      CAPTURE(double(beta)); CAPTURE(double(x));
+      CAPTURE(double(beta));
+      CAPTURE(double(x));
       // at x = beta exactly the reference's two logarithms diverge: evaluated
       // 1e-40 away (phi is continuous, modulus ~ |dx log dx| ~ 1e-38)
       const mp X = x == beta ? mp(x) + mp("1e-40") : mp(x);
@@ -367,7 +377,8 @@ TEST_CASE_TEMPLATE("switch: flat-punch phi at beta = 0 (Hertz, phi = 1) and just
   for (T beta : {T(0), std::numeric_limits<T>::min(), T(1e-300), T(1e-30), T(1e-10), T(1e-3)}) {
     const core::flat_rounded_pressure<T> fp(beta);
     for (T x : {T(0), T(0.25), T(0.5), T(0.875), T(1) - T(1) / 1024}) {
-      CAPTURE(double(beta)); CAPTURE(double(x));
+      CAPTURE(double(beta));
+      CAPTURE(double(x));
       const T ph = fp.phi(x, 1 + x, 1 - x);
       // the reference: phi = 1 at beta = 0; at x = 0 < beta the formula's |x| = 0 is fine
       const mp ref = beta == 0 ? mp(1) : flat_phi_ref(mp(x), mp(beta));
@@ -381,8 +392,8 @@ TEST_CASE_TEMPLATE("switch: flat-punch phi at beta = 0 (Hertz, phi = 1) and just
 }
 
 // ---------------------------------------------------------------------------
-TEST_CASE_TEMPLATE("switch: cel_log at kc = eps^0.6 min(1, sqrt p) (cel above, log continuation below)", T,
-                   double, long double) {
+TEST_CASE_TEMPLATE("switch: cel_log at kc = eps^0.6 min(1, sqrt p) (cel above, log continuation below)", T, double,
+                   long double) {
   double worst = 0;
   for (T p : {T(1), T(0.25), T(4), T(1e-4)}) {
     const T ks = std::pow(eps<T>(), T(0.6)) * std::min(T(1), std::sqrt(p));
@@ -391,7 +402,10 @@ TEST_CASE_TEMPLATE("switch: cel_log at kc = eps^0.6 min(1, sqrt p) (cel above, l
     kv.push_back(ks * T(1e3));
     for (const T &kc : kv) {
       for (const auto &ab : std::vector<std::pair<T, T>>{{T(1), T(1)}, {T(0), T(1)}, {T(1), T(0)}}) {
-        CAPTURE(double(p)); CAPTURE(double(kc)); CAPTURE(double(ab.first)); CAPTURE(double(ab.second));
+        CAPTURE(double(p));
+        CAPTURE(double(kc));
+        CAPTURE(double(ab.first));
+        CAPTURE(double(ab.second));
         const T v = core::cel_log(kc, T(std::log(kc)), p, ab.first, ab.second);
         const mp r = cel_ref(mp(kc), mp(p), mp(ab.first), mp(ab.second));
         // cel: ~6 AGM steps each a few roundings (test_elliptic.cpp: < 64 eps
@@ -425,12 +439,16 @@ TEST_CASE_TEMPLATE("switch: add_semi_ellipse on the real axis at |nu| = 1 (real 
       mp f0r, f0i, f1r, f1i;
       if (abs(N) > 1) {
         const mp X = (N > 0 ? 1 : -1) * sqrt(N * N - 1);
-        f0r = pi * A * (X - N); f0i = 0;
-        f1r = pi * A * (N / X - 1); f1i = 0;
+        f0r = pi * A * (X - N);
+        f0i = 0;
+        f1r = pi * A * (N / X - 1);
+        f1i = 0;
       } else {
         const mp Y = sqrt(1 - N * N);  // X = i Y
-        f0r = -pi * A * N; f0i = pi * A * Y;
-        f1r = -pi * A; f1i = -pi * A * N / Y;  // nu / (i Y) = -i nu / Y
+        f0r = -pi * A * N;
+        f0i = pi * A * Y;
+        f1r = -pi * A;
+        f1i = -pi * A * N / Y;  // nu / (i Y) = -i nu / Y
       }
       // |F - ref| / |ref| (complex moduli): sqrt of a product with nu - 1 exact
       // (Sterbenz), a division and a product with pi: a few ulps. Bound 8 eps.
