@@ -5,15 +5,19 @@
 // Canonical units: a = 1, p0 = 1, f = 1, E* = 1 unless a scene says otherwise.
 // Tolerances: the solver's lengths come from a Newton iteration stopped at
 // the residual's rounding floor (residual terms O(pi (1 + s)), Jacobian O(1)),
-// so lengths are good to a few 1e-16 absolute in double; bounds of 1e-13
-// leave a factor ~100 for the conditioning of the scenes used. Independent
-// checks integrate the raw side conditions in long double by tanh-sinh
-// (reference/oracle.hpp integrate_ends; error far below 1e-15 for these
-// integrands, split at the pressure kinks) and are compared at 1e-10 as the
-// brief asks (the observed level is ~1e-15).
+// so lengths are good to a few eps absolute in double; bounds of 450 eps
+// (= 1e-13) leave a factor ~100 for the conditioning of the scenes used.
+// Independent checks integrate the raw side conditions in long double by
+// tanh-sinh (reference/oracle.hpp integrate_ends, split at the pressure kinks)
+// and are compared at the residual floor of the long double solution,
+// 64 eps pi (1 + |s|) (observed: below 16 eps).
+// Tolerances are in units of eps of the type under test (EPS: double, EPS_LD:
+// long double; issue 12 item 7). The decimal figures left are not rounding
+// bounds (quadrature termination rules, interpolation, continuity) and say why.
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <boost/multiprecision/mpfr.hpp>
@@ -28,6 +32,11 @@ namespace ref = hs::reference;
 using LD = long double;
 using mp50 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>,
                                            boost::multiprecision::et_off>;
+const double EPS = std::numeric_limits<double>::epsilon();  // 2.2e-16
+const LD EPS_LD = std::numeric_limits<LD>::epsilon();       // 1.1e-19
+// residual floor of a long double solution (64 eps pi (1 + |s|)): the bound on
+// its raw side conditions and on its lengths against 50 digits
+LD ld_floor(LD s) { return 64 * boost::math::constants::pi<LD>() * (1 + std::abs(s)) * EPS_LD; }
 
 namespace {
 
@@ -98,7 +107,7 @@ TEST_CASE("Gauss-Legendre rules in T integrate polynomials exactly") {
       LD sum = 0;
       for (int i = 0; i < n; ++i) sum += r->w[i] * std::pow(r->x[i], k);
       const LD exact = k % 2 ? 0 : LD(2) / (k + 1);
-      CHECK(std::abs(double(sum - exact)) < 64 * 1.1e-19);
+      CHECK(std::abs(double(sum - exact)) < 64 * EPS_LD);
     }
   }
 }
@@ -110,26 +119,34 @@ TEST_CASE("pressure models: normalisation int p = pi/2, sqrt edges, Hertz limits
   core::hertz_pressure<LD> hz;
   for (const core::pressure_model<LD> *m :
        std::vector<const core::pressure_model<LD> *>{&hz, &f0, &f3, &f9, &p15, &p2, &p3, &p4, &p37}) {
-    // total load: tail over the whole contact (quadrature split at kinks)
-    CHECK(std::abs(double(m->tail(+1, LD(2)) - pi / 2)) < 1e-15);
+    // total load: tail over the whole contact (quadrature split at kinks;
+    // tanh-sinh stopped at sqrt(eps), converged quadratically: a sum of positive
+    // terms with a few eps; observed <= 11 eps): 64 eps
+    CHECK(std::abs(m->tail(+1, LD(2)) - pi / 2) < 64 * EPS_LD);
     // phi = p / sqrt(1 - x^2) finite and positive at both edges
     CHECK(m->phi(1 - 1e-12L, 2 - 1e-12L, 1e-12L) > 0);
+    // continuity, not rounding: the change of phi over a distance 1e-6 is below 1e-4 when |phi'| < 100
     CHECK(std::abs(double(m->phi(1 - 1e-12L, 2 - 1e-12L, 1e-12L) - m->phi(1 - 1e-6L, 2 - 1e-6L, 1e-6L))) < 1e-4);
   }
-  // b_f = 0 and n = 2 are Hertz
+  // b_f = 0 and n = 2 are Hertz (p <= 1: a few roundings of sqrt and the
+  // series/polynomial; observed <= 5 eps): 8 eps absolute
   for (LD x : {0.0L, 0.3L, -0.77L, 0.999L}) {
-    CHECK(std::abs(double(f0.p(x) - hz.p(x))) < 1e-18);
-    CHECK(std::abs(double(p2.p(x) - hz.p(x))) < 1e-18);
+    CHECK(std::abs(f0.p(x) - hz.p(x)) < 8 * EPS_LD);
+    CHECK(std::abs(p2.p(x) - hz.p(x)) < 8 * EPS_LD);
     // n = 4: p = (2/3)(1 + 2x^2) sqrt(1 - x^2)
-    CHECK(std::abs(double(p4.p(x) - (1 + 2 * x * x) * std::sqrt(1 - x * x) * 2 / 3)) < 1e-18);
+    CHECK(std::abs(p4.p(x) - (1 + 2 * x * x) * std::sqrt(1 - x * x) * 2 / 3) < 8 * EPS_LD);
   }
   // flat-rounded: continuous at the kink, p(x) from the original formula
   for (LD x : {0.1L, 0.5L, 0.95L}) {
     const LD ph0 = std::asin(0.3L), ph = std::asin(x);
     const LD br = (pi - 2 * ph0) * std::cos(ph) + std::sin(ph) * std::log(std::abs(std::sin(ph + ph0) / std::sin(ph - ph0))) +
                   std::sin(ph0) * std::log(std::abs(std::tan((ph + ph0) / 2) * std::tan((ph - ph0) / 2)));
-    CHECK(std::abs(double(f3.p(x) - br / (pi - 2 * ph0 - std::sin(2 * ph0)))) < 1e-17);
+    // both sides: sums of O(1) logarithmic terms in long double, each a few eps
+    // (the direct formula is evaluated in the type under test too): 64 eps
+    CHECK(std::abs(f3.p(x) - br / (pi - 2 * ph0 - std::sin(2 * ph0))) < 64 * EPS_LD);
   }
+  // continuity at the kink, not rounding: p' is log-singular there, so the jump
+  // over 2e-12 is ~ 2e-12 |log 1e-12| ~ 6e-11
   CHECK(std::abs(double(f3.p(0.3L + 1e-12L) - f3.p(0.3L - 1e-12L))) < 1e-10);
 }
 
@@ -137,6 +154,7 @@ TEST_CASE("pressure models: normalisation int p = pi/2, sqrt edges, Hertz limits
 TEST_CASE("Hertz through the general path matches the closed forms in every regime") {
   core::hertz_pressure<double> hp;
   struct sc { double q, s; };
+  const double e34 = std::pow(EPS, 0.75);
   const std::vector<sc> scenes{
       {0.3, 0.2},  {0.7, 0.5},   {0.95, 0.1}, {0.3, 0.0},  {0.999, 0.0}, {0.0, 0.5},  {0.0, 3.0},
       {0.6, 1.5},  {0.9, 3.0},   {0.2, 5.0},  {0.5, 20.0}, {-0.4, 0.3},  {0.4, -2.0}, {-0.6, -1.0},
@@ -149,13 +167,16 @@ TEST_CASE("Hertz through the general path matches the closed forms in every regi
     CHECK(g.reg == h.reg);
     CHECK(g.dir1() == h.dir1());
     CHECK(g.dir2() == h.dir2());
-    CHECK(std::abs(g.b1() - h.b1()) <= 1e-13);
-    CHECK(std::abs(g.b2() - h.b2()) <= 1e-13);
+    CHECK(std::abs(g.b1() - h.b1()) <= 450 * EPS);
+    CHECK(std::abs(g.b2() - h.b2()) <= 450 * EPS);
     CHECK(g.order > 0);
     // B_x and slip at interior points of both zones. B_x is a sum of two
     // tanh-sinh integrals (termination eps^(2/3), quadratic convergence) of
     // O(1) size times R(x) <= 2: 1e-12 relative to max(1, |B|). The slip
-    // integrates B_x once more (nested tanh-sinh): 1e-11.
+    // integrates B_x once more (nested tanh-sinh): 1e-11. Both are kept as
+    // absolute figures: they are set by the termination rule of the adaptive
+    // quadrature (eps^(2/3) = 3.7e-11 per level), not by rounding; the B_x
+    // bound is nearly reached (observed 9.9e-13 in this table).
     for (double frac : {0.1, 0.5, 0.9}) {
       for (double x : {g.b1() + frac * g.d1(), -g.b2() - frac * g.d2()}) {
         if (!(x > g.b1()) && !(x < -g.b2())) continue;
@@ -166,8 +187,10 @@ TEST_CASE("Hertz through the general path matches the closed forms in every regi
       }
     }
     if (c.q != 1e-6) {
-      CHECK(std::abs(g.energy(1) - h.energy(1)) <= 1e-10 * std::max(1e-3, h.energy(1)));
-      CHECK(std::abs(g.energy(2) - h.energy(2)) <= 1e-10 * std::max(1e-3, h.energy(2)));
+      // energies: Gauss-Legendre orders doubled until two agree to eps^(3/4)
+      // (general.hpp); 32 eps^(3/4) = 5.8e-11 (was 1e-10)
+      CHECK(std::abs(g.energy(1) - h.energy(1)) <= 32 * e34 * std::max(1e-3, h.energy(1)));
+      CHECK(std::abs(g.energy(2) - h.energy(2)) <= 32 * e34 * std::max(1e-3, h.energy(2)));
     }
   }
 }
@@ -180,13 +203,14 @@ TEST_CASE("Hertz general path is dimensionally consistent (a, p0, f, E*)") {
   hs.a = 2.5; hs.p0 = 3; hs.f = 0.4; hs.Estar = 7; hs.q = 0.5; hs.s = 0.8;
   const auto g = core::solve_general(hp, sc);
   const auto h = core::solve_hertz(hs);
-  CHECK(std::abs(g.b1() - h.b1()) < 1e-13 * 2.5);
-  CHECK(std::abs(g.b2() - h.b2()) < 1e-13 * 2.5);
+  CHECK(std::abs(g.b1() - h.b1()) < 450 * EPS * 2.5);
+  CHECK(std::abs(g.b2() - h.b2()) < 450 * EPS * 2.5);
   const double x = g.b1() + 0.4 * g.d1();
   CHECK(std::abs(g.Bx(x) - h.Bx(x)) < 1e-12 * std::abs(h.Bx(x)));
   CHECK(std::abs(g.slip(x) - h.slip(x)) < 1e-11 * std::abs(h.slip(x)));
   CHECK(std::abs(g.work(x) - h.work(x)) < 1e-11 * std::abs(h.work(x)));
-  CHECK(std::abs(g.energy(2) - h.energy(2)) < 1e-10 * h.energy(2));
+  // (B_x, slip, work: adaptive-quadrature figures as above; energy: 32 eps^(3/4))
+  CHECK(std::abs(g.energy(2) - h.energy(2)) < 32 * std::pow(EPS, 0.75) * h.energy(2));
 }
 
 // ---------------------------------------------------------------------------
@@ -203,7 +227,7 @@ TEST_CASE("shear only and bulk only: b1 = b2, eqs (15) and (18) by independent q
     for (double q : {0.2, 0.6, 0.95}) {
       const auto g = gsolve<double>(*m.first, q, 0.0);
       CHECK(g.reg == core::regime::same_sign);
-      CHECK(std::abs(g.b1() - g.b2()) < 1e-14);
+      CHECK(std::abs(g.b1() - g.b2()) < 45 * EPS);
       const LD b = g.b1();
       std::vector<LD> cuts{b, 1};
       for (const auto &bp : m.second->breakpoints())
@@ -218,13 +242,13 @@ TEST_CASE("shear only and bulk only: b1 = b2, eqs (15) and (18) by independent q
               return t * m.second->p(t, 1 + t, dp) / std::sqrt(u * (t + b));
             },
             cuts[i], cuts[i + 1]);
-      CHECK(std::abs(double(I - pi * q / 4)) < 1e-13);
+      CHECK(std::abs(double(I - pi * q / 4)) < 450 * EPS);
     }
     // eq (18): int_b^1 p/sqrt(t^2 - b^2) = sigma pi/(8 f) (units p0)
     for (double s : {0.3, 2.0, 8.0}) {
       const auto g = gsolve<double>(*m.first, 0.0, s);
       CHECK(g.reg == core::regime::opposite_sign);
-      CHECK(std::abs(g.b1() - g.b2()) < 1e-14);
+      CHECK(std::abs(g.b1() - g.b2()) < 45 * EPS);
       CHECK(g.dir1() == -g.dir2());
       const LD b = g.b1();
       std::vector<LD> cuts{b, 1};
@@ -241,7 +265,7 @@ TEST_CASE("shear only and bulk only: b1 = b2, eqs (15) and (18) by independent q
             },
             cuts[i], cuts[i + 1]);
       // residual scale pi s/8; b has ~1e-16 error, dI/db ~ 1/b
-      CHECK(std::abs(double(I - pi * s / 8)) < 1e-13 * (1 + s));
+      CHECK(std::abs(double(I - pi * s / 8)) < 450 * EPS * (1 + s));
     }
   }
 }
@@ -254,8 +278,8 @@ TEST_CASE("Ciavarella-Jager: stick half-width = contact half-width under P(1 - Q
       CAPTURE(q);
       const auto g = gsolve<double>(pm, q, 0.0);
       const double c = std::pow(1 - q, 1 / n);  // P ~ a^n
-      CHECK(std::abs(g.b1() - c) < 1e-13);
-      CHECK(std::abs(g.b2() - c) < 1e-13);
+      CHECK(std::abs(g.b1() - c) < 450 * EPS);
+      CHECK(std::abs(g.b2() - c) < 450 * EPS);
     }
   }
   for (double bf : {0.3, 0.7, 0.95}) {
@@ -266,14 +290,14 @@ TEST_CASE("Ciavarella-Jager: stick half-width = contact half-width under P(1 - Q
       const auto g = gsolve<double>(pm, q, 0.0);
       const double c = core::flat_rounded_pressure<double>::reduced_load_half_width(bf, q);
       CHECK(c > bf);
-      CHECK(std::abs(g.b1() - c) < 1e-13);
-      CHECK(std::abs(g.b2() - c) < 1e-13);
+      CHECK(std::abs(g.b1() - c) < 450 * EPS);
+      CHECK(std::abs(g.b2() - c) < 450 * EPS);
       // c from the dimensional P(a) relation: a(P) and a(P(1-q)) for b_f = bf, A = R = 1
       const double P = 1.0 * 1.0 * core::flat_rounded_pressure<double>::load_factor(bf) / 2;  // a = 1
       const double a1 = core::flat_rounded_pressure<double>::half_width_from_load(P, 1.0, 1.0, bf);
       const double ac = core::flat_rounded_pressure<double>::half_width_from_load(P * (1 - q), 1.0, 1.0, bf);
-      CHECK(std::abs(a1 - 1) < 1e-14);
-      CHECK(std::abs(ac - c) < 1e-14);
+      CHECK(std::abs(a1 - 1) < 45 * EPS);
+      CHECK(std::abs(ac - c) < 45 * EPS);
     }
   }
 }
@@ -292,11 +316,11 @@ TEST_CASE("flat-rounded and power law: double vs long double, and the raw side c
       const auto gd = gsolve<double>(md, c.q, c.s);
       const auto gl = gsolve<LD>(ml, c.q, c.s);
       CHECK(gd.reg == gl.reg);
-      CHECK(std::abs(double(gd.b1() - gl.b1())) < 1e-13);
-      CHECK(std::abs(double(gd.b2() - gl.b2())) < 1e-13);
+      CHECK(std::abs(double(gd.b1() - gl.b1())) < 450 * EPS);
+      CHECK(std::abs(double(gd.b2() - gl.b2())) < 450 * EPS);
       const auto r = raw_side<LD>(ml, c.q, c.s, gl.b1(), gl.b2(), gl.dir1(), gl.dir2());
-      CHECK(std::abs(double(r[0])) < 1e-10);
-      CHECK(std::abs(double(r[1])) < 1e-10);
+      CHECK(std::abs(r[0]) < ld_floor(c.s));
+      CHECK(std::abs(r[1]) < ld_floor(c.s));
     }
   }
   for (double n : {1.5, 2.5, 3.0, 4.0, 6.0}) {
@@ -309,11 +333,11 @@ TEST_CASE("flat-rounded and power law: double vs long double, and the raw side c
       const auto gd = gsolve<double>(md, c.q, c.s);
       const auto gl = gsolve<LD>(ml, c.q, c.s);
       CHECK(gd.reg == gl.reg);
-      CHECK(std::abs(double(gd.b1() - gl.b1())) < 1e-13);
-      CHECK(std::abs(double(gd.b2() - gl.b2())) < 1e-13);
+      CHECK(std::abs(double(gd.b1() - gl.b1())) < 450 * EPS);
+      CHECK(std::abs(double(gd.b2() - gl.b2())) < 450 * EPS);
       const auto r = raw_side<LD>(ml, c.q, c.s, gl.b1(), gl.b2(), gl.dir1(), gl.dir2());
-      CHECK(std::abs(double(r[0])) < 1e-10);
-      CHECK(std::abs(double(r[1])) < 1e-10);
+      CHECK(std::abs(r[0]) < ld_floor(c.s));
+      CHECK(std::abs(r[1]) < ld_floor(c.s));
     }
   }
 }
@@ -328,18 +352,20 @@ TEST_CASE("MPFR 50 digits: flat-rounded and power law agree with long double") {
   const auto a = gsolve<mp50>(fm, q, s);
   const auto b = gsolve<LD>(fl, 0.4L, 2.0L);
   CHECK(a.reg == b.reg);
-  // long double lengths carry ~1e-18 (residual floor 64 eps_ld pi (1+s))
-  CHECK(std::abs(double(a.b1() - mp50(b.b1()))) < 1e-16);
-  CHECK(std::abs(double(a.b2() - mp50(b.b2()))) < 1e-16);
+  // long double lengths carry ~1e-18 (residual floor 64 eps_ld pi (1+s), Jacobian O(1))
+  CHECK(std::abs(LD(a.b1() - mp50(b.b1()))) < ld_floor(2));
+  CHECK(std::abs(LD(a.b2() - mp50(b.b2()))) < ld_floor(2));
   // and the 50-digit solution satisfies its own 2n-order residual far below double eps
+  // (absolute figure: the quadrature order is doubled until two orders agree to
+  // eps^(3/4) ~ 1e-37 of the 50-digit type; 1e-40 checks it converged well past that)
   const auto r = core::general_residual<mp50>(fm, q, s, core::general_state<mp50>{a.reg == core::regime::opposite_sign ? mp50(-a.delta1) : a.delta1, a.width}, 2 * a.order, false);
   CHECK(abs(r.F1) < mp50("1e-40"));
   CHECK(abs(r.F2) < mp50("1e-40"));
   const auto c = gsolve<mp50>(pm, q, mp50("0.3"));
   const auto d = gsolve<LD>(pl, 0.4L, 0.3L);
-  CHECK(std::abs(double(c.b1() - mp50(d.b1()))) < 1e-16);
-  CHECK(std::abs(double(c.b2() - mp50(d.b2()))) < 1e-16);
-  // Ciavarella-Jager at 50 digits: c/a = (1 - q)^(1/n)
+  CHECK(std::abs(LD(c.b1() - mp50(d.b1()))) < ld_floor(0.3L));
+  CHECK(std::abs(LD(c.b2() - mp50(d.b2()))) < ld_floor(0.3L));
+  // Ciavarella-Jager at 50 digits: c/a = (1 - q)^(1/n) (absolute figure as above)
   const auto e = gsolve<mp50>(pm, q, mp50(0));
   CHECK(abs(e.b1() - pow(1 - q, 1 / mp50("1.5"))) < mp50("1e-40"));
 }
@@ -423,7 +449,8 @@ TEST_CASE("full traction: |q| <= f p in the stick zone, q = +-f p in the slip zo
     CAPTURE(c.q);
     CAPTURE(c.s);
     const auto g = gsolve<double>(*c.m, c.q, c.s);
-    // stick zone: strictly inside the friction limit away from its ends
+    // stick zone: strictly inside the friction limit away from its ends (1e-9:
+    // the nested-quadrature accuracy of the traction, not rounding)
     int n_in = 0;
     for (int i = 1; i < 10; ++i) {
       const double x = -g.beta2 + (g.beta1 + g.beta2) * i / 10.0;
@@ -461,13 +488,13 @@ TEST_CASE("sampled and callback pressures: Hertz reproduced, bad pressures rejec
   core::sampled_pressure<double> sp(xs, ps, a);
   // phi = p / sqrt(a^2 - x^2) is the constant p0/a: interpolation is exact up
   // to the rounding of the samples, and P = pi a p0 / 2 to quadrature accuracy.
-  CHECK(std::abs(sp.p0() - p0) < 1e-14 * p0);
+  CHECK(std::abs(sp.p0() - p0) < 45 * EPS * p0);
   for (const auto &c : std::vector<std::pair<double, double>>{{0.3, 0.2}, {0.6, 1.5}, {0.0, 0.7}, {0.5, 0.0}}) {
     const auto g = gsolve<double>(sp, c.first, c.second);
     const auto h = hsolve(c.first, c.second);
     CHECK(g.reg == h.reg);
-    CHECK(std::abs(g.b1() - h.b1()) < 1e-13);
-    CHECK(std::abs(g.b2() - h.b2()) < 1e-13);
+    CHECK(std::abs(g.b1() - h.b1()) < 450 * EPS);
+    CHECK(std::abs(g.b2() - h.b2()) < 450 * EPS);
   }
   // A non-constant phi: samples of the n = 4 power law (phi = (2/3)(1 + 2x^2)),
   // 201 uniform points. PCHIP interpolation of a smooth phi: O(h^3) away from
@@ -491,19 +518,19 @@ TEST_CASE("sampled and callback pressures: Hertz reproduced, bad pressures rejec
   }
   // callback (std::function and function pointer + user data)
   core::callback_pressure<double> cb([&](const double &x) { return p0 * std::sqrt((a - x) * (a + x)) / a; }, a);
-  CHECK(std::abs(cb.p0() - p0) < 1e-13 * p0);
+  CHECK(std::abs(cb.p0() - p0) < 450 * EPS * p0);
   {
     const auto g = gsolve<double>(cb, 0.6, 1.5);
     const auto h = hsolve(0.6, 1.5);
-    CHECK(std::abs(g.b1() - h.b1()) < 1e-13);
-    CHECK(std::abs(g.b2() - h.b2()) < 1e-13);
+    CHECK(std::abs(g.b1() - h.b1()) < 450 * EPS);
+    CHECK(std::abs(g.b2() - h.b2()) < 450 * EPS);
   }
   struct ud { double a; };
   ud u{1.0};
   core::callback_pressure<double> cb2(
       [](const double &x, void *p) { const double A = static_cast<ud *>(p)->a; return std::sqrt((A - x) * (A + x)); },
       &u, 1.0);
-  CHECK(std::abs(cb2.p0() - 2 / M_PI * M_PI / 2) < 1e-13);
+  CHECK(std::abs(cb2.p0() - 2 / M_PI * M_PI / 2) < 450 * EPS);
 
   auto code_of = [](auto f) {
     try { f(); } catch (const core::error &e) { return e.code(); }
@@ -560,15 +587,17 @@ TEST_CASE("asymmetric sampled pressure: sigma < 0 is the mirror image of sigma >
   for (const auto &c : std::vector<std::pair<double, double>>{{0.4, 0.3}, {0.4, 2.0}, {0.5, 0.0}}) {
     const auto g = gsolve<double>(A, c.first, -c.second);
     const auto h = gsolve<double>(M, c.first, c.second);
-    CHECK(std::abs(g.b1() - h.b2()) < 1e-13);
-    CHECK(std::abs(g.b2() - h.b1()) < 1e-13);
+    CHECK(std::abs(g.b1() - h.b2()) < 450 * EPS);
+    CHECK(std::abs(g.b2() - h.b1()) < 450 * EPS);
     CHECK(g.dir1() == h.dir2());
     // the solution satisfies the raw side conditions of the unmirrored pressure
     core::sampled_pressure<LD> Al(std::vector<LD>(xs.begin(), xs.end()), std::vector<LD>(ps.begin(), ps.end()), 1.0L);
     const auto r = raw_side<LD>(Al, LD(c.first), LD(-c.second), LD(g.b1()), LD(g.b2()), g.dir1(), g.dir2());
-    // (sigma < 0 in the user frame: the side conditions hold as written there)
-    CHECK(std::abs(double(r[0])) < 1e-10);
-    CHECK(std::abs(double(r[1])) < 1e-10);
+    // (sigma < 0 in the user frame: the side conditions hold as written there;
+    // the solution is double's: its residual floor 64 eps pi (1 + |s|))
+    const double floor_d = 64 * M_PI * (1 + c.second) * EPS;
+    CHECK(std::abs(double(r[0])) < floor_d);
+    CHECK(std::abs(double(r[1])) < floor_d);
   }
 }
 
@@ -591,7 +620,7 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
     const auto h = hsolve(c.first, c.second);
     for (int i : {1, 2}) {
       const double Eh = h.energy(i);
-      CHECK(std::abs(g.energy(i) - Eh) <= 1e-13 * Eh);
+      CHECK(std::abs(g.energy(i) - Eh) <= 450 * EPS * Eh);
     }
     // (near the stick edge h ~ u^(3/2): the ~1e-16 difference of the stick
     // edges alone moves h by 1.5e-16/u relative; frac >= 0.05 keeps that small)
@@ -599,7 +628,7 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
       for (double x : {g.b1() + frac * g.d1(), -g.b2() - frac * g.d2()}) {
         if (!(x > g.b1()) && !(x < -g.b2())) continue;
         CAPTURE(x);
-        CHECK(std::abs(g.slip(x) - h.slip(x)) <= 1e-13 * std::abs(h.slip(x)));
+        CHECK(std::abs(g.slip(x) - h.slip(x)) <= 450 * EPS * std::abs(h.slip(x)));
       }
     }
   }
@@ -618,10 +647,11 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
       CAPTURE(z);
       const double E = g.energy_hat(z), Ea = g.energy_hat_adaptive(z);
       CHECK(E > 0);
-      CHECK(std::abs(E - Ea) <= 1e-13 * Ea);
+      CHECK(std::abs(E - Ea) <= 450 * EPS * Ea);
       for (double frac : {0.02, 0.6}) {
         const double dl = frac * g.zone_length(z);
         const double hs = g.hhat_adaptive(z, dl);
+        // (absolute figure: the adaptive reference terminates at eps^(2/3) = 3.7e-11)
         CHECK(std::abs(g.hhat(z, dl) - hs) <= 1e-12 * std::abs(hs));
       }
     }
@@ -630,7 +660,7 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
       const auto gl = gsolve<LD>(*c.ml, LD(c.q), LD(c.s));
       for (int i : {1, 2}) {
         const LD El = gl.energy(i);
-        CHECK(std::abs(double((g.energy(i) - El) / El)) <= 1e-13);
+        CHECK(std::abs(double((g.energy(i) - El) / El)) <= 450 * EPS);
       }
     }
   }
@@ -643,7 +673,8 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
     const auto gl = gsolve<LD>(fl, std::stold(qs.first), std::stold(qs.second));
     for (int i : {1, 2}) {
       const mp50 Em = gm.energy(i);
-      CHECK(abs(Em - mp50(gl.energy(i))) / Em < mp50("1e-16"));
+      // long double energies (conditioned to a few tens of eps; observed < 58 eps): 512 eps
+      CHECK(abs(Em - mp50(gl.energy(i))) / Em < mp50(512 * EPS_LD));
     }
   }
 }
