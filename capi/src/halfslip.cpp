@@ -219,9 +219,8 @@ hs_solution *solve_scene(const hs_scene &scene, const hs_geometry *geometry, con
   hs::capi::reference_input ref;
   auto h = std::make_unique<hs_solution>();
   if (!geometry) {
-    const auto c = to_core(&scene);
+    sc = to_core(&scene);  // hertz_scene and general_scene are one type (core/hertz.hpp)
     req = read_options(opts);
-    sc.a = c.a; sc.p0 = c.p0; sc.f = c.f; sc.Estar = c.Estar; sc.q = c.q; sc.s = c.s;
     if (req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) ref = reference_of(sc);
   } else {
     req = read_options(opts);

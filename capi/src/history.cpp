@@ -208,8 +208,9 @@ namespace {
 // The monotonic stick half-width (units of a) at canonical loads, for the solution's pressure.
 double half_width_at(const hs_solution &sol, double q, double s) {
   if (sol.model && !std::holds_alternative<core::hertz_solution<double>>(sol.solution)) {
-    core::general_scene<double> g;
-    g.a = 1; g.p0 = 1; g.f = 1; g.Estar = 1; g.q = q; g.s = s;
+    core::general_scene<double> g;  // canonical units: a = p0 = f = E* = 1
+    g.q = q;
+    g.s = s;
     return core::solve_general<double>(*sol.model, g).half_width();
   }
   core::hertz_scene<double> hz;

@@ -62,12 +62,6 @@ double reference_double::eval(reference::point_eval what, double x) const {
 
 namespace {
 
-core::hertz_scene<double> hertz_of(const core::general_scene<double> &sc) {
-  core::hertz_scene<double> h;
-  h.a = sc.a; h.p0 = sc.p0; h.f = sc.f; h.Estar = sc.Estar; h.q = sc.q; h.s = sc.s;
-  return h;
-}
-
 const core::pressure_model<double> &pressure_of(hs_solution &h) {
   if (!h.model) h.model = std::make_shared<core::hertz_pressure<double>>();
   return *h.model;
@@ -85,7 +79,7 @@ void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, cons
   core::solve_options<double> o;
   o.max_iterations = r.max_iterations;
   o.rtol = r.rtol;
-  const auto &s = h.solution.emplace<core::hertz_solution<double>>(core::solve_hertz<double>(hertz_of(sc), o));
+  const auto &s = h.solution.emplace<core::hertz_solution<double>>(core::solve_hertz<double>(sc, o));
   h.model_used = HS_MODEL_CLOSED_FORM;
   h.error_estimate = core::closed_form_estimate(s.d1() / sc.a, s.d2() / sc.a, sc.q, sc.s).value();
   // rtol > 0 relaxes the quadrature of the opposite-sign slip and energies
@@ -140,7 +134,7 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
       return;
     }
   } else {
-    const double rt = core::quadrature_tolerance(tol, hertz_of(sc));
+    const double rt = core::quadrature_tolerance(tol, sc);
     run_quadrature(h, sc, r.max_iterations, rt);
     if (h.error_estimate > tol && rt > 0) run_quadrature(h, sc, r.max_iterations, 0);
   }
