@@ -117,16 +117,18 @@ int eval_points(const hs_solution *sol, size_t n, const double *x, double *out, 
     require(sol != nullptr, core::status::null_pointer, "solution is NULL");
     if (n == 0) return;
     require(x != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
-    const double a = sol->visit([](const auto &s) { return double(s.scene.a); });
-    for (size_t i = 0; i < n; ++i) {
-      require(std::isfinite(x[i]), core::status::not_finite, "evaluation point is NaN or infinite");
-      require(std::fabs(x[i]) <= a, core::status::point_outside, "evaluation point outside |x| <= a");
-    }
     std::vector<double> tmp(n);
-    for (size_t i = 0; i < n; ++i) {
-      tmp[i] = sol->visit([&](const auto &s) { return fn(s, x[i]); });
-      require(std::isfinite(tmp[i]), core::status::overflow, "result not representable");
-    }
+    sol->visit([&](const auto &s) {  // one dispatch for all the points
+      const double a = double(s.scene.a);
+      for (size_t i = 0; i < n; ++i) {
+        require(std::isfinite(x[i]), core::status::not_finite, "evaluation point is NaN or infinite");
+        require(std::fabs(x[i]) <= a, core::status::point_outside, "evaluation point outside |x| <= a");
+      }
+      for (size_t i = 0; i < n; ++i) {
+        tmp[i] = fn(s, x[i]);
+        require(std::isfinite(tmp[i]), core::status::overflow, "result not representable");
+      }
+    });
     std::memcpy(out, tmp.data(), n * sizeof(double));
   });
 }

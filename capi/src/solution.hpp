@@ -95,17 +95,21 @@ struct hs_solution {
   // first field evaluation that needs them (thread-safe; null: closed forms)
   mutable std::once_flag panels_once;
   mutable std::shared_ptr<const hs::core::traction_panels<double>> panels;
-  // f(solution) for the solution that ran, whatever its type
-  template <class F> auto visit(F &&f) const {
-    using R = decltype(f(std::declval<const hs::core::hertz_solution<double> &>()));
-    return std::visit(
-        [&](const auto &s) -> R {
-          if constexpr (std::is_same<std::decay_t<decltype(s)>, std::monostate>::value)
-            throw hs::core::error(hs::core::status::internal, "solution handle holds no solution");
-          else
-            return f(s);
-        },
-        solution);
+  // f(solution) for the solution that ran, whatever its type. A chain of
+  // std::get_if rather than std::visit: GCC's std::visit dispatches through a
+  // table of function pointers, which kept f from being inlined and cost ~2 ns
+  // a call on the Hertz point evaluations (scripts/bench_compare.sh).
+  template <class F> auto visit(F &&f) const { return visit_from<1>(f); }
+
+ private:
+  template <std::size_t I, class F>
+  auto visit_from(F &f) const -> decltype(f(std::declval<const hs::core::hertz_solution<double> &>())) {
+    if constexpr (I < std::variant_size<decltype(solution)>::value) {
+      if (const auto *s = std::get_if<I>(&solution)) return f(*s);
+      return visit_from<I + 1>(f);
+    } else {
+      throw hs::core::error(hs::core::status::internal, "solution handle holds no solution");
+    }
   }
 };
 
