@@ -15,7 +15,8 @@ trap 'rm -rf "$tmp"' EXIT
 sed -n 's/^#define[[:space:]]\{1,\}\(HS_OK\|HS_ERR_[A-Z_]*\)[[:space:]]\{1,\}\([0-9]\{1,\}\).*/\1 \2/p' "$hdr" > "$tmp/header"
 sed -n 's/^| `\(HS_OK\|HS_ERR_[A-Z_]*\)` | \([0-9]\{1,\}\) |.*/\1 \2/p' "$doc" > "$tmp/doc"
 # the switch of hs_strerror: "case HS_...: return" in the C shim (wherever it lives)
-grep -ho 'case \(HS_OK\|HS_ERR_[A-Z_]*\): *return "' "$src"/capi/src/*.cpp \
+# (white space, line breaks included, folded first: the layout is clang-format's)
+cat "$src"/capi/src/*.cpp | tr -s ' \n' '  ' | grep -o 'case \(HS_OK\|HS_ERR_[A-Z_]*\): *return "' \
   | sed 's/case \([A-Z_]*\):.*/\1/' | sort > "$tmp/strerror"
 
 n=$(wc -l < "$tmp/header")

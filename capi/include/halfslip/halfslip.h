@@ -1,3 +1,6 @@
+/* The layout of this header (one #define a line, aligned) is parsed by
+   tests/check_status_codes.sh and the Fortran and Python constant checks. */
+/* clang-format off */
 /*
  * halfslip: half-plane partial-slip contact under constant normal load,
  * shear force Q and differential bulk tension sigma.
