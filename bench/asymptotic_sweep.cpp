@@ -34,7 +34,8 @@ int main(int argc, char **argv) {
     std::shared_ptr<pressure_model<double>> pm;
   };
   std::vector<geo> geos = {{"hertz", 2, std::make_shared<hertz_pressure<double>>()}};
-  for (double b : {0.3, 0.6, 0.9}) geos.push_back({"flat-rounded", b, std::make_shared<flat_rounded_pressure<double>>(b)});
+  for (double b : {0.3, 0.6, 0.9})
+    geos.push_back({"flat-rounded", b, std::make_shared<flat_rounded_pressure<double>>(b)});
   for (double e : {1.5, 3.0, 6.0}) geos.push_back({"power-law", e, std::make_shared<power_law_pressure<double>>(e)});
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> U(0, 1);

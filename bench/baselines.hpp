@@ -37,16 +37,33 @@ template <class RFn, class RDn, class RJn> struct carlson_basis_impl {
     RJc = RJn()(0.0, P, Q, 2 * op2);
   }
 };
-struct brf { double operator()(double x, double y, double z) const { return boost::math::ellint_rf(x, y, z); } };
-struct brd { double operator()(double x, double y, double z) const { return boost::math::ellint_rd(x, y, z); } };
-struct brj { double operator()(double x, double y, double z, double p) const { return boost::math::ellint_rj(x, y, z, p); } };
-struct grf { double operator()(double x, double y, double z) const { return gsl_sf_ellint_RF(x, y, z, GSL_PREC_DOUBLE); } };
-struct grd { double operator()(double x, double y, double z) const { return gsl_sf_ellint_RD(x, y, z, GSL_PREC_DOUBLE); } };
-struct grj { double operator()(double x, double y, double z, double p) const { return gsl_sf_ellint_RJ(x, y, z, p, GSL_PREC_DOUBLE); } };
+struct brf {
+  double operator()(double x, double y, double z) const { return boost::math::ellint_rf(x, y, z); }
+};
+struct brd {
+  double operator()(double x, double y, double z) const { return boost::math::ellint_rd(x, y, z); }
+};
+struct brj {
+  double operator()(double x, double y, double z, double p) const { return boost::math::ellint_rj(x, y, z, p); }
+};
+struct grf {
+  double operator()(double x, double y, double z) const { return gsl_sf_ellint_RF(x, y, z, GSL_PREC_DOUBLE); }
+};
+struct grd {
+  double operator()(double x, double y, double z) const { return gsl_sf_ellint_RD(x, y, z, GSL_PREC_DOUBLE); }
+};
+struct grj {
+  double operator()(double x, double y, double z, double p) const {
+    return gsl_sf_ellint_RJ(x, y, z, p, GSL_PREC_DOUBLE);
+  }
+};
 using boost_basis = carlson_basis_impl<brf, brd, brj>;
 using gsl_basis = carlson_basis_impl<grf, grd, grj>;
 
-struct result { double b1, b2; bool ok; };
+struct result {
+  double b1, b2;
+  bool ok;
+};
 
 template <class Basis> result solve_closed(double q, double s) {
   core::hertz_scene<double> sc;
@@ -100,7 +117,8 @@ struct tanh_sinh_q : naive_quadrature {
 };
 
 // r_j = sL int_L p t^{j-1}/R - sR int_R p t^{j-1}/R - rhs_j  (a = p0 = f = 1)
-inline std::array<double, 2> naive_residual(naive_quadrature &Qd, double q, double s, double b1, double b2, int sR, int sL) {
+inline std::array<double, 2> naive_residual(naive_quadrature &Qd, double q, double s, double b1, double b2, int sR,
+                                            int sL) {
   std::array<double, 2> r{};
   for (int j = 1; j <= 2; ++j) {
     const double IR = Qd.integrate(

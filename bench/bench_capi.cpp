@@ -139,9 +139,9 @@ int main(int argc, char **argv) {
     benchmark::RegisterBenchmark((std::string("slip_point/") + sp.name).c_str(),
                                  [&sp](benchmark::State &st) { bm_points(st, sp, 1); });
   }
-  benchmark::RegisterBenchmark("reference30/hertz_opposite",
-                               [](benchmark::State &st) { bm_reference(st, "0.3", "2", 30); })
-      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("reference30/hertz_opposite", [](benchmark::State &st) {
+    bm_reference(st, "0.3", "2", 30);
+  })->Unit(benchmark::kMillisecond);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

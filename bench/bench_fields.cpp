@@ -123,12 +123,14 @@ hs::core::contact_state<double> slow_state(const scene_def &d, std::unique_ptr<h
   if (d.flat) {
     pm = std::make_unique<flat_rounded_pressure<double>>(0.5);
     general_scene<double> sc;
-    sc.q = d.q; sc.s = d.s;
+    sc.q = d.q;
+    sc.s = d.s;
     g = std::make_unique<general_solution<double>>(solve_general<double>(*pm, sc));
     return general_state_of(*g);
   }
   hertz_scene<double> sc;
-  sc.q = d.q; sc.s = d.s;
+  sc.q = d.q;
+  sc.s = d.s;
   h = std::make_unique<hertz_solution<double>>(solve_hertz(sc));
   // same sign: the closed forms (McEwen); opposite sign: the slow quadrature
   return h->reg == regime::opposite_sign ? make_state<double>(*h) : hertz_state(*h);
@@ -136,9 +138,13 @@ hs::core::contact_state<double> slow_state(const scene_def &d, std::unique_ptr<h
 
 void accuracy(const char *path) {
   FILE *f = std::fopen(path, "w");
-  if (!f) { std::fprintf(stderr, "bench_fields: cannot write %s\n", path); std::exit(1); }
-  std::fprintf(f, "scene,grid_points_checked,peak_grid,max_err_grid_rel,surface_points,peak_surface,"
-                  "max_err_surface_rel,first_call_ms\n");
+  if (!f) {
+    std::fprintf(stderr, "bench_fields: cannot write %s\n", path);
+    std::exit(1);
+  }
+  std::fprintf(f,
+               "scene,grid_points_checked,peak_grid,max_err_grid_rel,surface_points,peak_surface,"
+               "max_err_surface_rel,first_call_ms\n");
   for (const scene_def &d : kScenes) {
     std::unique_ptr<hs::core::hertz_solution<double>> h;
     std::unique_ptr<hs::core::general_solution<double>> g;
@@ -155,22 +161,25 @@ void accuracy(const char *path) {
     // Hertz same sign: the closed forms in long double (the double path is the same closed forms)
     const bool ld = !d.flat && h->reg != hs::core::regime::opposite_sign;
     hs::core::hertz_scene<long double> lsc;
-    lsc.q = d.q; lsc.s = d.s;
+    lsc.q = d.q;
+    lsc.s = d.s;
     const auto lsol = hs::core::solve_hertz(lsc);
     const auto lst = hs::core::hertz_state(lsol);
     auto reference = [&](double x, double y) {
       if (!ld) return hs::core::stress_at(ref, 1, x, y);
       const auto t = hs::core::stress_at<long double>(lst, 1, x, y);
       hs::core::stress_tensor<double> r;
-      r.xx = double(t.xx); r.yy = double(t.yy); r.xy = double(t.xy);
+      r.xx = double(t.xx);
+      r.yy = double(t.yy);
+      r.xy = double(t.xy);
       return r;
     };
     for (std::size_t k = 0; k < pts().gx.size(); ++k) {
       for (int c = 0; c < 3; ++c) peak = std::max(peak, std::fabs(out[3 * k + c]));
       if (k % 10) continue;  // every 10th column against the slow reference
       const auto s = reference(pts().gx[k], pts().gy[k]);
-      err = std::max({err, std::fabs(s.xx - out[3 * k]), std::fabs(s.yy - out[3 * k + 1]),
-                      std::fabs(s.xy - out[3 * k + 2])});
+      err = std::max(
+          {err, std::fabs(s.xx - out[3 * k]), std::fabs(s.yy - out[3 * k + 1]), std::fabs(s.xy - out[3 * k + 2])});
       ++n;
     }
     std::vector<double> sv(pts().sx.size());

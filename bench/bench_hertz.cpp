@@ -60,7 +60,9 @@ volatile double g_sink;
 int main(int argc, char **argv) {
   gsl_set_error_handler_off();
   const std::string csv = argc > 1 ? argv[1] : "bench/results/hertz.csv";
-  struct scene { double q, s; };
+  struct scene {
+    double q, s;
+  };
   // same-sign and opposite-sign scenes over the regimes
   std::vector<scene> same, opp;
   for (double q : {0.05, 0.2, 0.4, 0.6, 0.8, 0.95})
@@ -75,7 +77,11 @@ int main(int argc, char **argv) {
     const auto sol = core::solve_hertz(sc);
     return std::pair<double, double>(double(sol.b1()), double(sol.b2()));
   };
-  struct method { std::string name; std::function<result(double, double)> solve; int inner; };
+  struct method {
+    std::string name;
+    std::function<result(double, double)> solve;
+    int inner;
+  };
   qaws Qw;
   tanh_sinh_q Tq;
   std::vector<method> methods = {
@@ -97,7 +103,10 @@ int main(int argc, char **argv) {
       for (const auto &c : sc) {
         const auto r = M.solve(c.q, c.s);
         const auto b = ref(c);
-        if (!r.ok || !std::isfinite(r.b1)) { ++fails; continue; }
+        if (!r.ok || !std::isfinite(r.b1)) {
+          ++fails;
+          continue;
+        }
         err = std::max(err, std::max(std::abs(r.b1 - b.first), std::abs(r.b2 - b.second)));
       }
       const int inner = M.inner;
@@ -188,8 +197,10 @@ int main(int argc, char **argv) {
               g_sink = core::solve_general(flat, g, o).b1();
             },
             5, int(sc.size()));
-        const std::string name = "general-path rtol=" + (rtol > 0 ? std::to_string(int(std::round(-std::log10(rtol)))) : std::string("full"));
-        std::printf("%-18s %-14s %11.3g ns %14.3g %9d   (Hertz via general path; order %d)\n", name.c_str(), rn, nsH, err, 0, order);
+        const std::string name = "general-path rtol=" + (rtol > 0 ? std::to_string(int(std::round(-std::log10(rtol))))
+                                                                  : std::string("full"));
+        std::printf("%-18s %-14s %11.3g ns %14.3g %9d   (Hertz via general path; order %d)\n", name.c_str(), rn, nsH,
+                    err, 0, order);
         std::printf("%-18s %-14s %11.3g ns %14s %9d   (flat punch b_f/a = 0.5)\n", name.c_str(), rn, nsF, "-", 0);
         out << "solve," << name << "," << rn << "," << nsH << "," << err << ",0\n";
         out << "flat_solve," << name << "," << rn << "," << nsF << ",,0\n";

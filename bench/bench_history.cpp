@@ -43,7 +43,10 @@ struct result {
 result of(const std::vector<history_vertex<double>> &vs) {
   result r;
   for (const auto &v : vs) {
-    r.b1.push_back(v.b1); r.b2.push_back(v.b2); r.e1.push_back(v.energy1); r.e2.push_back(v.energy2);
+    r.b1.push_back(v.b1);
+    r.b2.push_back(v.b2);
+    r.e1.push_back(v.energy1);
+    r.e2.push_back(v.energy2);
   }
   return r;
 }
@@ -89,14 +92,17 @@ int main(int argc, char **argv) {
     sc.s = 0.4;
     const auto m = solve_hertz<double>(sc);
     const double E4 = 4 * m.energy(1);
-    double t_mono = median_time([&] {
-      volatile double e = 4 * solve_hertz<double>(sc).energy(1);
-      (void)e;
-    }, 101);
+    double t_mono = median_time(
+        [&] {
+          volatile double e = 4 * solve_hertz<double>(sc).energy(1);
+          (void)e;
+        },
+        101);
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
     std::fprintf(csv, "steady_cycle,closed form 4 E_mono,,0,%.6g,0,0,0,0\n", t_mono);
-    std::printf("| steady in-phase Hertz cycle +-(0.5, 0.4), energy per cycle | closed form 4 E_mono | %.3g us | exact |\n",
-                t_mono * 1e6);
+    std::printf(
+        "| steady in-phase Hertz cycle +-(0.5, 0.4), energy per cycle | closed form 4 E_mono | %.3g us | exact |\n",
+        t_mono * 1e6);
     for (double rtol : {1e-6, 1e-8}) {
       double err = 0, est = 0;
       size_t steps = 0;
@@ -137,8 +143,7 @@ int main(int argc, char **argv) {
         for (const auto &p : walk) fine.add_vertex(p.first, p.second);
         ref = of(fine.vertices());
         break;
-      } catch (const error &) {
-      }
+      } catch (const error &) {}
     }
     std::printf("reference for %s: march at step 2^-%d\n", name, kref);
     for (int k = 4; k <= 7; ++k) {
@@ -171,12 +176,14 @@ int main(int argc, char **argv) {
       bo.nodes = nodes;
       bo.steps_per_unit = nodes;
       std::vector<hs::reference::bem::vertex_state> vs;
-      const double t = median_time([&] {
-        vs = hs::reference::bem::run([&](double x) { return pm->p(x); }, walk, bo);
-      }, 1);
+      const double t = median_time(
+          [&] { vs = hs::reference::bem::run([&](double x) { return pm->p(x); }, walk, bo); }, 1);
       result r;
       for (const auto &v : vs) {
-        r.b1.push_back(v.b1); r.b2.push_back(v.b2); r.e1.push_back(v.energy1); r.e2.push_back(v.energy2);
+        r.b1.push_back(v.b1);
+        r.b2.push_back(v.b2);
+        r.e1.push_back(v.energy1);
+        r.e2.push_back(v.energy2);
       }
       double eb, ee;
       errors(r, ref, eb, ee);
@@ -207,8 +214,7 @@ int main(int argc, char **argv) {
         steps = h.fine().step_count();
         est = h.error_estimate();
         step = h.step();
-      } catch (const error &) {
-      }
+      } catch (const error &) {}
       const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       tsum += t;
       if (done == walk100.size()) ++ok;
@@ -241,16 +247,20 @@ int main(int argc, char **argv) {
               try {
                 add_cycles<double>(h, qm, qa, sm, sa, ph, 3, ramp_order::sigma_first, 16, 1e-6);
                 done = true;
-              } catch (const error &) {
-              }
+              } catch (const error &) {}
               const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
               tsum += t;
-              if (done) { ++ok; if (low) ++ok_low; }
+              if (done) {
+                ++ok;
+                if (low) ++ok_low;
+              }
               std::fprintf(csv, "hertz_cycle_qa%g_qm%g_sm%g_sa%g_ph%g,march step 1/32,,%zu,%.6g,0,0,0,%d\n", qa, qm,
                            sm, sa, ph, h.step_count(), t, int(done));
             }
-    std::printf("| %d periodic loadings, Hertz (3 cycles) | march, step 1/32 | %d of %d complete (%d of %d with "
-                "sigma_m + sigma_a <= 1); %.3g s in all |\n", n, ok, n, ok_low, n_low, tsum);
+    std::printf(
+        "| %d periodic loadings, Hertz (3 cycles) | march, step 1/32 | %d of %d complete (%d of %d with "
+        "sigma_m + sigma_a <= 1); %.3g s in all |\n",
+        n, ok, n, ok_low, n_low, tsum);
   }
   std::fclose(csv);
   return 0;

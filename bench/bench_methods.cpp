@@ -62,7 +62,10 @@ std::string exact(double x) {
   return b;
 }
 
-struct truth { std::string d1, d2; bool ok = false; };
+struct truth {
+  std::string d1, d2;
+  bool ok = false;
+};
 
 // relative error |x - ref| / |ref| in MPFR (absolute if ref = 0)
 double rel_err(const std::string &x, const std::string &ref) {
@@ -111,13 +114,19 @@ struct answer {
   double x1 = NAN, x2 = NAN;
   bool ok = false;
   void text() {
-    if (d1.empty() && ok) { d1 = exact(x1); d2 = exact(x2); }
+    if (d1.empty() && ok) {
+      d1 = exact(x1);
+      d2 = exact(x2);
+    }
   }
 };
 answer from_double(double d1, double d2, bool ok) {
   answer a;
   a.ok = ok && std::isfinite(d1) && std::isfinite(d2);
-  if (a.ok) { a.x1 = d1; a.x2 = d2; }
+  if (a.ok) {
+    a.x1 = d1;
+    a.x2 = d2;
+  }
   return a;
 }
 
@@ -203,7 +212,9 @@ int main(int argc, char **argv) {
   const hs_geometry flat = flat_geometry();
 
   // ---- 1. speed and accuracy ----------------------------------------------
-  struct scene { double q, s; };
+  struct scene {
+    double q, s;
+  };
   // same sign (s/4 <= q/(1+sqrt(1-q))): 4 scenes; opposite sign: 4 scenes
   const std::vector<scene> hertz = {{0.05, 0},  {0.3, 0.2}, {0.6, -0.5}, {0.9, 1.5},
                                     {0.0, 1.0}, {0.3, 2.0}, {0.5, 3.0},  {0.7, 8.0}};
@@ -224,23 +235,28 @@ int main(int argc, char **argv) {
     hm.push_back({nm, [rt](double q, double s) { return capi(q, s, HS_MODEL_QUADRATURE, rt, nullptr); }, 7, fast});
   }
   for (int dg : {20, 30, 50, 100})
-    hm.push_back({"reference " + std::to_string(dg) + " digits", [dg](double q, double s) { return refsolve(q, s, dg); },
-                  3, 0});
-  hm.push_back({"naive-qaws", [&](double q, double s) {
+    hm.push_back({"reference " + std::to_string(dg) + " digits",
+                  [dg](double q, double s) { return refsolve(q, s, dg); }, 3, 0});
+  hm.push_back({"naive-qaws",
+                [&](double q, double s) {
                   const auto r = baselines::solve_naive(Qw, q, s);
                   return from_double(1 - r.b1, 1 - r.b2, r.ok);
-                }, 3, 0});
-  hm.push_back({"naive-tanh-sinh", [&](double q, double s) {
+                },
+                3, 0});
+  hm.push_back({"naive-tanh-sinh",
+                [&](double q, double s) {
                   const auto r = baselines::solve_naive(Tq, q, s);
                   return from_double(1 - r.b1, 1 - r.b2, r.ok);
-                }, 3, 0});
+                },
+                3, 0});
 
   std::vector<method> fm = {
       {"asymptotic", [&](double q, double s) { return capi(q, s, HS_MODEL_ASYMPTOTIC, 0, &flat); }, 9, fast}};
   for (double rt : {1e-4, 1e-8, 1e-12, 0.0}) {
     char nm[40];
     std::snprintf(nm, sizeof nm, rt > 0 ? "quadrature rtol=%.0e" : "quadrature rtol=0", rt);
-    fm.push_back({nm, [rt, &flat](double q, double s) { return capi(q, s, HS_MODEL_QUADRATURE, rt, &flat); }, 5, fast});
+    fm.push_back(
+        {nm, [rt, &flat](double q, double s) { return capi(q, s, HS_MODEL_QUADRATURE, rt, &flat); }, 5, fast});
   }
 
   std::ofstream om(csv_m);
@@ -283,8 +299,7 @@ int main(int argc, char **argv) {
         t.d1 = b1;
         t.d2 = b2;
         t.ok = true;
-      } catch (...) {
-      }
+      } catch (...) {}
       tr.push_back(t);
     }
     run(fm, flats, "flat", tr);
@@ -325,8 +340,7 @@ int main(int argc, char **argv) {
       }
       if (!t.ok)  // the reference itself did not converge: no verdict on the method
         os << sweep << "," << M.name << "," << num(param) << ",no-truth,no-truth\n";
-      else
-        os << sweep << "," << M.name << "," << num(param) << "," << fmt(err) << "," << fmt(es) << "\n";
+      else os << sweep << "," << M.name << "," << num(param) << "," << fmt(err) << "," << fmt(es) << "\n";
     }
   };
   // d/a -> 0: Q/fP = 1e-1 .. 1e-14, sigma = 0

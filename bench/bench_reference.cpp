@@ -29,7 +29,9 @@ int main(int argc, char **argv) {
   const std::string csv = argc > 1 ? argv[1] : "bench/results/reference.csv";
   std::ofstream out(csv);
   out << "kind,method,regime,digits,median_ms\n";
-  struct scene { const char *regime, *q, *s; };
+  struct scene {
+    const char *regime, *q, *s;
+  };
   const scene scenes[] = {{"same-sign", "0.5", "0.2"}, {"opposite-sign", "0.3", "2"}};
   std::printf("%-14s %7s %18s %18s\n", "regime", "digits", "one tier [ms]", "certified [ms]");
   for (const auto &sc : scenes) {
@@ -41,8 +43,19 @@ int main(int argc, char **argv) {
       for (unsigned d : ref::tiers())
         if (D == 0 && int(d) >= digits + ref::guard_digits) D = d;
       const int reps = digits >= 300 ? 5 : 15;
-      const double one = median_ms([&] { auto s = ref::solve_at(D, t, 1000); (void)s->value(ref::quantity::b1, digits); }, reps);
-      const double cert = median_ms([&] { ref::solution s(t, digits); (void)s.value(ref::quantity::b1); (void)s.value(ref::quantity::b2); }, reps);
+      const double one = median_ms(
+          [&] {
+            auto s = ref::solve_at(D, t, 1000);
+            (void)s->value(ref::quantity::b1, digits);
+          },
+          reps);
+      const double cert = median_ms(
+          [&] {
+            ref::solution s(t, digits);
+            (void)s.value(ref::quantity::b1);
+            (void)s.value(ref::quantity::b2);
+          },
+          reps);
       std::printf("%-14s %7d %18.3f %18.3f\n", sc.regime, digits, one, cert);
       out << "solve,halfslip-one-tier," << sc.regime << "," << digits << "," << one << "\n";
       out << "solve,halfslip-certified," << sc.regime << "," << digits << "," << cert << "\n";

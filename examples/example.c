@@ -18,12 +18,12 @@ static void check(int status, const char *what) {
 }
 
 int main(void) {
-  const double P = 1.0e5;      /* normal load, N/m */
-  const double R = 0.05;       /* radius of the cylinder, m */
+  const double P = 1.0e5;         /* normal load, N/m */
+  const double R = 0.05;          /* radius of the cylinder, m */
   const double E_star = 1.154e11; /* composite modulus of two steel bodies, E/(2(1 - nu^2)), Pa */
-  const double f = 0.6;        /* coefficient of friction */
-  const double Q = 1.8e4;      /* shear force, N/m */
-  const double sigma = 2.0e7;  /* differential bulk tension, Pa */
+  const double f = 0.6;           /* coefficient of friction */
+  const double Q = 1.8e4;         /* shear force, N/m */
+  const double sigma = 2.0e7;     /* differential bulk tension, Pa */
   hs_scene scene;
   hs_solution *sol = NULL;
   hs_summary sm;

@@ -53,7 +53,12 @@ int main() try {
   // The same scene to 30 significant digits (inputs as exact decimal strings).
   hs_ref_scene rs;
   check(hs_ref_scene_default(&rs), "reference scene");
-  rs.P = "1e5"; rs.R = "0.05"; rs.E_star = "1.154e11"; rs.f = "0.6"; rs.Q = "1.8e4"; rs.sigma = "2e7";
+  rs.P = "1e5";
+  rs.R = "0.05";
+  rs.E_star = "1.154e11";
+  rs.f = "0.6";
+  rs.Q = "1.8e4";
+  rs.sigma = "2e7";
   hs_ref_solution *rraw = nullptr;
   check(hs_ref_solve(&rs, 30, &rraw), "reference solve");
   const ref_solution ref(rraw);

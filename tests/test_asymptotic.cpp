@@ -99,12 +99,23 @@ TEST_CASE("edge_solution: zone lengths, slip directions and signs of B_x, h agre
   for (double q : {2e-4, -2e-4})
     for (double s : {0.0, 1e-4, -1e-4, 3e-3, -3e-3}) {
       core::general_scene<double> sc;
-      sc.a = 2.0; sc.p0 = 1.5; sc.f = 0.4; sc.Estar = 3.0; sc.q = q; sc.s = s;
+      sc.a = 2.0;
+      sc.p0 = 1.5;
+      sc.f = 0.4;
+      sc.Estar = 3.0;
+      sc.q = q;
+      sc.s = s;
       core::hertz_scene<double> hsc;
-      hsc.a = sc.a; hsc.p0 = sc.p0; hsc.f = sc.f; hsc.Estar = sc.Estar; hsc.q = q; hsc.s = s;
+      hsc.a = sc.a;
+      hsc.p0 = sc.p0;
+      hsc.f = sc.f;
+      hsc.Estar = sc.Estar;
+      hsc.q = q;
+      hsc.s = s;
       const auto full = core::solve_hertz(hsc);
       const core::edge_solution<double> m(pm, sc);
-      CAPTURE(q); CAPTURE(s);
+      CAPTURE(q);
+      CAPTURE(s);
       CHECK(int(m.reg) == int(full.reg));
       CHECK(m.dir1() == full.dir1());
       CHECK(m.dir2() == full.dir2());

@@ -64,10 +64,10 @@ TEST_CASE("bem oracle: monotonic Hertz, sigma = 0") {
     timer t;
     const auto r = bem::run(hertz, {{Q, 0.0}}, o);
     const double b = std::sqrt(1 - Q), E = hertz_energy(Q), w = width(o.nodes, b);
-    MESSAGE((fmt("monotonic Q=%.1f: b1=%.6f b2=%.6f exact %.6f (|err| = %.2g element widths); ", Q, r[0].b1,
-                r[0].b2, b, std::max(std::fabs(r[0].b1 - b), std::fabs(r[0].b2 - b)) / w) +
-            fmt("E1=%.8f E2=%.8f exact %.8f (rel err %.2g); %.3f s", r[0].energy1, r[0].energy2, E,
-                std::fabs(r[0].energy1 / E - 1), t.s())));
+    MESSAGE((fmt("monotonic Q=%.1f: b1=%.6f b2=%.6f exact %.6f (|err| = %.2g element widths); ", Q, r[0].b1, r[0].b2,
+                 b, std::max(std::fabs(r[0].b1 - b), std::fabs(r[0].b2 - b)) / w) +
+             fmt("E1=%.8f E2=%.8f exact %.8f (rel err %.2g); %.3f s", r[0].energy1, r[0].energy2, E,
+                 std::fabs(r[0].energy1 / E - 1), t.s())));
     CHECK(std::fabs(r[0].b1 - b) < 0.5 * w);
     CHECK(std::fabs(r[0].b2 - b) < 0.5 * w);
     CHECK(r[0].dir1 == 1);
@@ -97,8 +97,7 @@ TEST_CASE("bem oracle: slip profile and equilibrium, monotonic Hertz") {
     hmax = std::max(hmax, he);
     if (ax < c - 2 * width(300, c)) stuck_ok = stuck_ok && h[j] == 0.0;  // stick: never slipped
   }
-  MESSAGE((fmt("equilibrium residual %.2g; max |h - h_exact| = %.3g (max h = %.3g)", F - 0.5 * pi / 2, herr,
-              hmax)));
+  MESSAGE((fmt("equilibrium residual %.2g; max |h - h_exact| = %.3g (max h = %.3g)", F - 0.5 * pi / 2, herr, hmax)));
   CHECK(std::fabs(F - 0.5 * pi / 2) < 1e-12);
   CHECK(herr < 0.02 * hmax);
   CHECK(stuck_ok);
@@ -110,8 +109,8 @@ TEST_CASE("bem oracle: same-sign Hertz (Q, sigma) = (0.5, 0.4), eq (20)") {
   const auto r = bem::run(hertz, {{0.5, 0.4}}, o);
   const double b1 = std::sqrt(0.5) + 0.1, b2 = std::sqrt(0.5) - 0.1;
   MESSAGE((fmt("same sign: b1=%.6f (exact %.6f, %.2g widths) b2=%.6f (exact %.6f, ", r[0].b1, b1,
-              (r[0].b1 - b1) / width(o.nodes, b1), r[0].b2, b2) +
-          fmt("%.2g widths); %.3f s", (r[0].b2 - b2) / width(o.nodes, b2), t.s())));
+               (r[0].b1 - b1) / width(o.nodes, b1), r[0].b2, b2) +
+           fmt("%.2g widths); %.3f s", (r[0].b2 - b2) / width(o.nodes, b2), t.s())));
   CHECK(std::fabs(r[0].b1 - b1) < 0.5 * width(o.nodes, b1));
   CHECK(std::fabs(r[0].b2 - b2) < 0.5 * width(o.nodes, b2));
   CHECK(r[0].dir1 == 1);
@@ -129,8 +128,8 @@ TEST_CASE("bem oracle: unloading Q 0 -> 0.6 -> 0.2 (Ciavarella-Jager)") {
   const auto r = bem::run(hertz, {{0.6, 0.0}, {0.2, 0.0}}, o);
   const double c = std::sqrt(1 - 0.4 / 2);
   MESSAGE((fmt("unloading: c1=%.6f c2=%.6f exact %.6f (%.2g widths); %.3f s", r[1].b1, r[1].b2, c,
-              (r[1].b1 - c) / width(o.nodes, c), t.s()) +
-          fmt(", energies on the unloading segment %.8g %.8g", r[1].energy1, r[1].energy2)));
+               (r[1].b1 - c) / width(o.nodes, c), t.s()) +
+           fmt(", energies on the unloading segment %.8g %.8g", r[1].energy1, r[1].energy2)));
   CHECK(r[0].dir1 == 1);
   CHECK(std::fabs(r[1].b1 - c) < 0.5 * width(o.nodes, c));
   CHECK(std::fabs(r[1].b2 - c) < 0.5 * width(o.nodes, c));
@@ -141,20 +140,23 @@ TEST_CASE("bem oracle: unloading Q 0 -> 0.6 -> 0.2 (Ciavarella-Jager)") {
   // int p |dh| is 2 E_mono(0.2).
   const double E = 2 * hertz_energy(0.2);
   MESSAGE((fmt("unloading energy per zone %.8g, 2 E_mono(0.2) = %.8g (rel err %.2g)", r[1].energy1, E,
-              r[1].energy1 / E - 1)));
+               r[1].energy1 / E - 1)));
   CHECK(std::fabs(r[1].energy1 / E - 1) < 1e-3);
 }
 
 TEST_CASE("bem oracle: Ciavarella-Jager for a non-Hertz pressure") {
   // p = (4/3)(1 - x^2)^{3/2} (P = pi/2). With sigma = 0 the reversed zone after unloading Q* -> Q is
   // the stick zone of a monotonic load (Q* - Q)/2, for any pressure.
-  auto p = [](double x) { const double u = std::max(0.0, 1 - x * x); return 4.0 / 3.0 * u * std::sqrt(u); };
+  auto p = [](double x) {
+    const double u = std::max(0.0, 1 - x * x);
+    return 4.0 / 3.0 * u * std::sqrt(u);
+  };
   bem::options o;
   o.nodes = 300;
   const auto u = bem::run(p, {{0.5, 0.0}, {0.1, 0.0}}, o);
   const auto m = bem::run(p, {{0.2, 0.0}}, o);
   MESSAGE((fmt("p ~ (1-x^2)^1.5: reversed zone %.6f, monotonic at 0.2: %.6f; energies %.8g vs 2x %.8g", u[1].b1,
-              m[0].b1, u[1].energy1, 2 * m[0].energy1)));
+               m[0].b1, u[1].energy1, 2 * m[0].energy1)));
   CHECK(std::fabs(u[1].b1 - m[0].b1) < 1.5 * width(o.nodes, m[0].b1));
   CHECK(u[1].dir1 == -1);
   CHECK(std::fabs(u[1].energy1 / (2 * m[0].energy1) - 1) < 1e-2);
@@ -175,7 +177,7 @@ TEST_CASE("bem oracle: convergence with nodes and steps") {
     const double eE = std::fabs(a[0].energy1 / E - 1);
     const double eB = std::max({std::fabs(s[0].b1 - b1), std::fabs(s[0].b2 - b2), std::fabs(u[1].b1 - c)});
     MESSAGE((fmt("N = steps_per_unit = %g: energy rel err %.3g, max |b - exact| (same sign, unloading) %.3g; %.3f s",
-                n, eE, eB, t.s())));
+                 n, eE, eB, t.s())));
     CHECK(eE < prevE);
     CHECK(eB < prevB);
     prevE = eE;
@@ -207,7 +209,7 @@ TEST_CASE("bem oracle: proportional ray sigma = 3Q, Hertz, to Q = 0.88") {
   for (size_t k = kst; k < r.size(); ++k)
     if (r[k].dir1 == 1 && krev == r.size()) krev = k;
   MESSAGE((fmt("smallest b1 %.6f at Q = %.3f; first fully stuck at Q = %.3f; reverse slip from Q = %.3f", r[kmin].b1,
-              r[kmin].Q, kst < r.size() ? r[kst].Q : -1.0, krev < r.size() ? r[krev].Q : -1.0)));
+               r[kmin].Q, kst < r.size() ? r[kst].Q : -1.0, krev < r.size() ? r[krev].Q : -1.0)));
   CHECK(r[kmin].Q == doctest::Approx(0.46).epsilon(0.05));
   CHECK(r[kmin].b1 == doctest::Approx(0.942).epsilon(0.003));
   bool growing = true, receding = true, reversed = true, tiny = true, from06 = true;

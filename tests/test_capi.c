@@ -11,14 +11,14 @@
 static const double kPi = 3.14159265358979323846;
 
 static int passed = 0, failed = 0;
-#define CHECK(cond)                                                     \
-  do {                                                                  \
-    if (cond) {                                                         \
-      ++passed;                                                         \
-    } else {                                                            \
-      ++failed;                                                         \
+#define CHECK(cond)                                                            \
+  do {                                                                         \
+    if (cond) {                                                                \
+      ++passed;                                                                \
+    } else {                                                                   \
+      ++failed;                                                                \
       fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-    }                                                                   \
+    }                                                                          \
   } while (0)
 
 static hs_scene scene_qs(double q, double s) {
@@ -75,9 +75,9 @@ int main(void) {
     CHECK(fabs(sm.b1 - (sqrt(0.5) + 0.05)) < 1e-15);
     CHECK(fabs(sm.b2 - (sqrt(0.5) - 0.05)) < 1e-15);
     CHECK(sm.slip_dir1 == 1 && sm.slip_dir2 == 1);
-    x[0] = 0.0;       /* stick zone */
-    x[1] = 0.99;      /* slip zone 1 */
-    x[2] = -0.99;     /* slip zone 2 */
+    x[0] = 0.0;   /* stick zone */
+    x[1] = 0.99;  /* slip zone 1 */
+    x[2] = -0.99; /* slip zone 2 */
     CHECK(hs_eval_Bx(sol, 3, x, B) == HS_OK);
     CHECK(hs_eval_slip(sol, 3, x, h) == HS_OK);
     CHECK(hs_eval_work(sol, 3, x, W) == HS_OK);
@@ -145,13 +145,27 @@ int main(void) {
     CHECK(solve_status(scene_qs(-1.0, 0.0)) == HS_ERR_GROSS_SLIDING);
     CHECK(solve_status(scene_qs(NAN, 0.0)) == HS_ERR_NOT_FINITE);
     CHECK(solve_status(scene_qs(0.1, INFINITY)) == HS_ERR_NOT_FINITE);
-    sc = scene_qs(0.5, 0.2); sc.f = 0;       CHECK(solve_status(sc) == HS_ERR_BAD_FRICTION);
-    sc = scene_qs(0.5, 0.2); sc.f = -1;      CHECK(solve_status(sc) == HS_ERR_BAD_FRICTION);
-    sc = scene_qs(0.5, 0.2); sc.a = -1;      CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
-    sc = scene_qs(0.5, 0.2); sc.p0 = 0;      CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
-    sc = scene_qs(0.5, 0.2); sc.E_star = 0;  CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
-    sc = scene_qs(0.5, 0.2); sc.geometry = 99; CHECK(solve_status(sc) == HS_ERR_BAD_GEOMETRY);
-    sc = scene_qs(0.5, 0.2); sc.struct_size = 1; CHECK(solve_status(sc) == HS_ERR_STRUCT_SIZE);
+    sc = scene_qs(0.5, 0.2);
+    sc.f = 0;
+    CHECK(solve_status(sc) == HS_ERR_BAD_FRICTION);
+    sc = scene_qs(0.5, 0.2);
+    sc.f = -1;
+    CHECK(solve_status(sc) == HS_ERR_BAD_FRICTION);
+    sc = scene_qs(0.5, 0.2);
+    sc.a = -1;
+    CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
+    sc = scene_qs(0.5, 0.2);
+    sc.p0 = 0;
+    CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
+    sc = scene_qs(0.5, 0.2);
+    sc.E_star = 0;
+    CHECK(solve_status(sc) == HS_ERR_BAD_SIZE);
+    sc = scene_qs(0.5, 0.2);
+    sc.geometry = 99;
+    CHECK(solve_status(sc) == HS_ERR_BAD_GEOMETRY);
+    sc = scene_qs(0.5, 0.2);
+    sc.struct_size = 1;
+    CHECK(solve_status(sc) == HS_ERR_STRUCT_SIZE);
     {
       hs_options o;
       hs_options_default(&o);

@@ -64,7 +64,8 @@ TEST_CASE("C ABI input contract: every bad input has its status code and message
       // scene values
       {"Q/fP NaN", HS_ERR_NOT_FINITE, [] { return solve_status(scene([](hs_scene &s) { s.Q_over_fP = NaN; })); }},
       {"Q/fP +Inf", HS_ERR_NOT_FINITE, [] { return solve_status(scene([](hs_scene &s) { s.Q_over_fP = Inf; })); }},
-      {"sigma -Inf", HS_ERR_NOT_FINITE, [] { return solve_status(scene([](hs_scene &s) { s.sigma_over_fp0 = -Inf; })); }},
+      {"sigma -Inf", HS_ERR_NOT_FINITE,
+       [] { return solve_status(scene([](hs_scene &s) { s.sigma_over_fp0 = -Inf; })); }},
       {"a NaN", HS_ERR_NOT_FINITE, [] { return solve_status(scene([](hs_scene &s) { s.a = NaN; })); }},
       {"p0 Inf", HS_ERR_NOT_FINITE, [] { return solve_status(scene([](hs_scene &s) { s.p0 = Inf; })); }},
       {"E* NaN", HS_ERR_NOT_FINITE, [] { return solve_status(scene([](hs_scene &s) { s.E_star = NaN; })); }},
@@ -80,63 +81,211 @@ TEST_CASE("C ABI input contract: every bad input has its status code and message
       {"Q > fP", HS_ERR_GROSS_SLIDING, [] { return solve_status(scene([](hs_scene &s) { s.Q_over_fP = 1e300; })); }},
       {"geometry 0", HS_ERR_BAD_GEOMETRY, [] { return solve_status(scene([](hs_scene &s) { s.geometry = 0; })); }},
       {"geometry 99", HS_ERR_BAD_GEOMETRY, [] { return solve_status(scene([](hs_scene &s) { s.geometry = 99; })); }},
-      {"struct_size 0", HS_ERR_STRUCT_SIZE, [] { return solve_status(scene([](hs_scene &s) { s.struct_size = 0; })); }},
+      {"struct_size 0", HS_ERR_STRUCT_SIZE,
+       [] { return solve_status(scene([](hs_scene &s) { s.struct_size = 0; })); }},
       {"struct_size +8", HS_ERR_STRUCT_SIZE,
        [] { return solve_status(scene([](hs_scene &s) { s.struct_size = sizeof(hs_scene) + 8; })); }},
       // valid extremes: denormal and huge sizes solve; the unrepresentable stick zone is reported
       {"a denormal", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.a = Den; })); }},
-      {"a, p0 huge", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.a = Huge; s.p0 = Huge; })); }},
+      {"a, p0 huge", HS_OK,
+       [] {
+         return solve_status(scene([](hs_scene &s) {
+           s.a = Huge;
+           s.p0 = Huge;
+         }));
+       }},
       {"Q/fP denormal", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.Q_over_fP = Den; })); }},
       // issue 13: the Hertz solver carries ln(width), so a stick zone below the double range is answered
       {"sigma huge", HS_OK, [] { return solve_status(scene([](hs_scene &s) { s.sigma_over_fp0 = 1e300; })); }},
       // options
-      {"options struct_size", HS_ERR_STRUCT_SIZE, [&] { return with_opts([](hs_options &o) { o.struct_size = 1; }); }},
+      {"options struct_size", HS_ERR_STRUCT_SIZE,
+       [&] { return with_opts([](hs_options &o) { o.struct_size = 1; }); }},
       {"max_iterations 0", HS_ERR_BAD_OPTION, [&] { return with_opts([](hs_options &o) { o.max_iterations = 0; }); }},
-      {"max_iterations < 0", HS_ERR_BAD_OPTION, [&] { return with_opts([](hs_options &o) { o.max_iterations = -5; }); }},
+      {"max_iterations < 0", HS_ERR_BAD_OPTION,
+       [&] { return with_opts([](hs_options &o) { o.max_iterations = -5; }); }},
       {"rtol NaN", HS_ERR_BAD_OPTION, [&] { return with_opts([](hs_options &o) { o.rtol = NaN; }); }},
       {"rtol negative", HS_ERR_BAD_OPTION, [&] { return with_opts([](hs_options &o) { o.rtol = -1e-8; }); }},
       {"rtol too small", HS_ERR_BAD_OPTION, [&] { return with_opts([](hs_options &o) { o.rtol = 1e-20; }); }},
       {"rtol too large", HS_ERR_BAD_OPTION, [&] { return with_opts([](hs_options &o) { o.rtol = 0.5; }); }},
       // null pointers
-      {"solve scene NULL", HS_ERR_NULL_POINTER, [] { hs_solution *s = nullptr; return hs_solve(nullptr, nullptr, &s); }},
-      {"solve out NULL", HS_ERR_NULL_POINTER, [] { hs_scene s; hs_scene_default(&s); return hs_solve(&s, nullptr, nullptr); }},
+      {"solve scene NULL", HS_ERR_NULL_POINTER,
+       [] {
+         hs_solution *s = nullptr;
+         return hs_solve(nullptr, nullptr, &s);
+       }},
+      {"solve out NULL", HS_ERR_NULL_POINTER,
+       [] {
+         hs_scene s;
+         hs_scene_default(&s);
+         return hs_solve(&s, nullptr, nullptr);
+       }},
       {"scene_default NULL", HS_ERR_NULL_POINTER, [] { return hs_scene_default(nullptr); }},
       {"options_default NULL", HS_ERR_NULL_POINTER, [] { return hs_options_default(nullptr); }},
-      {"version NULL", HS_ERR_NULL_POINTER, [] { int a, b; return hs_version(&a, &b, nullptr); }},
-      {"summary NULL solution", HS_ERR_NULL_POINTER, [] { hs_summary m; m.struct_size = sizeof m; return hs_solution_summary(nullptr, &m); }},
+      {"version NULL", HS_ERR_NULL_POINTER,
+       [] {
+         int a, b;
+         return hs_version(&a, &b, nullptr);
+       }},
+      {"summary NULL solution", HS_ERR_NULL_POINTER,
+       [] {
+         hs_summary m;
+         m.struct_size = sizeof m;
+         return hs_solution_summary(nullptr, &m);
+       }},
       {"summary NULL out", HS_ERR_NULL_POINTER, [&] { return hs_solution_summary(good, nullptr); }},
-      {"summary struct_size", HS_ERR_STRUCT_SIZE, [&] { hs_summary m; m.struct_size = 0; return hs_solution_summary(good, &m); }},
+      {"summary struct_size", HS_ERR_STRUCT_SIZE,
+       [&] {
+         hs_summary m;
+         m.struct_size = 0;
+         return hs_solution_summary(good, &m);
+       }},
       {"energy NULL", HS_ERR_NULL_POINTER, [&] { return hs_solution_energy(good, nullptr); }},
-      {"energy NULL solution", HS_ERR_NULL_POINTER, [] { double e[2]; return hs_solution_energy(nullptr, e); }},
+      {"energy NULL solution", HS_ERR_NULL_POINTER,
+       [] {
+         double e[2];
+         return hs_solution_energy(nullptr, e);
+       }},
       // evaluations
       {"eval NULL solution", HS_ERR_NULL_POINTER, [&] { return hs_eval_Bx(nullptr, 2, x2, out2); }},
       {"eval NULL points", HS_ERR_NULL_POINTER, [&] { return hs_eval_slip(good, 2, nullptr, out2); }},
       {"eval NULL output", HS_ERR_NULL_POINTER, [&] { return hs_eval_work(good, 2, x2, nullptr); }},
       {"eval zero points", HS_OK, [&] { return hs_eval_pressure(good, 0, nullptr, nullptr); }},
-      {"eval point NaN", HS_ERR_NOT_FINITE, [&] { double x[2] = {0.5, NaN}; return hs_eval_Bx(good, 2, x, out2); }},
-      {"eval point Inf", HS_ERR_NOT_FINITE, [&] { double x[1] = {-Inf}; return hs_eval_slip(good, 1, x, out2); }},
-      {"eval point outside", HS_ERR_POINT_OUTSIDE, [&] { double x[2] = {0.5, 1.0000001}; return hs_eval_work(good, 2, x, out2); }},
-      {"eval point in stick zone", HS_OK, [&] { double x[1] = {0.0}; return hs_eval_Bx(good, 1, x, out2); }},
+      {"eval point NaN", HS_ERR_NOT_FINITE,
+       [&] {
+         double x[2] = {0.5, NaN};
+         return hs_eval_Bx(good, 2, x, out2);
+       }},
+      {"eval point Inf", HS_ERR_NOT_FINITE,
+       [&] {
+         double x[1] = {-Inf};
+         return hs_eval_slip(good, 1, x, out2);
+       }},
+      {"eval point outside", HS_ERR_POINT_OUTSIDE,
+       [&] {
+         double x[2] = {0.5, 1.0000001};
+         return hs_eval_work(good, 2, x, out2);
+       }},
+      {"eval point in stick zone", HS_OK,
+       [&] {
+         double x[1] = {0.0};
+         return hs_eval_Bx(good, 1, x, out2);
+       }},
       // dimensional helper
-      {"loads P = 0", HS_ERR_BAD_SIZE, [] { hs_scene s; return hs_scene_from_hertz_loads(0, 1, 1, 1, 0, 0, &s); }},
-      {"loads R < 0", HS_ERR_BAD_SIZE, [] { hs_scene s; return hs_scene_from_hertz_loads(1, -1, 1, 1, 0, 0, &s); }},
-      {"loads f = 0", HS_ERR_BAD_FRICTION, [] { hs_scene s; return hs_scene_from_hertz_loads(1, 1, 1, 0, 0, 0, &s); }},
-      {"loads Q NaN", HS_ERR_NOT_FINITE, [] { hs_scene s; return hs_scene_from_hertz_loads(1, 1, 1, 1, NaN, 0, &s); }},
-      {"loads |Q| >= fP", HS_ERR_GROSS_SLIDING, [] { hs_scene s; return hs_scene_from_hertz_loads(1, 1, 1, 0.5, 0.5, 0, &s); }},
-      {"loads overflow", HS_ERR_OVERFLOW, [] { hs_scene s; return hs_scene_from_hertz_loads(Huge, Huge, 1e-300, 1, 0, 0, &s); }},
+      {"loads P = 0", HS_ERR_BAD_SIZE,
+       [] {
+         hs_scene s;
+         return hs_scene_from_hertz_loads(0, 1, 1, 1, 0, 0, &s);
+       }},
+      {"loads R < 0", HS_ERR_BAD_SIZE,
+       [] {
+         hs_scene s;
+         return hs_scene_from_hertz_loads(1, -1, 1, 1, 0, 0, &s);
+       }},
+      {"loads f = 0", HS_ERR_BAD_FRICTION,
+       [] {
+         hs_scene s;
+         return hs_scene_from_hertz_loads(1, 1, 1, 0, 0, 0, &s);
+       }},
+      {"loads Q NaN", HS_ERR_NOT_FINITE,
+       [] {
+         hs_scene s;
+         return hs_scene_from_hertz_loads(1, 1, 1, 1, NaN, 0, &s);
+       }},
+      {"loads |Q| >= fP", HS_ERR_GROSS_SLIDING,
+       [] {
+         hs_scene s;
+         return hs_scene_from_hertz_loads(1, 1, 1, 0.5, 0.5, 0, &s);
+       }},
+      {"loads overflow", HS_ERR_OVERFLOW,
+       [] {
+         hs_scene s;
+         return hs_scene_from_hertz_loads(Huge, Huge, 1e-300, 1, 0, 0, &s);
+       }},
       {"loads NULL", HS_ERR_NULL_POINTER, [] { return hs_scene_from_hertz_loads(1, 1, 1, 1, 0, 0, nullptr); }},
       // reference backend
-      {"ref scene NULL", HS_ERR_NULL_POINTER, [] { hs_ref_solution *s = nullptr; return hs_ref_solve(nullptr, 20, &s); }},
-      {"ref digits 0", HS_ERR_BAD_OPTION, [] { hs_ref_scene s; hs_ref_scene_default(&s); hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 0, &o); }},
-      {"ref digits > max", HS_ERR_BAD_OPTION, [] { hs_ref_scene s; hs_ref_scene_default(&s); hs_ref_solution *o = nullptr; return hs_ref_solve(&s, hs_ref_max_digits() + 1, &o); }},
-      {"ref bad decimal", HS_ERR_BAD_NUMBER, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.sigma_over_fp0 = "1.2.3"; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
-      {"ref nan text", HS_ERR_BAD_NUMBER, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.Q_over_fP = "nan"; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
-      {"ref empty text", HS_ERR_BAD_NUMBER, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.a = ""; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
-      {"ref gross sliding", HS_ERR_GROSS_SLIDING, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.Q_over_fP = "-1.5"; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
-      {"ref a = 0", HS_ERR_BAD_SIZE, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.a = "0"; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
-      {"ref dimensional incomplete", HS_ERR_NULL_POINTER, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.P = "1"; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
-      {"ref struct_size", HS_ERR_STRUCT_SIZE, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.struct_size = 3; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
-      {"ref geometry", HS_ERR_BAD_GEOMETRY, [] { hs_ref_scene s; hs_ref_scene_default(&s); s.geometry = 7; hs_ref_solution *o = nullptr; return hs_ref_solve(&s, 20, &o); }},
+      {"ref scene NULL", HS_ERR_NULL_POINTER,
+       [] {
+         hs_ref_solution *s = nullptr;
+         return hs_ref_solve(nullptr, 20, &s);
+       }},
+      {"ref digits 0", HS_ERR_BAD_OPTION,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 0, &o);
+       }},
+      {"ref digits > max", HS_ERR_BAD_OPTION,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, hs_ref_max_digits() + 1, &o);
+       }},
+      {"ref bad decimal", HS_ERR_BAD_NUMBER,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.sigma_over_fp0 = "1.2.3";
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
+      {"ref nan text", HS_ERR_BAD_NUMBER,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.Q_over_fP = "nan";
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
+      {"ref empty text", HS_ERR_BAD_NUMBER,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.a = "";
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
+      {"ref gross sliding", HS_ERR_GROSS_SLIDING,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.Q_over_fP = "-1.5";
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
+      {"ref a = 0", HS_ERR_BAD_SIZE,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.a = "0";
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
+      {"ref dimensional incomplete", HS_ERR_NULL_POINTER,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.P = "1";
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
+      {"ref struct_size", HS_ERR_STRUCT_SIZE,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.struct_size = 3;
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
+      {"ref geometry", HS_ERR_BAD_GEOMETRY,
+       [] {
+         hs_ref_scene s;
+         hs_ref_scene_default(&s);
+         s.geometry = 7;
+         hs_ref_solution *o = nullptr;
+         return hs_ref_solve(&s, 20, &o);
+       }},
   };
   std::set<std::string> names;
   for (const auto &r : rows) {

@@ -62,8 +62,12 @@ TEST_CASE("traction: Hertz closed form (same sign) = the generic stick-zone solu
   for (double q : {0.1, 0.5, 0.95})
     for (double s : {0.0, 0.1, -0.3}) {
       hertz_scene<double> sc;
-      sc.q = q; sc.s = s;
-      sc.a = 1.3; sc.p0 = 2.0; sc.f = 0.4; sc.Estar = 5;
+      sc.q = q;
+      sc.s = s;
+      sc.a = 1.3;
+      sc.p0 = 2.0;
+      sc.f = 0.4;
+      sc.Estar = 5;
       const auto sol = solve_hertz(sc);
       if (sol.reg != regime::same_sign) continue;
       double worst = 0;
@@ -71,19 +75,27 @@ TEST_CASE("traction: Hertz closed form (same sign) = the generic stick-zone solu
         const double x = -sc.a + 2 * sc.a * i / 400.0;
         worst = std::max(worst, std::fabs(sol.traction(x) - sol.traction_generic(x)));
       }
-      CAPTURE(q); CAPTURE(s);
+      CAPTURE(q);
+      CAPTURE(s);
       CHECK(worst <= 64 * hs_test::eps<double>() * sc.f * sc.p0);
     }
 }
 
 TEST_CASE("traction: Hertz in every regime (continuity, |q| <= fp, resultant, no-slip relation)") {
-  struct c { double q, s; };
+  struct c {
+    double q, s;
+  };
   for (c k : {c{0.3, 0.0}, c{0.6, 0.2}, c{-0.4, 0.5}, c{0.5, 1.5}, c{0.5, -3.0}, c{0.9, 2.0}, c{0.2, 0.8}}) {
     hertz_scene<double> sc;
-    sc.q = k.q; sc.s = k.s;
-    sc.a = 0.7; sc.p0 = 3.0; sc.f = 0.6; sc.Estar = 2;
+    sc.q = k.q;
+    sc.s = k.s;
+    sc.a = 0.7;
+    sc.p0 = 3.0;
+    sc.f = 0.6;
+    sc.Estar = 2;
     const auto sol = solve_hertz(sc);
-    CAPTURE(k.q); CAPTURE(k.s);
+    CAPTURE(k.q);
+    CAPTURE(k.s);
     const double P = M_PI * sc.a * sc.p0 / 2;
     check_traction(sol, k.q * sc.f * P, k.s * sc.f * sc.p0, 1e-9);
   }
@@ -93,7 +105,8 @@ TEST_CASE("traction: flat rounded punch in both regimes") {
   for (double s : {0.1, 2.0}) {
     flat_rounded_pressure<double> pm(0.5);
     general_scene<double> sc;
-    sc.q = 0.5; sc.s = s;
+    sc.q = 0.5;
+    sc.s = s;
     const auto sol = solve_general<double>(pm, sc);
     CAPTURE(s);
     const double P = M_PI * sc.a * sc.p0 / 2;
@@ -104,7 +117,11 @@ TEST_CASE("traction: flat rounded punch in both regimes") {
 TEST_CASE("fields: Hertz closed forms = Flamant quadrature, near the surface and at the edges") {
   for (double s : {0.0, 0.3, -0.2}) {
     hertz_scene<double> sc;
-    sc.q = 0.5; sc.s = s; sc.a = 1.2; sc.p0 = 1.5; sc.f = 0.5;
+    sc.q = 0.5;
+    sc.s = s;
+    sc.a = 1.2;
+    sc.p0 = 1.5;
+    sc.f = 0.5;
     const auto sol = solve_hertz(sc);
     const auto cl = hertz_state(sol), nu = make_state<double>(sol);
     double worst = 0;
@@ -123,7 +140,8 @@ TEST_CASE("fields: Hertz closed forms = Flamant quadrature, near the surface and
 TEST_CASE("fields: McEwen full-sliding check of the closed form (surface sigma_xx = -p - 2 f x p0 / a inside)") {
   // q -> f p when the stick zone vanishes: use the semi-ellipse pieces directly.
   contact_state<double> st;
-  st.a = 1; st.p = [](double x) { return std::sqrt(1 - x * x); };
+  st.a = 1;
+  st.p = [](double x) { return std::sqrt(1 - x * x); };
   st.q = [](double x) { return 0.3 * std::sqrt(1 - x * x); };
   st.closed = [](const std::complex<double> &z, cauchy_pair<double> &P, cauchy_pair<double> &Q) {
     add_semi_ellipse(1.0, 1.0, 0.0, z, P);
@@ -145,18 +163,27 @@ TEST_CASE("fields: McEwen full-sliding check of the closed form (surface sigma_x
 
 TEST_CASE("fields: surface limit, equilibrium at depth and far field (Hertz opposite sign, flat punch)") {
   hertz_scene<double> sc;
-  sc.q = 0.5; sc.s = 2.0; sc.a = 1.2; sc.p0 = 1.5; sc.f = 0.5;
+  sc.q = 0.5;
+  sc.s = 2.0;
+  sc.a = 1.2;
+  sc.p0 = 1.5;
+  sc.f = 0.5;
   const auto hs_ = solve_hertz(sc);
   flat_rounded_pressure<double> pm(0.5);
   general_scene<double> gs;
-  gs.q = 0.4; gs.s = 1.0; gs.a = 0.8; gs.p0 = 2.0; gs.f = 0.7;
+  gs.q = 0.4;
+  gs.s = 1.0;
+  gs.a = 0.8;
+  gs.p0 = 2.0;
+  gs.f = 0.7;
   const auto gsol = solve_general<double>(pm, gs);
   auto run = [](const contact_state<double> &st, double P, double Q, double scale) {
     // surface limit: sigma_xx(x, y -> 0) -> surface_sxx (difference O(y/a) inside, O(sqrt(y/a)) at the edges)
     for (int body : {1, 2})
       for (double u : {-2.0, -0.7, 0.1, 0.6, 1.6}) {
         const double x = u * st.a;
-        CAPTURE(body); CAPTURE(u);
+        CAPTURE(body);
+        CAPTURE(u);
         CHECK(std::fabs(stress_at(st, body, x, 1e-9 * st.a).xx - surface_sxx(st, body, x)) < 1e-6 * scale);
       }
     // equilibrium: on the line y = h, int sigma_yy dx = -P and int sigma_xy dx = -Q in body 1,
@@ -203,7 +230,8 @@ TEST_CASE("fields: surface limit, equilibrium at depth and far field (Hertz oppo
 
 TEST_CASE("fields: in the stick zone both bodies have the same surface sigma_xx; bulk split") {
   hertz_scene<double> sc;
-  sc.q = 0.3; sc.s = 0.4;
+  sc.q = 0.3;
+  sc.s = 0.4;
   const auto sol = solve_hertz(sc);
   const auto st = hertz_state(sol, 0.25);  // the pad carries 0.25, the specimen sigma + 0.25
   CHECK(st.bulk1 - st.bulk2 == doctest::Approx(0.4));
@@ -213,12 +241,17 @@ TEST_CASE("fields: in the stick zone both bodies have the same surface sigma_xx;
   CHECK(std::fabs(surface_sxx(st, 2, -1e6) - st.bulk2) < 1e-6);
 }
 
-TEST_CASE("fields: Hertz same-sign trailing-edge peak, sigma_xx(-a) = 2 f p0 sqrt(d2 (a + b1))/a + sigma1 - sigma/2") {
+TEST_CASE(
+    "fields: Hertz same-sign trailing-edge peak, sigma_xx(-a) = 2 f p0 sqrt(d2 (a + b1))/a + sigma1 - sigma/2") {
   // From the closed form: (2/pi) int q/(x - t) at x = -a is 2 f p0 (e - sqrt((a+e)^2 - c^2))/a, e = sigma/(4 f p0) a.
   // (Ciavarella & Macina 2003 give the same peak; their paper was not at hand to compare term by term.)
   for (double s : {0.0, 0.2, 0.5}) {
     hertz_scene<double> sc;
-    sc.q = 0.6; sc.s = s; sc.a = 1.5; sc.p0 = 2.0; sc.f = 0.3;
+    sc.q = 0.6;
+    sc.s = s;
+    sc.a = 1.5;
+    sc.p0 = 2.0;
+    sc.f = 0.3;
     const auto sol = solve_hertz(sc);
     REQUIRE(sol.reg == regime::same_sign);
     const auto st = hertz_state(sol);
@@ -234,19 +267,40 @@ TEST_CASE("fields: Hertz same-sign trailing-edge peak, sigma_xx(-a) = 2 f p0 sqr
 
 // ---- cached panels (field_panels.hpp): the fast path of the C ABI ----------------------
 
-TEST_CASE("panels: Hertz closed forms = cached panels, at y = 1e-6 a, at the edges, the stick boundaries and "
-          "the middle of each piece") {
+TEST_CASE(
+    "panels: Hertz closed forms = cached panels, at y = 1e-6 a, at the edges, the stick boundaries and "
+    "the middle of each piece") {
   for (double s : {0.0, 0.3, -0.2}) {
     hertz_scene<double> sc;
-    sc.q = 0.5; sc.s = s; sc.a = 1.2; sc.p0 = 1.5; sc.f = 0.5;
+    sc.q = 0.5;
+    sc.s = s;
+    sc.a = 1.2;
+    sc.p0 = 1.5;
+    sc.f = 0.5;
     const auto sol = solve_hertz(sc);
     REQUIRE(sol.reg == regime::same_sign);
     const auto cl = hertz_state(sol);
     auto nu = make_state<double>(sol);  // no closed forms: the panels
     nu.panels = make_panels(nu);
     const double b1 = sol.b1(), b2 = sol.b2();
-    std::vector<double> xs{-3.0, -1.2, -1.19999, -1.0, -0.3, 0.0, 0.7, 1.19, 1.2, 1.2000001, 2.0,
-                           b1, -b2, (b1 - b2) / 2, (b1 + 1.2) / 2, (-b2 - 1.2) / 2, b1 + 1e-7, -b2 - 1e-7};
+    std::vector<double> xs{-3.0,
+                           -1.2,
+                           -1.19999,
+                           -1.0,
+                           -0.3,
+                           0.0,
+                           0.7,
+                           1.19,
+                           1.2,
+                           1.2000001,
+                           2.0,
+                           b1,
+                           -b2,
+                           (b1 - b2) / 2,
+                           (b1 + 1.2) / 2,
+                           (-b2 - 1.2) / 2,
+                           b1 + 1e-7,
+                           -b2 - 1e-7};
     double worst = 0;
     for (int body : {1, 2})
       for (double x : xs)
@@ -291,7 +345,8 @@ TEST_CASE("panels: flat punch and Hertz opposite sign against quadrature from sc
           const auto A = stress_at(st, body, x, z * st.a), B = stress_at(slow, body, x, z * st.a);
           worst = std::max({worst, std::fabs(A.xx - B.xx), std::fabs(A.yy - B.yy), std::fabs(A.xy - B.xy)});
         }
-    CHECK(worst <= 1024 * hs_test::eps<double>() * scale);  // measured 2.4e-14 (2e-11 before the slow path graded its kinks)
+    CHECK(worst <=
+          1024 * hs_test::eps<double>() * scale);  // measured 2.4e-14 (2e-11 before the slow path graded its kinks)
     st.hilbert_fast = false;
     st.stick_lo = st.stick_hi = 0;
     double ws = 0;
@@ -305,13 +360,18 @@ TEST_CASE("panels: flat punch and Hertz opposite sign against quadrature from sc
   flat_rounded_pressure<double> pm(0.5);
   for (double s : {0.1, 2.0}) {
     general_scene<double> sc;
-    sc.q = 0.5; sc.s = s;
+    sc.q = 0.5;
+    sc.s = s;
     const auto sol = solve_general<double>(pm, sc);
     CAPTURE(s);
     run(general_state_of(sol), sc.p0);
   }
   hertz_scene<double> hc;
-  hc.q = 0.5; hc.s = 2.0; hc.a = 1.2; hc.p0 = 1.5; hc.f = 0.5;
+  hc.q = 0.5;
+  hc.s = 2.0;
+  hc.a = 1.2;
+  hc.p0 = 1.5;
+  hc.f = 0.5;
   const auto hsol = solve_hertz(hc);
   REQUIRE(hsol.reg == regime::opposite_sign);
   auto st = hertz_state(hsol);
@@ -323,7 +383,8 @@ TEST_CASE("panels: surface limit at the contact edges, the stick boundaries and 
   // the subsurface field tends to the surface values: sigma_yy -> -p, sigma_xy -> -q
   flat_rounded_pressure<double> pm(0.5);
   general_scene<double> sc;
-  sc.q = 0.5; sc.s = 0.1;
+  sc.q = 0.5;
+  sc.s = 0.1;
   const auto sol = solve_general<double>(pm, sc);
   auto st = general_state_of(sol);
   st.panels = make_panels(st);
@@ -362,21 +423,25 @@ TEST_CASE("panels: q on the stick zone as a Chebyshev series in theta (flat punc
   flat_rounded_pressure<double> pm(0.5);
   for (double s : {0.1, 2.0}) {
     general_scene<double> sc;
-    sc.q = 0.5; sc.s = s;
+    sc.q = 0.5;
+    sc.s = s;
     const auto sol = solve_general<double>(pm, sc);
     CAPTURE(s);
     check(general_state_of(sol), sc.f * sc.p0);
   }
   hertz_scene<double> hc;
-  hc.q = 0.5; hc.s = 2.0;
+  hc.q = 0.5;
+  hc.s = 2.0;
   const auto hsol = solve_hertz(hc);
   check(make_state<double>(hsol), hc.f * hc.p0);
   // a tiny slip zone puts a singularity next to the real theta axis: no series (q is used directly)
   hertz_scene<double> tc;
-  tc.q = 1e-4; tc.s = 0.0;  // d1 = d2 = 5e-5 a
+  tc.q = 1e-4;
+  tc.s = 0.0;  // d1 = d2 = 5e-5 a
   const auto tsol = solve_hertz(tc);
   const auto tst = make_state<double>(tsol);
   stick_series<double> tser(tst.q, tst.stick_lo, tst.stick_hi);
-  CAPTURE(tsol.d1()); CAPTURE(tsol.d2());
+  CAPTURE(tsol.d1());
+  CAPTURE(tsol.d2());
   CHECK(!tser.ok());
 }

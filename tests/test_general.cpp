@@ -30,8 +30,8 @@
 namespace core = hs::core;
 namespace ref = hs::reference;
 using LD = long double;
-using mp50 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>,
-                                           boost::multiprecision::et_off>;
+using mp50 =
+    boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>, boost::multiprecision::et_off>;
 const double EPS = std::numeric_limits<double>::epsilon();  // 2.2e-16
 const LD EPS_LD = std::numeric_limits<LD>::epsilon();       // 1.1e-19
 // residual floor of a long double solution (64 eps pi (1 + |s|)): the bound on
@@ -139,7 +139,8 @@ TEST_CASE("pressure models: normalisation int p = pi/2, sqrt edges, Hertz limits
   // flat-rounded: continuous at the kink, p(x) from the original formula
   for (LD x : {0.1L, 0.5L, 0.95L}) {
     const LD ph0 = std::asin(0.3L), ph = std::asin(x);
-    const LD br = (pi - 2 * ph0) * std::cos(ph) + std::sin(ph) * std::log(std::abs(std::sin(ph + ph0) / std::sin(ph - ph0))) +
+    const LD br = (pi - 2 * ph0) * std::cos(ph) +
+                  std::sin(ph) * std::log(std::abs(std::sin(ph + ph0) / std::sin(ph - ph0))) +
                   std::sin(ph0) * std::log(std::abs(std::tan((ph + ph0) / 2) * std::tan((ph - ph0) / 2)));
     // both sides: sums of O(1) logarithmic terms in long double, each a few eps
     // (the direct formula is evaluated in the type under test too): 64 eps
@@ -153,12 +154,13 @@ TEST_CASE("pressure models: normalisation int p = pi/2, sqrt edges, Hertz limits
 // ---------------------------------------------------------------------------
 TEST_CASE("Hertz through the general path matches the closed forms in every regime") {
   core::hertz_pressure<double> hp;
-  struct sc { double q, s; };
+  struct sc {
+    double q, s;
+  };
   const double e34 = std::pow(EPS, 0.75);
-  const std::vector<sc> scenes{
-      {0.3, 0.2},  {0.7, 0.5},   {0.95, 0.1}, {0.3, 0.0},  {0.999, 0.0}, {0.0, 0.5},  {0.0, 3.0},
-      {0.6, 1.5},  {0.9, 3.0},   {0.2, 5.0},  {0.5, 20.0}, {-0.4, 0.3},  {0.4, -2.0}, {-0.6, -1.0},
-      {0.05, 0.09}, {1e-6, 1e-6}, {0.8, 2.21}};
+  const std::vector<sc> scenes{{0.3, 0.2},  {0.7, 0.5},   {0.95, 0.1},  {0.3, 0.0},   {0.999, 0.0}, {0.0, 0.5},
+                               {0.0, 3.0},  {0.6, 1.5},   {0.9, 3.0},   {0.2, 5.0},   {0.5, 20.0},  {-0.4, 0.3},
+                               {0.4, -2.0}, {-0.6, -1.0}, {0.05, 0.09}, {1e-6, 1e-6}, {0.8, 2.21}};
   for (const auto &c : scenes) {
     CAPTURE(c.q);
     CAPTURE(c.s);
@@ -198,9 +200,19 @@ TEST_CASE("Hertz through the general path matches the closed forms in every regi
 TEST_CASE("Hertz general path is dimensionally consistent (a, p0, f, E*)") {
   core::hertz_pressure<double> hp;
   core::general_scene<double> sc;
-  sc.a = 2.5; sc.p0 = 3; sc.f = 0.4; sc.Estar = 7; sc.q = 0.5; sc.s = 0.8;
+  sc.a = 2.5;
+  sc.p0 = 3;
+  sc.f = 0.4;
+  sc.Estar = 7;
+  sc.q = 0.5;
+  sc.s = 0.8;
   core::hertz_scene<double> hs;
-  hs.a = 2.5; hs.p0 = 3; hs.f = 0.4; hs.Estar = 7; hs.q = 0.5; hs.s = 0.8;
+  hs.a = 2.5;
+  hs.p0 = 3;
+  hs.f = 0.4;
+  hs.Estar = 7;
+  hs.q = 0.5;
+  hs.s = 0.8;
   const auto g = core::solve_general(hp, sc);
   const auto h = core::solve_hertz(hs);
   CHECK(std::abs(g.b1() - h.b1()) < 450 * EPS * 2.5);
@@ -304,7 +316,9 @@ TEST_CASE("Ciavarella-Jager: stick half-width = contact half-width under P(1 - Q
 
 // ---------------------------------------------------------------------------
 TEST_CASE("flat-rounded and power law: double vs long double, and the raw side conditions") {
-  struct sc { double q, s; };
+  struct sc {
+    double q, s;
+  };
   const std::vector<sc> scenes{{0.4, 0.1}, {0.4, 0.5}, {0.4, 2.0}, {0.8, 1.0}, {0.2, 6.0}, {0.0, 1.0}, {0.9, 0.05}};
   for (double bf : {0.3, 0.7, 0.95}) {
     core::flat_rounded_pressure<double> md(bf);
@@ -358,7 +372,9 @@ TEST_CASE("MPFR 50 digits: flat-rounded and power law agree with long double") {
   // and the 50-digit solution satisfies its own 2n-order residual far below double eps
   // (absolute figure: the quadrature order is doubled until two orders agree to
   // eps^(3/4) ~ 1e-37 of the 50-digit type; 1e-40 checks it converged well past that)
-  const auto r = core::general_residual<mp50>(fm, q, s, core::general_state<mp50>{a.reg == core::regime::opposite_sign ? mp50(-a.delta1) : a.delta1, a.width}, 2 * a.order, false);
+  const auto r = core::general_residual<mp50>(
+      fm, q, s, core::general_state<mp50>{a.reg == core::regime::opposite_sign ? mp50(-a.delta1) : a.delta1, a.width},
+      2 * a.order, false);
   CHECK(abs(r.F1) < mp50("1e-40"));
   CHECK(abs(r.F2) < mp50("1e-40"));
   const auto c = gsolve<mp50>(pm, q, mp50("0.3"));
@@ -380,7 +396,10 @@ namespace {
 // sqrt(d - u) at the contact edge), Gauss-Legendre of order 48 per piece;
 // the principal value subtracts G(theta_x) (PV int_0^{pi/2} dth/(sin^2 th - c) = 0).
 template <class T> T traction(const core::general_solution<T> &g, const T &q, const T &s, const T &x) {
-  using std::asin; using std::cos; using std::sin; using std::sqrt;
+  using std::asin;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
   const T pi = boost::math::constants::pi<T>();
   const auto rule = core::gauss_legendre<T>(48);
   T sum = 0;
@@ -432,7 +451,10 @@ template <class T> T traction(const core::general_solution<T> &g, const T &q, co
       const T Gx = G(thx);
       const T s2x = sin(thx) * sin(thx);
       // xi - x = z d (sin^2 th - sin^2 thx)
-      auto f = [&](const T &th) { const T sn = sin(th); return (G(th) - Gx) / (z * d * (sn * sn - s2x)); };
+      auto f = [&](const T &th) {
+        const T sn = sin(th);
+        return (G(th) - Gx) / (z * d * (sn * sn - s2x));
+      };
       sum += gl(T(0), thx, f) + gl(thx, pi / 2, f);
     }
   }
@@ -444,7 +466,10 @@ template <class T> T traction(const core::general_solution<T> &g, const T &q, co
 TEST_CASE("full traction: |q| <= f p in the stick zone, q = +-f p in the slip zones") {
   core::flat_rounded_pressure<double> fr(0.6);
   core::power_law_pressure<double> pl(3);
-  struct sc { const core::pressure_model<double> *m; double q, s; };
+  struct sc {
+    const core::pressure_model<double> *m;
+    double q, s;
+  };
   for (const auto &c : std::vector<sc>{{&fr, 0.5, 0.3}, {&fr, 0.4, 3.0}, {&pl, 0.6, 1.5}}) {
     CAPTURE(c.q);
     CAPTURE(c.s);
@@ -525,15 +550,24 @@ TEST_CASE("sampled and callback pressures: Hertz reproduced, bad pressures rejec
     CHECK(std::abs(g.b1() - h.b1()) < 450 * EPS);
     CHECK(std::abs(g.b2() - h.b2()) < 450 * EPS);
   }
-  struct ud { double a; };
+  struct ud {
+    double a;
+  };
   ud u{1.0};
   core::callback_pressure<double> cb2(
-      [](const double &x, void *p) { const double A = static_cast<ud *>(p)->a; return std::sqrt((A - x) * (A + x)); },
+      [](const double &x, void *p) {
+        const double A = static_cast<ud *>(p)->a;
+        return std::sqrt((A - x) * (A + x));
+      },
       &u, 1.0);
   CHECK(std::abs(cb2.p0() - 2 / M_PI * M_PI / 2) < 450 * EPS);
 
   auto code_of = [](auto f) {
-    try { f(); } catch (const core::error &e) { return e.code(); }
+    try {
+      f();
+    } catch (const core::error &e) {
+      return e.code();
+    }
     return core::status::ok;
   };
   // negative pressure
@@ -562,7 +596,8 @@ TEST_CASE("sampled and callback pressures: Hertz reproduced, bad pressures rejec
   }
   // callback negative inside
   CHECK(code_of([&] {
-          core::callback_pressure<double>([&](const double &x) { return std::sqrt(a * a - x * x) * (x > 0.5 ? -1 : 1); }, a);
+          core::callback_pressure<double>(
+              [&](const double &x) { return std::sqrt(a * a - x * x) * (x > 0.5 ? -1 : 1); }, a);
         }) == core::status::bad_geometry);
   // bad models
   CHECK(code_of([] { core::power_law_pressure<double>(1.0); }) == core::status::bad_geometry);
@@ -636,10 +671,14 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
   core::flat_rounded_pressure<LD> fl(0.45L);
   core::power_law_pressure<double> pd(1.5);
   core::power_law_pressure<LD> pl(1.5L);
-  struct sc { const core::pressure_model<double> *md; const core::pressure_model<LD> *ml; double q, s; };
+  struct sc {
+    const core::pressure_model<double> *md;
+    const core::pressure_model<LD> *ml;
+    double q, s;
+  };
   // (the adaptive references cost ~0.3 s each: four scenes, both regimes, two geometries)
-  for (const auto &c : std::vector<sc>{{&fd, &fl, 1e-3, 3e-4}, {&fd, &fl, 0.5, 0.15}, {&fd, &fl, 0.4, 2.0},
-                                       {&pd, &pl, 0.6, 0.18}}) {
+  for (const auto &c :
+       std::vector<sc>{{&fd, &fl, 1e-3, 3e-4}, {&fd, &fl, 0.5, 0.15}, {&fd, &fl, 0.4, 2.0}, {&pd, &pl, 0.6, 0.18}}) {
     CAPTURE(c.q);
     CAPTURE(c.s);
     const auto g = gsolve<double>(*c.md, c.q, c.s);

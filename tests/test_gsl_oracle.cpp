@@ -89,9 +89,8 @@ void record(int status, const char *what, double abserr) {
 }
 
 // int_a^b f(x) (x-a)^alpha (b-x)^beta dx
-template <class F>
-double qaws(const F &f, double a, double b, double alpha, double beta, double epsabs, double epsrel,
-            workspace &ws, double *abserr = nullptr) {
+template <class F> double qaws(const F &f, double a, double b, double alpha, double beta, double epsabs,
+                               double epsrel, workspace &ws, double *abserr = nullptr) {
   gsl_integration_qaws_table *t = gsl_integration_qaws_table_alloc(alpha, beta, 0, 0);
   gsl_function gf{&trampoline<F>, const_cast<F *>(&f)};
   double r = 0, e = 0;
@@ -295,7 +294,10 @@ struct lib_solution {
   lib_solution(int kind, double param, double q, double s) {
     hs_scene sc;
     hs_scene_default(&sc);
-    sc.a = 1; sc.p0 = 1; sc.f = 1; sc.E_star = 1;
+    sc.a = 1;
+    sc.p0 = 1;
+    sc.f = 1;
+    sc.E_star = 1;
     sc.Q_over_fP = q;
     sc.sigma_over_fp0 = s;
     hs_geometry g;
@@ -314,7 +316,9 @@ struct lib_solution {
   lib_solution &operator=(const lib_solution &) = delete;
 };
 
-struct load { double q, s; };
+struct load {
+  double q, s;
+};
 const std::vector<load> loads{{0.3, 0.0}, {0.6, 0.2}, {0.2, 1.0}, {0.9, 0.5}, {0.5, 3.0}, {0.0, 0.8}};
 
 struct geom {
@@ -356,9 +360,9 @@ TEST_CASE("gsl oracle: power-law inversion reproduces Hertz at n = 2, normalisat
   CHECK(sub <= 1e-11);
   // normalisation of every oracle pressure: int p_hat = pi/2 (QAWS, weight sqrt at both edges)
   workspace ws;
-  for (const geom &g : {geom{HS_GEOMETRY_FLAT_ROUNDED, 0.2}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.5},
-                        geom{HS_GEOMETRY_FLAT_ROUNDED, 0.8}, geom{HS_GEOMETRY_POWER_LAW, 1.5},
-                        geom{HS_GEOMETRY_POWER_LAW, 3.0}, geom{HS_GEOMETRY_POWER_LAW, 5.0}}) {
+  for (const geom &g :
+       {geom{HS_GEOMETRY_FLAT_ROUNDED, 0.2}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.5}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.8},
+        geom{HS_GEOMETRY_POWER_LAW, 1.5}, geom{HS_GEOMETRY_POWER_LAW, 3.0}, geom{HS_GEOMETRY_POWER_LAW, 5.0}}) {
     const auto pm = make_oracle(g);
     std::vector<double> cuts{-1, 1};
     for (double k : pm->kinks()) cuts.push_back(k);
@@ -382,9 +386,9 @@ TEST_CASE("gsl oracle: power-law inversion reproduces Hertz at n = 2, normalisat
 
 TEST_CASE("gsl oracle: independent pressures agree with hs_eval_pressure") {
   g_stats = {};
-  for (const geom &g : {geom{HS_GEOMETRY_FLAT_ROUNDED, 0.2}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.5},
-                        geom{HS_GEOMETRY_FLAT_ROUNDED, 0.8}, geom{HS_GEOMETRY_POWER_LAW, 1.5},
-                        geom{HS_GEOMETRY_POWER_LAW, 3.0}, geom{HS_GEOMETRY_POWER_LAW, 5.0}}) {
+  for (const geom &g :
+       {geom{HS_GEOMETRY_FLAT_ROUNDED, 0.2}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.5}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.8},
+        geom{HS_GEOMETRY_POWER_LAW, 1.5}, geom{HS_GEOMETRY_POWER_LAW, 3.0}, geom{HS_GEOMETRY_POWER_LAW, 5.0}}) {
     const auto pm = make_oracle(g);
     lib_solution sol(g.kind, g.param, 0.3, 0.0);
     REQUIRE(sol.status == HS_OK);
@@ -404,7 +408,10 @@ TEST_CASE("gsl oracle: independent pressures agree with hs_eval_pressure") {
     for (size_t i = 0; i < xs.size(); ++i) {
       const double mine = pm->p_hat(xs[i]);
       const double rel = std::fabs(lib[i] - mine) / mine;
-      if (!(rel <= worst)) { worst = rel; xw = xs[i]; }
+      if (!(rel <= worst)) {
+        worst = rel;
+        xw = xs[i];
+      }
     }
     MESSAGE(kind_name(g.kind) << " = " << g.param << ": max relative difference of p " << worst << " at x = " << xw);
     CHECK(worst <= 1e-11);
@@ -415,9 +422,9 @@ TEST_CASE("gsl oracle: independent pressures agree with hs_eval_pressure") {
 TEST_CASE("gsl oracle: the library's b1, b2 satisfy the side conditions by QAWS, and b1 + 1e-7 does not") {
   g_stats = {};
   workspace ws;
-  for (const geom &g : {geom{HS_GEOMETRY_FLAT_ROUNDED, 0.2}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.5},
-                        geom{HS_GEOMETRY_FLAT_ROUNDED, 0.8}, geom{HS_GEOMETRY_POWER_LAW, 1.5},
-                        geom{HS_GEOMETRY_POWER_LAW, 3.0}, geom{HS_GEOMETRY_POWER_LAW, 5.0}}) {
+  for (const geom &g :
+       {geom{HS_GEOMETRY_FLAT_ROUNDED, 0.2}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.5}, geom{HS_GEOMETRY_FLAT_ROUNDED, 0.8},
+        geom{HS_GEOMETRY_POWER_LAW, 1.5}, geom{HS_GEOMETRY_POWER_LAW, 3.0}, geom{HS_GEOMETRY_POWER_LAW, 5.0}}) {
     const auto pm = make_oracle(g);
     double worst = 0, weakest_teeth = HUGE_VAL;
     for (const load &L : loads) {
@@ -437,11 +444,12 @@ TEST_CASE("gsl oracle: the library's b1, b2 satisfy the side conditions by QAWS,
       weakest_teeth = std::min(weakest_teeth, rp);
       CHECK(rp > 1e-10);
       MESSAGE(kind_name(g.kind) << " = " << g.param << ", q = " << L.q << ", s = " << L.s << ": regime "
-                                << std::string(S.regime == HS_REGIME_SAME_SIGN ? "same" : "opposite") << ", b1 = " << S.b1
-                                << ", b2 = " << S.b2 << ", |F|/(pi(1+s)) = " << r << ", with b1 + 1e-7: " << rp);
+                                << std::string(S.regime == HS_REGIME_SAME_SIGN ? "same" : "opposite")
+                                << ", b1 = " << S.b1 << ", b2 = " << S.b2 << ", |F|/(pi(1+s)) = " << r
+                                << ", with b1 + 1e-7: " << rp);
     }
-    MESSAGE(kind_name(g.kind) << " = " << g.param << ": max |F|/(pi(1+s)) = " << worst
-                              << ", smallest perturbed " << weakest_teeth);
+    MESSAGE(kind_name(g.kind) << " = " << g.param << ": max |F|/(pi(1+s)) = " << worst << ", smallest perturbed "
+                              << weakest_teeth);
   }
   MESSAGE("largest QAWS error estimate of a zone integral: " << g_stats.max_abserr);
   CHECK_MESSAGE(g_stats.failures == 0, g_stats.last);
@@ -456,7 +464,8 @@ TEST_CASE("gsl oracle: Ciavarella-Jager, shear only: b1 = b2 = half-width under 
       LD lo = bf, hi = 1;
       for (int it = 0; it < 200; ++it) {
         const LD c = (lo + hi) / 2;
-        if (c * c * flat_oracle::load_factor(LD(bf) / c) < target) lo = c; else hi = c;
+        if (c * c * flat_oracle::load_factor(LD(bf) / c) < target) lo = c;
+        else hi = c;
       }
       const double c = double((lo + hi) / 2);
       lib_solution sol(HS_GEOMETRY_FLAT_ROUNDED, bf, q, 0.0);

@@ -261,7 +261,9 @@ TEST_CASE("symmetries: (Q, sigma) -> (-Q, -sigma) and mirror sigma -> -sigma") {
 
 // ---------------------------------------------------------------------------
 TEST_CASE("B_x against eqs (4)/(5) by quadrature, both regimes (and eq 21's Sign(x))") {
-  struct Case { double q, s; };
+  struct Case {
+    double q, s;
+  };
   // includes q > 3/4 near the boundary, where b2 < 0 and the left slip zone reaches x > 0
   for (Case c : {Case{0.5, 0.2}, Case{0.9, 2.5}, Case{0.3, 2.0}, Case{0.0, 1.0}, Case{0.95, 6.0}, Case{0.6, -3.0}}) {
     const auto sol = solve(c.q, c.s);
@@ -298,8 +300,8 @@ TEST_CASE("slip h: closed form (same sign) and quadrature (opposite sign) agains
         if (!(d > 0)) continue;
         const double xs = z == 1 ? sol.b1() : -sol.b2();
         const double x = z == 1 ? xs + t * d : xs - t * d;
-        const LD I = ref::integrate<LD>([&](LD u, LD, LD) { return LD(sol.Bx(double(u))); },
-                                        LD(std::min(xs, x)), LD(std::max(xs, x)));
+        const LD I = ref::integrate<LD>([&](LD u, LD, LD) { return LD(sol.Bx(double(u))); }, LD(std::min(xs, x)),
+                                        LD(std::max(xs, x)));
         const double h = z == 1 ? double(I) : -double(I);
         CHECK(abs_eps<double>(sol.slip(x), h, std::abs(sol.slip(z == 1 ? 1.0 : -1.0))) < 64);
         // slip has the sign of the zone's slip direction, W >= 0
@@ -440,14 +442,16 @@ TEST_CASE("printed eqs (23)/(24) against quadrature of (11)/(12); corrected form
 // ---------------------------------------------------------------------------
 TEST_CASE("threads: many threads solving different scenes give bitwise the single-thread results") {
   hs_test::rng r(31);
-  struct scene { double q, s; };
+  struct scene {
+    double q, s;
+  };
   std::vector<scene> scenes;
   for (int i = 0; i < 64; ++i) scenes.push_back({r.uniform(-0.95, 0.95), r.uniform(-6, 6)});
   auto digest = [](const scene &c) {
     const auto sol = solve(c.q, c.s);
     const double x1 = sol.b1() + 0.5 * sol.d1(), x2 = -sol.b2() - 0.5 * sol.d2();
-    return std::vector<double>{sol.b1(), sol.b2(), sol.d1(), sol.d2(), sol.Bx(x1), sol.Bx(x2), sol.slip(x1),
-                               sol.slip(x2), sol.energy(1), sol.energy(2)};
+    return std::vector<double>{sol.b1(),   sol.b2(),     sol.d1(),     sol.d2(),      sol.Bx(x1),
+                               sol.Bx(x2), sol.slip(x1), sol.slip(x2), sol.energy(1), sol.energy(2)};
   };
   std::vector<std::vector<double>> serial;
   for (const auto &c : scenes) serial.push_back(digest(c));
@@ -488,7 +492,8 @@ TEST_CASE("eq (12): the integrands need the factor s (erratum E10)") {
     };
     // right-hand side of (12): pi sigma (b1 - b2)/8 - Q, with Q = pi q / 2 here
     const LD rhs = pi * s * (b1 - b2) / 8 - pi * q / 2;
-    CAPTURE(q); CAPTURE(s);
+    CAPTURE(q);
+    CAPTURE(s);
     CHECK(std::abs(double(lhs(1) - rhs)) < 1e-13);  // corrected: holds
     CHECK(std::abs(double(lhs(0) - rhs)) > 1e-2);   // as printed: fails
   }

@@ -179,11 +179,14 @@ TEST_CASE("history: the proportional ray sigma/fp0 = 3 Q/fP recedes, re-sticks a
   double bmin = 2, qmin = 0;
   int first_rev = -1;
   for (size_t i = 0; i < vs.size(); ++i) {
-    if (vs[i].dir1 == -1 && vs[i].b1 < bmin) { bmin = vs[i].b1; qmin = vs[i].q; }
+    if (vs[i].dir1 == -1 && vs[i].b1 < bmin) {
+      bmin = vs[i].b1;
+      qmin = vs[i].q;
+    }
     if (first_rev < 0 && vs[i].dir1 == +1) first_rev = int(i);
   }
-  MESSAGE("zone 1 smallest stick end b1 = " << bmin << " at Q/fP = " << qmin << "; slips +1 from Q/fP = "
-                                            << (first_rev >= 0 ? vs[first_rev].q : -1));
+  MESSAGE("zone 1 smallest stick end b1 = " << bmin << " at Q/fP = " << qmin
+                                            << "; slips +1 from Q/fP = " << (first_rev >= 0 ? vs[first_rev].q : -1));
   CHECK(qmin == doctest::Approx(0.46).epsilon(0.03));
   CHECK(bmin == doctest::Approx(0.942).epsilon(1e-3));
   REQUIRE(first_rev >= 0);
@@ -200,7 +203,8 @@ TEST_CASE("history: the proportional ray sigma/fp0 = 3 Q/fP recedes, re-sticks a
     // 4e-3 a at 400 elements and close in on ours as the mesh refines (0.9663, 0.9694, 0.9693 at
     // 400/800/1600 elements against 0.9702 at Q/fP = 0.48): a band of 5e-3 a in that phase
     const bool receding = vs[i].dir1 == -1 && vs[i].q > qmin + 1e-9;
-    const double w1 = receding ? 5e-3 : M_PI / bem_nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
+    const double w1 = receding ? 5e-3
+                               : M_PI / bem_nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b1 * vs[i].b1)) * 1.5 + 1e-4;
     const double w2 = M_PI / bem_nodes * std::sqrt(std::max(1e-4, 1 - vs[i].b2 * vs[i].b2)) * 1.5 + 1e-4;
     CAPTURE(vs[i].q);
     CHECK(std::fabs(vs[i].b1 - bem[i].b1) < w1);
@@ -290,7 +294,7 @@ TEST_CASE("history: degenerate vertices and bad input") {
   CHECK(z.b1 < 1);
   double lock = 0;
   for (double x : {-0.3, 0.0, 0.3}) lock = std::max(lock, std::fabs(h.slip(x, z.step_end)));
-  CHECK(lock == 0);  // the central stick zone never slipped
+  CHECK(lock == 0);                                // the central stick zone never slipped
   CHECK(std::fabs(h.slip(0.99, z.step_end)) > 0);  // the edge keeps slip
   CHECK_THROWS_AS(h.add_vertex(1.0, 0), error);
   CHECK_THROWS_AS(h.add_vertex(std::nan(""), 0), error);
@@ -321,8 +325,8 @@ TEST_CASE("history: ramp_recedes finds where e = 2/lambda along the ray") {
   CHECK(at == doctest::Approx(0.4603).epsilon(1e-3));
   // the march recedes exactly there: dir -1 zone stops advancing at that Q/fP
   CHECK(std::fabs(mono(at, 3 * at).half_width() - 2.0 / 3) < 1e-12);
-  CHECK(!ramp_recedes<double>(0.5, 0.5, e_of, at));   // lambda = 1 < 2: never
-  CHECK(!ramp_recedes<double>(0.2, 0.6, e_of, at));   // lambda = 3, but e(0.2) > 2/3
+  CHECK(!ramp_recedes<double>(0.5, 0.5, e_of, at));  // lambda = 1 < 2: never
+  CHECK(!ramp_recedes<double>(0.2, 0.6, e_of, at));  // lambda = 3, but e(0.2) > 2/3
   CHECK(ramp_recedes<double>(-0.88, -2.64, e_of, at));
   CHECK(at == doctest::Approx(-0.4603).epsilon(1e-3));
 }

@@ -23,7 +23,8 @@
 
 namespace core = hs::core;
 namespace ref = hs::reference;
-using mp80 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<80>, boost::multiprecision::et_off>;
+using mp80 =
+    boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<80>, boost::multiprecision::et_off>;
 
 namespace {
 
@@ -114,7 +115,10 @@ TEST_CASE("double fast path against the reference at 40 digits, 200 random scene
 }
 
 TEST_CASE("reference against the raw-integral oracle at 80 digits: side conditions to 1e-45") {
-  struct Case { const char *q, *s; int sR; };
+  struct Case {
+    const char *q, *s;
+    int sR;
+  };
   // same sign, opposite sign, bulk only, near sliding
   for (Case c : {Case{"0.5", "0.2", 1}, Case{"0.3", "2", -1}, Case{"0", "1", -1}, Case{"0.9", "3.5", -1},
                  Case{"0.99", "0.5", 1}}) {
@@ -144,8 +148,8 @@ TEST_CASE("certification is honest: claimed digits agree with a run at twice the
         if (qu == ref::quantity::energy1 && lo.value(ref::quantity::d1).text[0] == '0') continue;
         const auto a = lo.value(qu), b = hi.value(qu);
         const int agree = ref::agreeing_digits(a.text, b.text, N);
-        CHECK_MESSAGE(a.digits <= agree, "q=" << q << " s=" << s << " quantity " << int(qu) << ": claims "
-                                               << a.digits << ", agrees to " << agree);
+        CHECK_MESSAGE(a.digits <= agree, "q=" << q << " s=" << s << " quantity " << int(qu) << ": claims " << a.digits
+                                              << ", agrees to " << agree);
         ++checked;
       }
     }
@@ -174,7 +178,9 @@ TEST_CASE("two threads at different precisions give the results they give alone"
   const std::string alone40 = run(40), alone150 = run(hi_digits);
   for (int rep = 0; rep < 3; ++rep) {
     std::string r40, r150;
-    std::thread a([&] { for (int k = 0; k < 3; ++k) r40 = run(40); });
+    std::thread a([&] {
+      for (int k = 0; k < 3; ++k) r40 = run(40);
+    });
     std::thread b([&] { r150 = run(hi_digits); });
     a.join();
     b.join();
@@ -223,13 +229,17 @@ TEST_CASE("stability sweeps towards every failure region: double within its boun
   // zone that is itself a small difference of the inputs (near the regime
   // boundary) is only defined to absolute accuracy eps a by them.
   const double eps = 2.220446049250313e-16;
-  struct Case { double q, s; const char *what; };
+  struct Case {
+    double q, s;
+    const char *what;
+  };
   std::vector<Case> cases;
   for (double d = 1e-1; d >= 1e-15; d /= 10) cases.push_back({d * (2 - d), 0.0, "tiny slip zone (Q only)"});
   for (double omq = 1e-3; omq >= 1e-15; omq /= 100) cases.push_back({1 - omq, 0.0, "near sliding (Q only)"});
   for (double q : {0.01, 0.3, 0.75, 0.9, 0.999}) {
     const double sb = boundary_s(q);
-    for (double rel : {-1e-12, -1e-15, 1e-15, 1e-12, 1e-9, 1e-6}) cases.push_back({q, sb * (1 + rel), "regime boundary"});
+    for (double rel : {-1e-12, -1e-15, 1e-15, 1e-12, 1e-9, 1e-6})
+      cases.push_back({q, sb * (1 + rel), "regime boundary"});
     for (double ds : {0.1, 1.0, 4.0, 8.0}) cases.push_back({q, sb + ds, "towards k -> 1 (large sigma)"});
   }
   for (const auto &c : cases) {
@@ -241,8 +251,10 @@ TEST_CASE("stability sweeps towards every failure region: double within its boun
     CHECK(std::isfinite(dsol.b2()));
     const ref::solution rsol(text(c.q, c.s), 30);
     CHECK(rsol.regime() == int(dsol.reg));
-    const double b1 = to_double(rsol.value(ref::quantity::b1).text), b2 = to_double(rsol.value(ref::quantity::b2).text);
-    const double d1 = to_double(rsol.value(ref::quantity::d1).text), d2 = to_double(rsol.value(ref::quantity::d2).text);
+    const double b1 = to_double(rsol.value(ref::quantity::b1).text),
+                 b2 = to_double(rsol.value(ref::quantity::b2).text);
+    const double d1 = to_double(rsol.value(ref::quantity::d1).text),
+                 d2 = to_double(rsol.value(ref::quantity::d2).text);
     CHECK(std::abs(dsol.b1() - b1) <= 8 * eps);
     CHECK(std::abs(dsol.b2() - b2) <= 8 * eps);
     CHECK(std::abs(dsol.d1() - d1) <= 8 * eps + 16 * eps * d1);
@@ -262,11 +274,11 @@ struct geom {
 };
 
 const std::vector<geom> &general_geometries() {
-  static const std::vector<geom> g{{ref::geometry_flat_rounded, "0"},   {ref::geometry_flat_rounded, "0.3"},
-                                   {ref::geometry_flat_rounded, "0.5"}, {ref::geometry_flat_rounded, "0.8"},
+  static const std::vector<geom> g{{ref::geometry_flat_rounded, "0"},    {ref::geometry_flat_rounded, "0.3"},
+                                   {ref::geometry_flat_rounded, "0.5"},  {ref::geometry_flat_rounded, "0.8"},
                                    {ref::geometry_flat_rounded, "0.95"}, {ref::geometry_power_law, "1.5"},
-                                   {ref::geometry_power_law, "2"},      {ref::geometry_power_law, "3"},
-                                   {ref::geometry_power_law, "4.5"},    {ref::geometry_power_law, "7"}};
+                                   {ref::geometry_power_law, "2"},       {ref::geometry_power_law, "3"},
+                                   {ref::geometry_power_law, "4.5"},     {ref::geometry_power_law, "7"}};
   return g;
 }
 
@@ -300,7 +312,9 @@ TEST_CASE("general pressures: double solve_general against the reference at 40 d
   // The reference is the work run of a 40-digit request (the 50-digit tier;
   // its certification against the next tier is tested below, on fewer scenes:
   // it triples the cost).
-  struct load { const char *q, *s; };
+  struct load {
+    const char *q, *s;
+  };
   const std::vector<load> loads{{"0.3", "0"}, {"0.05", "0.01"}, {"0.99", "0.5"},
                                 {"0.2", "1"}, {"0.5", "4"},     {"0.4", "-2"}};
   double worst_b = 0, worst_d = 0, worst_E = 0;
@@ -360,7 +374,7 @@ TEST_CASE("general pressures: double solve_general against the reference at 40 d
     }
   }
   MESSAGE(n << " scenes (" << regimes[1] << " same sign, " << regimes[2] << " opposite sign): max error in eps: b "
-             << worst_b << ", d (rel) " << worst_d << ", energy (rel) " << worst_E);
+            << worst_b << ", d (rel) " << worst_d << ", energy (rel) " << worst_E);
   CHECK(regimes[1] >= 15);
   CHECK(regimes[2] >= 15);
 }
@@ -369,7 +383,10 @@ TEST_CASE("general pressures: power law n = 2 and flat punch b_f = 0 reproduce t
   // Both pressures are exactly Hertz: the general solver (Gauss-Legendre
   // inversion) must meet the closed forms (elliptic integrals) to >= 35 of 40
   // requested digits, and certify them.
-  struct load { const char *q, *s; bool energies; };
+  struct load {
+    const char *q, *s;
+    bool energies;
+  };
   for (const load &l : {load{"0.3", "0.5", true}, load{"0.3", "2", false}, load{"0.9", "3.5", false}}) {
     ref::text_scene th;
     th.q = l.q;
@@ -399,7 +416,11 @@ TEST_CASE("general pressures: certification is honest (40 digits against a run a
   // The claimed digits of a 40-digit request (work tier 50, check tier 80)
   // are compared with the work run of an 80-digit request (tier 120), which
   // is independent of both.
-  struct sc { geom g; const char *q, *s; bool energies; };
+  struct sc {
+    geom g;
+    const char *q, *s;
+    bool energies;
+  };
   // (Energies at 120 digits cost 1.5-8 s per scene: the two cheapest.)
   for (const sc &c : {sc{{ref::geometry_flat_rounded, "0.95"}, "0.05", "0.01", true},
                       sc{{ref::geometry_power_law, "7"}, "0.3", "0", true},
@@ -446,7 +467,8 @@ TEST_CASE("reference C ABI: geometry fields, contract rows") {
       {HS_GEOMETRY_POWER_LAW, nullptr, "1000", nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "n = 1000"},
       {HS_GEOMETRY_POWER_LAW, "junk", "3", nullptr, 20, 0, HS_OK, "the other parameter is ignored"},
       {HS_GEOMETRY_POWER_LAW, nullptr, nullptr, nullptr, 20, 0, HS_OK, "default n = 2"},
-      {HS_GEOMETRY_FLAT_ROUNDED, "0.5", nullptr, "1000", 20, 0, HS_ERR_BAD_GEOMETRY, "dimensional input is Hertz only"},
+      {HS_GEOMETRY_FLAT_ROUNDED, "0.5", nullptr, "1000", 20, 0, HS_ERR_BAD_GEOMETRY,
+       "dimensional input is Hertz only"},
       {HS_GEOMETRY_SAMPLES, nullptr, nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "samples"},
       {HS_GEOMETRY_CALLBACK, nullptr, nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "callback"},
       {0, nullptr, nullptr, nullptr, 20, 0, HS_ERR_BAD_GEOMETRY, "geometry 0"},

@@ -42,7 +42,12 @@ truth hertz_truth(const hs_scene &sc) {
   std::snprintf(E, 64, "%.45e", sc.E_star);
   std::snprintf(q, 64, "%.45e", sc.Q_over_fP);
   std::snprintf(s, 64, "%.45e", sc.sigma_over_fp0);
-  r.a = a; r.p0 = p0; r.f = f; r.E_star = E; r.Q_over_fP = q; r.sigma_over_fp0 = s;
+  r.a = a;
+  r.p0 = p0;
+  r.f = f;
+  r.E_star = E;
+  r.Q_over_fP = q;
+  r.sigma_over_fp0 = s;
   hs_ref_solution *sol = nullptr;
   REQUIRE(hs_ref_solve(&r, 40, &sol) == HS_OK);
   auto get = [&](int what) {
@@ -60,7 +65,12 @@ truth general_truth(int kind, double par, const hs_scene &sc) {
   if (kind == HS_GEOMETRY_FLAT_ROUNDED) pm.reset(new core::flat_rounded_pressure<long double>(par));
   else pm.reset(new core::power_law_pressure<long double>(par));
   core::general_scene<long double> g;
-  g.a = sc.a; g.p0 = sc.p0; g.f = sc.f; g.Estar = sc.E_star; g.q = sc.Q_over_fP; g.s = sc.sigma_over_fp0;
+  g.a = sc.a;
+  g.p0 = sc.p0;
+  g.f = sc.f;
+  g.Estar = sc.E_star;
+  g.q = sc.Q_over_fP;
+  g.s = sc.sigma_over_fp0;
   const auto sol = core::solve_general(*pm, g);
   // long double carries the quadrature estimate's form with its own epsilon
   // (docs/models.md): 16 eps_LD (1 + a/d_min + 1/w), w the stick width / a, times 4
@@ -114,8 +124,10 @@ struct scene_case {
 std::vector<scene_case> sweep(int n_per_geometry) {
   std::mt19937 rng(20261122);
   std::uniform_real_distribution<double> U(0, 1);
-  const std::vector<std::pair<int, double>> geos = {{HS_GEOMETRY_HERTZ, 0},         {HS_GEOMETRY_FLAT_ROUNDED, 0.45},
-                                                    {HS_GEOMETRY_FLAT_ROUNDED, 0.75}, {HS_GEOMETRY_POWER_LAW, 2.5},
+  const std::vector<std::pair<int, double>> geos = {{HS_GEOMETRY_HERTZ, 0},
+                                                    {HS_GEOMETRY_FLAT_ROUNDED, 0.45},
+                                                    {HS_GEOMETRY_FLAT_ROUNDED, 0.75},
+                                                    {HS_GEOMETRY_POWER_LAW, 2.5},
                                                     {HS_GEOMETRY_POWER_LAW, 4.0}};
   std::vector<scene_case> v;
   for (const auto &g : geos)
@@ -142,20 +154,26 @@ TEST_CASE("every model's error estimate is honest: true error <= estimate across
   int small_asymptotic = 0, checked = 0;
   for (const auto &c : sweep(24)) {
     const truth t = c.kind == HS_GEOMETRY_HERTZ ? hertz_truth(c.sc) : general_truth(c.kind, c.par, c.sc);
-    std::vector<std::pair<int, double>> models = {{HS_MODEL_ASYMPTOTIC, 0}, {HS_MODEL_QUADRATURE, 0},
-                                                  {HS_MODEL_QUADRATURE, 1e-8}};
+    std::vector<std::pair<int, double>> models = {
+        {HS_MODEL_ASYMPTOTIC, 0}, {HS_MODEL_QUADRATURE, 0}, {HS_MODEL_QUADRATURE, 1e-8}};
     if (c.kind == HS_GEOMETRY_HERTZ) models.push_back({HS_MODEL_CLOSED_FORM, 0});
     for (const auto &m : models) {
       hs_solution *sol = nullptr;
       const int st = solve(c.kind, c.par, c.sc, m.first, m.second, &sol);
-      CAPTURE(c.kind); CAPTURE(c.par); CAPTURE(c.sc.Q_over_fP); CAPTURE(c.sc.sigma_over_fp0);
-      CAPTURE(m.first); CAPTURE(m.second);
+      CAPTURE(c.kind);
+      CAPTURE(c.par);
+      CAPTURE(c.sc.Q_over_fP);
+      CAPTURE(c.sc.sigma_over_fp0);
+      CAPTURE(m.first);
+      CAPTURE(m.second);
       if (m.first == HS_MODEL_ASYMPTOTIC && st == HS_ERR_NOT_APPLICABLE) continue;  // zones cover the contact
       REQUIRE(st == HS_OK);
       const auto s = summary(sol);
       CHECK(s.model == m.first);
       const double err = true_error(sol, t);
-      CAPTURE(err); CAPTURE(s.error_estimate); CAPTURE(t.bound);
+      CAPTURE(err);
+      CAPTURE(s.error_estimate);
+      CAPTURE(t.bound);
       CHECK(err <= s.error_estimate + t.bound);
       ++checked;
       if (m.first == HS_MODEL_ASYMPTOTIC && s.error_estimate < 1e-2) ++small_asymptotic;
@@ -184,7 +202,9 @@ TEST_CASE("closed-form and quadrature estimates near the failure regions: d/a ->
     const truth t = hertz_truth(sc);
     for (int model : {HS_MODEL_CLOSED_FORM, HS_MODEL_QUADRATURE}) {
       hs_solution *sol = nullptr;
-      CAPTURE(p.first); CAPTURE(p.second); CAPTURE(model);
+      CAPTURE(p.first);
+      CAPTURE(p.second);
+      CAPTURE(model);
       REQUIRE(solve(HS_GEOMETRY_HERTZ, 0, sc, model, 0, &sol) == HS_OK);
       const double err = true_error(sol, t);
       CAPTURE(err);
@@ -203,7 +223,11 @@ TEST_CASE("HS_MODEL_AUTO: the cheapest model that meets rtol, and the result mee
       if (c.kind != HS_GEOMETRY_HERTZ && rtol < 1e-10) continue;
       hs_solution *sol = nullptr;
       const int st = solve(c.kind, c.par, c.sc, HS_MODEL_AUTO, rtol, &sol);
-      CAPTURE(c.kind); CAPTURE(c.par); CAPTURE(c.sc.Q_over_fP); CAPTURE(c.sc.sigma_over_fp0); CAPTURE(rtol);
+      CAPTURE(c.kind);
+      CAPTURE(c.par);
+      CAPTURE(c.sc.Q_over_fP);
+      CAPTURE(c.sc.sigma_over_fp0);
+      CAPTURE(rtol);
       if (st == HS_ERR_TOLERANCE) {
         // only when no double model and no reference covers the geometry
         CHECK(c.kind != HS_GEOMETRY_HERTZ);
@@ -213,7 +237,8 @@ TEST_CASE("HS_MODEL_AUTO: the cheapest model that meets rtol, and the result mee
       const auto s = summary(sol);
       CHECK(s.error_estimate <= rtol);
       const double err = true_error(sol, t);
-      CAPTURE(err); CAPTURE(s.model);
+      CAPTURE(err);
+      CAPTURE(s.model);
       CHECK(err <= rtol + t.bound);
       // cheapest: the asymptotic model is used whenever its estimate meets rtol
       hs_solution *asy = nullptr;
@@ -228,10 +253,12 @@ TEST_CASE("HS_MODEL_AUTO: the cheapest model that meets rtol, and the result mee
   }
 }
 
-TEST_CASE("HS_MODEL_AUTO below the double models' floor: the reference backend, for the flat punch and the power law too") {
+TEST_CASE(
+    "HS_MODEL_AUTO below the double models' floor: the reference backend, for the flat punch and the power law too") {
   // d1, d2 certified and rounded to double (error <= 2^-53); energies are
   // left out here (certified MPFR energies of the general path take seconds)
-  for (const auto &g : std::vector<std::pair<int, double>>{{HS_GEOMETRY_FLAT_ROUNDED, 0.45}, {HS_GEOMETRY_POWER_LAW, 3.0}}) {
+  for (const auto &g :
+       std::vector<std::pair<int, double>>{{HS_GEOMETRY_FLAT_ROUNDED, 0.45}, {HS_GEOMETRY_POWER_LAW, 3.0}}) {
     hs_scene sc;
     hs_scene_default(&sc);
     sc.Q_over_fP = 0.4;
@@ -245,7 +272,8 @@ TEST_CASE("HS_MODEL_AUTO below the double models' floor: the reference backend, 
     CHECK(s.model == HS_MODEL_REFERENCE);
     CHECK(s.error_estimate == std::ldexp(1.0, -53));
     const double err = true_error(sol, t);
-    CAPTURE(err); CAPTURE(t.bound);
+    CAPTURE(err);
+    CAPTURE(t.bound);
     CHECK(err <= s.error_estimate + t.bound);
     // points go through the reference too: B_x agrees with the double quadrature
     hs_solution *dq = nullptr;

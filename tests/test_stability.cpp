@@ -106,7 +106,8 @@ TEST_CASE("issue 13: Hertz scenes whose stick zone is below the double range are
   };
   for (const given g : {given{0.99999, 100, 4.109559542135504e-4}, given{0.5, 3000, 0.596027246700483},
                         given{0.5, 10000, 0.596027246700483}}) {
-    CAPTURE(g.q); CAPTURE(g.s);
+    CAPTURE(g.q);
+    CAPTURE(g.s);
     hs_solution *sol = nullptr;
     REQUIRE(solve_geometry(HS_GEOMETRY_HERTZ, 0, g.q, g.s, HS_MODEL_DEFAULT, &sol) == HS_OK);  // was HS_ERR_OVERFLOW
     const auto s = summary(sol);
@@ -130,10 +131,14 @@ TEST_CASE("issue 13: Hertz either side of where the stick zone leaves the double
       sc.q = q;
       sc.s = s;
       const auto h = core::solve_hertz(sc);
-      if (h.width > 0) { prev = s; continue; }
+      if (h.width > 0) {
+        prev = s;
+        continue;
+      }
       REQUIRE(prev > 0);
       for (double sv : {prev, s}) {
-        CAPTURE(q); CAPTURE(sv);
+        CAPTURE(q);
+        CAPTURE(sv);
         hs_solution *sol = nullptr;
         REQUIRE(solve_geometry(HS_GEOMETRY_HERTZ, 0, q, sv, HS_MODEL_DEFAULT, &sol) == HS_OK);
         const auto sm = summary(sol);
@@ -141,7 +146,8 @@ TEST_CASE("issue 13: Hertz either side of where the stick zone leaves the double
         REQUIRE(hs_solution_energy(sol, E) == HS_OK);
         const ref_values t = hertz_reference(q, sv);
         const double err = std::max({rel(sm.d1, t.d1), rel(sm.d2, t.d2), rel(E[0], t.e1), rel(E[1], t.e2)});
-        CAPTURE(err); CAPTURE(sm.error_estimate);
+        CAPTURE(err);
+        CAPTURE(sm.error_estimate);
         CHECK(err <= sm.error_estimate);
         ++checked;
         hs_solution_free(sol);
@@ -163,13 +169,15 @@ TEST_CASE("issue 13: flat punch at large bulk tension follows the sliding stick 
     const double dinf = sliding_d(pm, q);
     for (double s : {50.0, 100.0, 200.0, 1000.0}) {
       if (bf == 0.99 && s == 1000.0) continue;  // width below the double range: OVERFLOW (tested below)
-      CAPTURE(bf); CAPTURE(s);
+      CAPTURE(bf);
+      CAPTURE(s);
       hs_solution *sol = nullptr;
       REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, bf, q, s, HS_MODEL_DEFAULT, &sol) == HS_OK);
       const auto sm = summary(sol);
       CHECK(sm.regime == HS_REGIME_OPPOSITE_SIGN);
       const double w = sm.b1 + sm.b2;
-      CAPTURE(w); CAPTURE(sm.error_estimate);
+      CAPTURE(w);
+      CAPTURE(sm.error_estimate);
       // the landed code estimated 1.4e-3 at sigma = 50 (1/width conditioning)
       CHECK(sm.error_estimate < 1e-13);
       CHECK(std::abs(sm.d1 - dinf) <= sm.error_estimate * sm.d1 + w / 2 + 1e-17);
@@ -193,7 +201,8 @@ TEST_CASE("issue 13: cel_log continues cel below the switch") {
   // where both are defined, the small-modulus form equals cel to rounding
   for (double p : {1e-6, 0.01, 1.0, 2.0, 50.0})
     for (double kc : {1e-10, 1e-14, 1e-30, 1e-150}) {
-      CAPTURE(p); CAPTURE(kc);
+      CAPTURE(p);
+      CAPTURE(kc);
       const double a = core::cel(kc, p, 0.0, 1.0), b = core::cel_log(kc, std::log(kc), p, 0.0, 1.0);
       CHECK(std::abs(a - b) <= 16 * 2.2e-16 * std::abs(a));
       const double c = core::cel(kc, p, 1.0, 1.0), d = core::cel_log(kc, std::log(kc), p, 1.0, 1.0);
@@ -231,8 +240,11 @@ TEST_CASE("issue 13: domain sweep of the double paths" * doctest::skip()) {
       const auto t0 = std::chrono::steady_clock::now();
       const int st = solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, bf, 0.3, s, HS_MODEL_DEFAULT, &sol);
       tmax = std::max(tmax, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      if (st == HS_OK) { ++ok; last_ok = s; hs_solution_free(sol); }
-      else if (st == HS_ERR_OVERFLOW) ++overflow;
+      if (st == HS_OK) {
+        ++ok;
+        last_ok = s;
+        hs_solution_free(sol);
+      } else if (st == HS_ERR_OVERFLOW) ++overflow;
       else ++other;
     }
     std::printf("  b_f/a = %-5g: %d solved (up to sigma/fp0 = %.4g), %d OVERFLOW, %d other; slowest %.2f s\n", bf, ok,

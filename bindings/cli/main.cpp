@@ -137,7 +137,6 @@ void check(int st, const std::string &what) {
   if (st != HS_OK) die(what + ": " + hs_strerror(st));
 }
 
-
 using Args = std::map<std::string, std::string>;
 
 // Edit distance, ignoring case (for "did you mean").
@@ -165,7 +164,10 @@ size_t edit_distance(const std::string &a, const std::string &b) {
   for (const auto *list : {&keys, &flags})
     for (const auto &k : *list) {
       const size_t d = edit_distance(a, k);
-      if (d < bd) { bd = d; best = k; }
+      if (d < bd) {
+        bd = d;
+        best = k;
+      }
     }
   const size_t tol = std::max<size_t>(2, a.size() / 4);
   die("unknown option '" + a + "'" + (bd <= tol ? "; did you mean " + best + "?" : "") + " (see halfslip --help)");
@@ -181,8 +183,9 @@ std::string command_line(int argc, char **argv, const std::vector<std::string> &
       if (key == a && i + 1 < argc) ++i;  // "--key value": skip the value too
       continue;
     }
-    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                         "0123456789_./:=,+-@%") == std::string::npos;
+    const bool plain = !a.empty() && a.find_first_not_of(
+                                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_./:=,+-@%") == std::string::npos;
     if (!plain) {  // shell-quoted, so that the line can be run again
       std::string q = "'";
       for (const char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -265,11 +268,30 @@ std::string json_escape(const std::string &s) {
 }
 
 // ---------------------------------------------------------------- solve
-const std::vector<std::string> kSolveKeys = {"--geometry", "--Q-over-fP", "--sigma-over-fp0", "--a", "--p0", "--f",
-                                             "--E-star", "--P", "--R", "--Q", "--sigma", "--points", "--digits",
-                                             "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
-                                             "--rtol", "--model", "--A",
-                                             "--pad-bulk", "--fields", "--nu", "--fields-at"};  // issue 15
+const std::vector<std::string> kSolveKeys = {"--geometry",
+                                             "--Q-over-fP",
+                                             "--sigma-over-fp0",
+                                             "--a",
+                                             "--p0",
+                                             "--f",
+                                             "--E-star",
+                                             "--P",
+                                             "--R",
+                                             "--Q",
+                                             "--sigma",
+                                             "--points",
+                                             "--digits",
+                                             "--flat-over-a",
+                                             "--flat-width",
+                                             "--exponent",
+                                             "--pressure-file",
+                                             "--rtol",
+                                             "--model",
+                                             "--A",
+                                             "--pad-bulk",
+                                             "--fields",
+                                             "--nu",
+                                             "--fields-at"};  // issue 15
 
 // Pressure samples (--pressure-file): two columns x p per line, separated by
 // whitespace or one comma; '#' starts a comment; blank lines are skipped; the
@@ -364,8 +386,9 @@ samples read_samples(const std::string &path) {
     }
     header_allowed = false;
     if (fl.size() != 2)
-      bad_sample(s, ln, std::to_string(fl.size()) + " column" + (fl.size() == 1 ? "" : "s") +
-                            ", expected 2 (x p, separated by spaces, tabs or one comma)");
+      bad_sample(s, ln,
+                 std::to_string(fl.size()) + " column" + (fl.size() == 1 ? "" : "s") +
+                     ", expected 2 (x p, separated by spaces, tabs or one comma)");
     if (!xnum) bad_sample(s, ln, "x '" + fl[0] + "' is not a number");
     if (!is_number(fl[1], p)) bad_sample(s, ln, "p '" + fl[1] + "' is not a number");
     if (std::isnan(x) || std::isnan(p)) bad_sample(s, ln, std::string(std::isnan(x) ? "x" : "p") + " is NaN");
@@ -373,16 +396,18 @@ samples read_samples(const std::string &path) {
       bad_sample(s, ln, std::string(!std::isfinite(x) ? "x" : "p") + " is not finite");
     if (p < 0) bad_sample(s, ln, "negative pressure p = " + fl[1] + " (p must be >= 0)");
     if (!s.x.empty() && !(x > s.x.back()))
-      bad_sample(s, ln, "x = " + fl[0] + " does not increase (previous sample, line " + std::to_string(s.line.back()) +
-                            ": x = " + g10(s.x.back()) + "; x must increase strictly)");
+      bad_sample(s, ln,
+                 "x = " + fl[0] + " does not increase (previous sample, line " + std::to_string(s.line.back()) +
+                     ": x = " + g10(s.x.back()) + "; x must increase strictly)");
     s.x.push_back(x);
     s.p.push_back(p);
     s.line.push_back(ln);
   }
   if (s.x.empty())
-    bad_sample(s, std::max(1, s.last_line), std::string(s.last_line ? "end of file, no samples (only blank, comment or header lines)"
-                                                       : "the file is empty") +
-                                   "; need at least 6 lines x p");
+    bad_sample(s, std::max(1, s.last_line),
+               std::string(s.last_line ? "end of file, no samples (only blank, comment or header lines)"
+                                       : "the file is empty") +
+                   "; need at least 6 lines x p");
   if (s.x.size() < 6)
     bad_sample(s, s.last_line, "end of file after " + std::to_string(s.x.size()) + " samples; need at least 6");
   return s;
@@ -396,7 +421,8 @@ void check_samples(const samples &s, double a) {
   for (size_t i = 0; i < s.x.size(); ++i) {
     const double x = s.x[i], p = s.p[i];
     if (!(x >= -a && x <= a))
-      bad_sample(s, s.line[i], "x = " + g10(x) + " is outside the contact [-a, a] = [" + g10(-a) + ", " + g10(a) + "]");
+      bad_sample(s, s.line[i],
+                 "x = " + g10(x) + " is outside the contact [-a, a] = [" + g10(-a) + ", " + g10(a) + "]");
     if ((x == -a || x == a) && p > 64 * 2.220446049250313e-16 * pmax)
       bad_sample(s, s.line[i], "p = " + g10(p) + " at the contact edge x = " + g10(x) + " (p must vanish there)");
     if (x > -a && x < a && !(p > 0))
@@ -440,20 +466,25 @@ void check_dimensional(const Args &args) {
 // power-law), after checking that only its own parameter option is given.
 int ref_geometry_kind(const Args &args, const char *what) {
   const std::string g = args.count("--geometry") ? args.at("--geometry") : "hertz";
-  if (g == "samples") die(std::string(what) + ": the reference backend supports --geometry hertz, flat-rounded and power-law");
+  if (g == "samples")
+    die(std::string(what) + ": the reference backend supports --geometry hertz, flat-rounded and power-law");
   if (args.count("--flat-over-a") && g != "flat-rounded") die("--flat-over-a needs --geometry flat-rounded");
   if (args.count("--exponent") && g != "power-law") die("--exponent needs --geometry power-law");
   if (args.count("--flat-width") && g != "flat-rounded") die("--flat-width needs --geometry flat-rounded");
   if (args.count("--pressure-file")) die("--pressure-file needs --geometry samples (not available with --digits)");
-  return g == "flat-rounded" ? HS_GEOMETRY_FLAT_ROUNDED : g == "power-law" ? HS_GEOMETRY_POWER_LAW : HS_GEOMETRY_HERTZ;
+  return g == "flat-rounded" ? HS_GEOMETRY_FLAT_ROUNDED
+         : g == "power-law"  ? HS_GEOMETRY_POWER_LAW
+                             : HS_GEOMETRY_HERTZ;
 }
 
 // A geometry parameter value (exact decimal text) in its range, else die
 // (table: the whole grid is checked before the first, possibly long, solve).
 void check_geometry_param(int kind, const char *flag, const std::string &v) {
   const double x = parse_number(flag, v.c_str());
-  if (kind == HS_GEOMETRY_FLAT_ROUNDED && !(x >= 0 && x < 1)) die(std::string("bad value for ") + flag + ": need 0 <= b_f/a < 1");
-  if (kind == HS_GEOMETRY_POWER_LAW && !(x > 1 && x < 1000)) die(std::string("bad value for ") + flag + ": need 1 < n < 1000");
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED && !(x >= 0 && x < 1))
+    die(std::string("bad value for ") + flag + ": need 0 <= b_f/a < 1");
+  if (kind == HS_GEOMETRY_POWER_LAW && !(x > 1 && x < 1000))
+    die(std::string("bad value for ") + flag + ": need 1 < n < 1000");
 }
 
 void check_ref_digits(int kind, int digits, const std::string &flag) {
@@ -512,9 +543,12 @@ int solve_reference(const Args &args, int digits) {
   hs_ref_summary sm;
   sm.struct_size = sizeof sm;
   check(hs_ref_solution_summary(sol, &sm), "summary");
-  struct item { const char *key; int id; };
-  std::vector<item> items = {{"a", HS_REF_A}, {"p0", HS_REF_P0}, {"b1", HS_REF_B1}, {"b2", HS_REF_B2},
-                             {"d1", HS_REF_D1}, {"d2", HS_REF_D2}};
+  struct item {
+    const char *key;
+    int id;
+  };
+  std::vector<item> items = {{"a", HS_REF_A},   {"p0", HS_REF_P0}, {"b1", HS_REF_B1},
+                             {"b2", HS_REF_B2}, {"d1", HS_REF_D1}, {"d2", HS_REF_D2}};
   if (!args.count("--no-energy")) {  // the zone energies are the slow part (docs/reference.md)
     items.push_back({"energy1", HS_REF_ENERGY1});
     items.push_back({"energy2", HS_REF_ENERGY2});
@@ -528,9 +562,10 @@ int solve_reference(const Args &args, int digits) {
   }
   hs_ref_solution_free(sol);
   if (json) {
-    std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"digits\": %d, \"working_digits\": %d, "
-                "\"slip_dir1\": %d, \"slip_dir2\": %d",
-                ref_geometry_name(kind), regime_name(sm.regime), digits, sm.working_digits, sm.slip_dir1, sm.slip_dir2);
+    std::printf(
+        "{\"geometry\": \"%s\", \"regime\": \"%s\", \"digits\": %d, \"working_digits\": %d, "
+        "\"slip_dir1\": %d, \"slip_dir2\": %d",
+        ref_geometry_name(kind), regime_name(sm.regime), digits, sm.working_digits, sm.slip_dir1, sm.slip_dir2);
     std::printf(", \"inputs\": {");
     bool first = true;
     for (const auto &kv : in) {
@@ -564,7 +599,6 @@ const char *model_name(int m) {
   return name ? name : "unknown";
 }
 
-
 // --fields-at FILE: points 'x y' per line (whitespace or one comma, '#' comments,
 // blank lines, a header line first); errors name the file and the line
 void read_points(const std::string &path, std::vector<double> &px, std::vector<double> &py) {
@@ -582,7 +616,10 @@ void read_points(const std::string &path, std::vector<double> &px, std::vector<d
     const std::vector<std::string> fl = split_fields(t);
     const std::string where = "--fields-at " + path + ": line " + std::to_string(ln) + ": ";
     double x = 0, y = 0;
-    if (header_allowed && !is_number(fl[0], x)) { header_allowed = false; continue; }
+    if (header_allowed && !is_number(fl[0], x)) {
+      header_allowed = false;
+      continue;
+    }
     header_allowed = false;
     if (fl.size() != 2) die(where + std::to_string(fl.size()) + " columns, expected 2 (x y)");
     if (!is_number(fl[0], x)) die(where + "x '" + fl[0] + "' is not a number");
@@ -643,9 +680,7 @@ void write_fields(const hs_solution *sol, double a, double pad_bulk, double nu, 
 // options are not part of the command (history: the path gives them).
 void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::vector<double> &sx,
                      std::vector<double> &sp, bool loads = true) {
-  auto get = [&](const char *k, double def) {
-    return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
-  };
+  auto get = [&](const char *k, double def) { return args.count(k) ? parse_number(k, args.at(k).c_str()) : def; };
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
   hs_geometry_default(&geo);
   hs_scene_default(&scene);
@@ -679,7 +714,8 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
     for (const char *k : {"--P", "--E-star", "--f", "--Q", "--sigma", pl ? "--A" : "--R"})
       if (!args.count(k) && (loads || (std::strcmp(k, "--Q") != 0 && std::strcmp(k, "--sigma") != 0)))
         die(std::string("dimensional input needs ") + k +
-            (pl ? " (give --P --A --exponent --E-star --f --Q --sigma)" : " (give --P --R --E-star --f --Q --sigma)"));
+            (pl ? " (give --P --A --exponent --E-star --f --Q --sigma)"
+                : " (give --P --R --E-star --f --Q --sigma)"));
     for (const char *k : {"--Q-over-fP", "--sigma-over-fp0", "--a", "--p0"})
       if (args.count(k)) die(std::string(k) + " cannot be combined with dimensional --P/--Q/--sigma");
     if (pl && args.count("--R")) die("--R is not a power-law parameter (the profile is --A |x|^--exponent)");
@@ -720,9 +756,7 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
 
 int cmd_solve(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json", "--no-energy"});
-  auto get = [&](const char *k, double def) {
-    return args.count(k) ? parse_number(k, args.at(k).c_str()) : def;
-  };
+  auto get = [&](const char *k, double def) { return args.count(k) ? parse_number(k, args.at(k).c_str()) : def; };
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
   // --rtol below double's rounding: the reference backend at that many digits
   double rtol = 0;
@@ -794,22 +828,25 @@ int cmd_solve(int argc, char **argv) {
   const bool have_surface = sm.model != HS_MODEL_REFERENCE;
   double surf[2][5] = {};
   if (have_surface)
-    for (int b = 0; b < 2; ++b) check(hs_surface_stress_extremes(sol, b + 1, pad_bulk, 0.0, surf[b]), "surface stress");
+    for (int b = 0; b < 2; ++b)
+      check(hs_surface_stress_extremes(sol, b + 1, pad_bulk, 0.0, surf[b]), "surface stress");
   const double nu = args.count("--nu") ? parse_number("--nu", args.at("--nu").c_str()) : 0.3;
   if (args.count("--fields-at") && !args.count("--fields")) die("--fields-at needs --fields FILE (the output)");
   if (args.count("--fields"))
-    write_fields(sol, sm.a, pad_bulk, nu, args.at("--fields"), args.count("--fields-at") ? args.at("--fields-at") : "");
+    write_fields(sol, sm.a, pad_bulk, nu, args.at("--fields"),
+                 args.count("--fields-at") ? args.at("--fields-at") : "");
 
   if (json) {
-    std::printf("{\"geometry\": \"%s\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "
-                "\"E_star\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, "
-                "\"d1\": %s, \"d2\": %s, \"slip_dir1\": %d, \"slip_dir2\": %d, \"energy1\": %s, "
-                "\"energy2\": %s, \"iterations\": %d",
-                geometry.c_str(), regime_name(sm.regime), num(sm.a).c_str(), num(sm.p0).c_str(), num(P).c_str(),
-                num(scene.f).c_str(), num(scene.E_star).c_str(), num(scene.Q_over_fP).c_str(),
-                num(scene.sigma_over_fp0).c_str(), num(sm.b1).c_str(), num(sm.b2).c_str(), num(sm.d1).c_str(),
-                num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, want_energy ? num(energy[0]).c_str() : "null",
-                want_energy ? num(energy[1]).c_str() : "null", sm.iterations);
+    std::printf(
+        "{\"geometry\": \"%s\", \"regime\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, "
+        "\"E_star\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, "
+        "\"d1\": %s, \"d2\": %s, \"slip_dir1\": %d, \"slip_dir2\": %d, \"energy1\": %s, "
+        "\"energy2\": %s, \"iterations\": %d",
+        geometry.c_str(), regime_name(sm.regime), num(sm.a).c_str(), num(sm.p0).c_str(), num(P).c_str(),
+        num(scene.f).c_str(), num(scene.E_star).c_str(), num(scene.Q_over_fP).c_str(),
+        num(scene.sigma_over_fp0).c_str(), num(sm.b1).c_str(), num(sm.b2).c_str(), num(sm.d1).c_str(),
+        num(sm.d2).c_str(), sm.slip_dir1, sm.slip_dir2, want_energy ? num(energy[0]).c_str() : "null",
+        want_energy ? num(energy[1]).c_str() : "null", sm.iterations);
     std::printf(", \"quadrature_order\": %d, \"model\": \"%s\", \"error_estimate\": %s", sm.quadrature_order,
                 model_name(sm.model), num(sm.error_estimate).c_str());
     std::printf(", \"ramp_recedes\": %s, \"ramp_recedes_at_Q_over_fP\": %s", recedes ? "true" : "false",
@@ -859,10 +896,11 @@ int cmd_solve(int argc, char **argv) {
     std::printf("model: %s, estimated error %.2g (largest relative error of d1, d2 and the energies)\n",
                 model_name(sm.model), sm.error_estimate);
     if (recedes)
-      std::printf("note: this is the monotonic state (every slip zone grown from zero). A proportional ramp from\n"
-                  "  zero to this load makes a slip zone recede from Q/fP = %.10g on, and reaches a different\n"
-                  "  state: use 'halfslip history --path \"%.10g,%.10g\"' (docs/history.md).\n",
-                  recedes_at, scene.Q_over_fP, scene.sigma_over_fp0);
+      std::printf(
+          "note: this is the monotonic state (every slip zone grown from zero). A proportional ramp from\n"
+          "  zero to this load makes a slip zone recede from Q/fP = %.10g on, and reaches a different\n"
+          "  state: use 'halfslip history --path \"%.10g,%.10g\"' (docs/history.md).\n",
+          recedes_at, scene.Q_over_fP, scene.sigma_over_fp0);
     if (have_surface) {
       std::printf("surface direct stress sigma_xx(x, 0), |x| <= 3a (body 1 specimen y > 0, body 2 pad y < 0):\n");
       for (int b = 0; b < 2; ++b)
@@ -880,10 +918,27 @@ int cmd_solve(int argc, char **argv) {
 }
 
 // ---------------------------------------------------------------- history
-const std::vector<std::string> kHistoryKeys = {"--geometry", "--a", "--p0", "--f", "--E-star", "--P", "--R", "--A",
-                                               "--flat-over-a", "--flat-width", "--exponent", "--pressure-file",
-                                               "--path", "--cycle", "--cycles", "--ramp", "--segments-per-cycle",
-                                               "--max-step", "--points", "--steady-rtol", "--rtol"};
+const std::vector<std::string> kHistoryKeys = {"--geometry",
+                                               "--a",
+                                               "--p0",
+                                               "--f",
+                                               "--E-star",
+                                               "--P",
+                                               "--R",
+                                               "--A",
+                                               "--flat-over-a",
+                                               "--flat-width",
+                                               "--exponent",
+                                               "--pressure-file",
+                                               "--path",
+                                               "--cycle",
+                                               "--cycles",
+                                               "--ramp",
+                                               "--segments-per-cycle",
+                                               "--max-step",
+                                               "--points",
+                                               "--steady-rtol",
+                                               "--rtol"};
 
 // "Q1,S1;Q2,S2;..." -> pairs
 std::vector<std::pair<double, double>> parse_path(const std::string &t) {
@@ -999,18 +1054,19 @@ int cmd_history(int argc, char **argv) {
       smin = std::min(smin, v.step);
       emax = std::max(emax, v.error_estimate);
     }
-    std::printf("{\"geometry\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, \"E_star\": %s, "
-                "\"rtol\": %s, \"step\": %s, \"error_estimate\": %s, \"vertices\": [",
-                geometry.c_str(), num(scene.a).c_str(), num(scene.p0).c_str(), num(P).c_str(),
-                num(scene.f).c_str(), num(scene.E_star).c_str(), num(ho.rtol).c_str(), num(smin).c_str(),
-                num(emax).c_str());
+    std::printf(
+        "{\"geometry\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, \"E_star\": %s, "
+        "\"rtol\": %s, \"step\": %s, \"error_estimate\": %s, \"vertices\": [",
+        geometry.c_str(), num(scene.a).c_str(), num(scene.p0).c_str(), num(P).c_str(), num(scene.f).c_str(),
+        num(scene.E_star).c_str(), num(ho.rtol).c_str(), num(smin).c_str(), num(emax).c_str());
     for (size_t i = 0; i < nv; ++i) {
       const auto &v = vs[i];
-      std::printf("%s{\"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, \"slip_dir1\": %d, "
-                  "\"slip_dir2\": %d, \"energy1\": %s, \"energy2\": %s, \"cycle\": %d, \"steps\": %ld",
-                  i ? ", " : "", num(v.Q_over_fP).c_str(), num(v.sigma_over_fp0).c_str(), num(v.b1).c_str(),
-                  num(v.b2).c_str(), v.slip_dir1, v.slip_dir2, num(v.energy1).c_str(), num(v.energy2).c_str(),
-                  v.cycle, v.steps);
+      std::printf(
+          "%s{\"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"b1\": %s, \"b2\": %s, \"slip_dir1\": %d, "
+          "\"slip_dir2\": %d, \"energy1\": %s, \"energy2\": %s, \"cycle\": %d, \"steps\": %ld",
+          i ? ", " : "", num(v.Q_over_fP).c_str(), num(v.sigma_over_fp0).c_str(), num(v.b1).c_str(),
+          num(v.b2).c_str(), v.slip_dir1, v.slip_dir2, num(v.energy1).c_str(), num(v.energy2).c_str(), v.cycle,
+          v.steps);
       std::printf(", \"step\": %s, \"error_estimate\": %s", num(v.step).c_str(), num(v.error_estimate).c_str());
       if (!xs.empty()) {
         check(hs_history_eval(h, i, HS_FIELD_TRACTION, xs.size(), xs.data(), qv.data()), "traction");
@@ -1025,16 +1081,17 @@ int cmd_history(int argc, char **argv) {
     }
     std::printf("]");
     if (cyc) {
-      std::printf(", \"cycles\": %d, \"cycles_to_steady\": %s, \"shakedown\": %s, \"energy_per_cycle1\": %s, "
-                  "\"energy_per_cycle2\": %s",
-                  cs.cycles, cs.cycles_to_steady < 0 ? "null" : std::to_string(cs.cycles_to_steady).c_str(),
-                  cs.shakedown ? "true" : "false", num(cs.energy_per_cycle1).c_str(),
-                  num(cs.energy_per_cycle2).c_str());
+      std::printf(
+          ", \"cycles\": %d, \"cycles_to_steady\": %s, \"shakedown\": %s, \"energy_per_cycle1\": %s, "
+          "\"energy_per_cycle2\": %s",
+          cs.cycles, cs.cycles_to_steady < 0 ? "null" : std::to_string(cs.cycles_to_steady).c_str(),
+          cs.shakedown ? "true" : "false", num(cs.energy_per_cycle1).c_str(), num(cs.energy_per_cycle2).c_str());
       if (have_closed)
-        std::printf(", \"closed_form_valid\": %s, \"closed_form_energy_per_cycle1\": %s, "
-                    "\"closed_form_energy_per_cycle2\": %s",
-                    closed.valid ? "true" : "false", closed.valid ? num(closed.energy_per_cycle1).c_str() : "null",
-                    closed.valid ? num(closed.energy_per_cycle2).c_str() : "null");
+        std::printf(
+            ", \"closed_form_valid\": %s, \"closed_form_energy_per_cycle1\": %s, "
+            "\"closed_form_energy_per_cycle2\": %s",
+            closed.valid ? "true" : "false", closed.valid ? num(closed.energy_per_cycle1).c_str() : "null",
+            closed.valid ? num(closed.energy_per_cycle2).c_str() : "null");
       if (!xs.empty()) {
         std::printf(", \"slip_range\": [");
         for (size_t k = 0; k < xs.size(); ++k)
@@ -1046,8 +1103,8 @@ int cmd_history(int argc, char **argv) {
   } else {
     std::printf("halfslip %s: load history, %s contact, constant normal load\n", hs_version_string(),
                 geometry.c_str());
-    std::printf("  a = %.10g, p0 = %.10g, P = %.10g (per unit length), f = %.10g, E* = %.10g\n", scene.a, scene.p0,
-                P, scene.f, scene.E_star);
+    std::printf("  a = %.10g, p0 = %.10g, P = %.10g (per unit length), f = %.10g, E* = %.10g\n", scene.a, scene.p0, P,
+                scene.f, scene.E_star);
     std::printf("  energies per unit length; stick zone (-b2, b1); slip direction 0: that edge does not slip\n");
     if (nv) {
       double smin = vs[0].step, smax = vs[0].step, emax = 0;
@@ -1056,16 +1113,17 @@ int cmd_history(int argc, char **argv) {
         smax = std::max(smax, v.step);
         emax = std::max(emax, v.error_estimate);
       }
-      std::printf("  load steps %.6g to %.6g after refinement per segment, estimated error %.2g (rtol %.2g per segment)\n",
-                  smin, smax, emax, ho.rtol);
+      std::printf(
+          "  load steps %.6g to %.6g after refinement per segment, estimated error %.2g (rtol %.2g per segment)\n",
+          smin, smax, emax, ho.rtol);
     }
-    std::printf("%6s %5s %13s %13s %12s %12s %5s %5s %13s %13s %8s\n", "vertex", "cycle", "Q/fP", "sigma/fp0",
-                "b1/a", "b2/a", "dir1", "dir2", "energy1", "energy2", "steps");
+    std::printf("%6s %5s %13s %13s %12s %12s %5s %5s %13s %13s %8s\n", "vertex", "cycle", "Q/fP", "sigma/fp0", "b1/a",
+                "b2/a", "dir1", "dir2", "energy1", "energy2", "steps");
     for (size_t i = 0; i < nv; ++i) {
       const auto &v = vs[i];
-      std::printf("%6zu %5d %13.6g %13.6g %12.8f %12.8f %+5d %+5d %13.6g %13.6g %8ld\n", i + 1, v.cycle,
-                  v.Q_over_fP, v.sigma_over_fp0, v.b1 / scene.a, v.b2 / scene.a, v.slip_dir1, v.slip_dir2,
-                  v.energy1, v.energy2, v.steps);
+      std::printf("%6zu %5d %13.6g %13.6g %12.8f %12.8f %+5d %+5d %13.6g %13.6g %8ld\n", i + 1, v.cycle, v.Q_over_fP,
+                  v.sigma_over_fp0, v.b1 / scene.a, v.b2 / scene.a, v.slip_dir1, v.slip_dir2, v.energy1, v.energy2,
+                  v.steps);
     }
     if (cyc) {
       std::printf("cycles: %d; steady from cycle %s%s\n", cs.cycles,
@@ -1082,7 +1140,8 @@ int cmd_history(int argc, char **argv) {
     if (!xs.empty()) {
       check(hs_history_eval(h, nv - 1, HS_FIELD_TRACTION, xs.size(), xs.data(), qv.data()), "traction");
       check(hs_history_eval(h, nv - 1, HS_FIELD_SLIP, xs.size(), xs.data(), hv.data()), "slip");
-      std::printf("state after the last vertex:\n%22s %22s %22s%s\n", "x", "q", "h", cyc ? "        slip range dh" : "");
+      std::printf("state after the last vertex:\n%22s %22s %22s%s\n", "x", "q", "h",
+                  cyc ? "        slip range dh" : "");
       for (size_t k = 0; k < xs.size(); ++k) {
         std::printf("%22.15g %22.15g %22.15g", xs[k], qv[k], hv[k]);
         if (cyc) std::printf(" %22.15g", dh[k]);
@@ -1107,8 +1166,12 @@ decimal parse_decimal_exact(const std::string &flag, const std::string &t) {
   bool neg = false, any = false, dot = false;
   if (i < t.size() && (t[i] == '-' || t[i] == '+')) neg = t[i++] == '-';
   for (; i < t.size(); ++i) {
-    if (t[i] == '.' && !dot) { dot = true; continue; }
-    if (!std::isdigit(static_cast<unsigned char>(t[i]))) die("bad value for " + flag + ": '" + t + "' is not a plain decimal");
+    if (t[i] == '.' && !dot) {
+      dot = true;
+      continue;
+    }
+    if (!std::isdigit(static_cast<unsigned char>(t[i])))
+      die("bad value for " + flag + ": '" + t + "' is not a plain decimal");
     if (d.m > (__int128(1) << 100)) die("bad value for " + flag + ": '" + t + "' has too many digits");
     d.m = d.m * 10 + (t[i] - '0');
     if (dot) ++d.scale;
@@ -1123,7 +1186,10 @@ std::string decimal_text(decimal d) {
   const bool neg = d.m < 0;
   __int128 m = neg ? -d.m : d.m;
   std::string s;
-  do { s.insert(s.begin(), char('0' + int(m % 10))); m /= 10; } while (m > 0);
+  do {
+    s.insert(s.begin(), char('0' + int(m % 10)));
+    m /= 10;
+  } while (m > 0);
   if (d.scale > 0) {
     while (int(s.size()) <= d.scale) s.insert(s.begin(), '0');
     s.insert(s.end() - d.scale, '.');
@@ -1136,10 +1202,17 @@ std::vector<std::string> parse_list(const std::string &flag, const std::string &
   if (t.find(':') != std::string::npos) {
     const size_t c1 = t.find(':'), c2 = t.find(':', c1 + 1);
     if (c2 == std::string::npos) die("bad value for " + flag + ": use start:step:count");
-    decimal a = parse_decimal_exact(flag, t.substr(0, c1)), h = parse_decimal_exact(flag, t.substr(c1 + 1, c2 - c1 - 1));
+    decimal a = parse_decimal_exact(flag, t.substr(0, c1)),
+            h = parse_decimal_exact(flag, t.substr(c1 + 1, c2 - c1 - 1));
     const int n = parse_int(flag, t.substr(c2 + 1), 1, 100000);
-    while (a.scale < h.scale) { a.m *= 10; ++a.scale; }
-    while (h.scale < a.scale) { h.m *= 10; ++h.scale; }
+    while (a.scale < h.scale) {
+      a.m *= 10;
+      ++a.scale;
+    }
+    while (h.scale < a.scale) {
+      h.m *= 10;
+      ++h.scale;
+    }
     for (int i = 0; i < n; ++i) out.push_back(decimal_text({a.m + h.m * i, a.scale}));
   } else {
     size_t p = 0;
@@ -1195,7 +1268,10 @@ int cmd_table(int argc, char **argv) {
   // rows in order geometry parameter, then q, then sigma; shard k gets the k-th contiguous block
   const size_t total = gs.size() * qs.size() * ss.size();
   const size_t lo = total * size_t(shard - 1) / size_t(nshards), hi = total * size_t(shard) / size_t(nshards);
-  struct item { const char *key; int id; };
+  struct item {
+    const char *key;
+    int id;
+  };
   std::vector<item> items = {{"b1", HS_REF_B1}, {"b2", HS_REF_B2}, {"d1", HS_REF_D1}, {"d2", HS_REF_D2}};
   if (energy) {
     items.push_back({"energy1", HS_REF_ENERGY1});
@@ -1213,8 +1289,12 @@ int cmd_table(int argc, char **argv) {
                         &s = ss[r % ss.size()];
       hs_ref_scene sc;
       hs_ref_scene_default(&sc);
-      sc.a = a.c_str(); sc.p0 = p0.c_str(); sc.f = f.c_str(); sc.E_star = E.c_str();
-      sc.Q_over_fP = q.c_str(); sc.sigma_over_fp0 = s.c_str();
+      sc.a = a.c_str();
+      sc.p0 = p0.c_str();
+      sc.f = f.c_str();
+      sc.E_star = E.c_str();
+      sc.Q_over_fP = q.c_str();
+      sc.sigma_over_fp0 = s.c_str();
       sc.geometry = kind;
       if (kind == HS_GEOMETRY_FLAT_ROUNDED) sc.flat_over_a = g.c_str();
       if (kind == HS_GEOMETRY_POWER_LAW) sc.exponent = g.c_str();
@@ -1224,19 +1304,23 @@ int cmd_table(int argc, char **argv) {
       hs_ref_summary sm;
       sm.struct_size = sizeof sm;
       if (st == HS_OK) hs_ref_solution_summary(sol, &sm);
-      const char *reg = st == HS_OK ? regime_name(sm.regime) : (st == HS_ERR_GROSS_SLIDING ? "gross-sliding" : "error");
+      const char *reg = st == HS_OK ? regime_name(sm.regime)
+                                    : (st == HS_ERR_GROSS_SLIDING ? "gross-sliding" : "error");
       const std::string gcol = kind == HS_GEOMETRY_HERTZ ? "" : g + ",";
-      const std::string gkey = kind == HS_GEOMETRY_HERTZ ? "" : "\"" + std::string(pkey) + "\": " + json_str(g) + ", ";
-      if (jsonl) line = "{" + gkey + "\"Q_over_fP\": " + json_str(q) + ", \"sigma_over_fp0\": " + json_str(s) +
-                        ", \"regime\": " + json_str(reg) + ", \"status\": " + std::to_string(st);
+      const std::string gkey = kind == HS_GEOMETRY_HERTZ ? ""
+                                                         : "\"" + std::string(pkey) + "\": " + json_str(g) + ", ";
+      if (jsonl)
+        line = "{" + gkey + "\"Q_over_fP\": " + json_str(q) + ", \"sigma_over_fp0\": " + json_str(s) +
+               ", \"regime\": " + json_str(reg) + ", \"status\": " + std::to_string(st);
       else line = gcol + q + "," + s + "," + reg + "," + std::to_string(st);
       std::vector<char> buf(size_t(digits) + 64);
       for (const auto &it : items) {
         int cd = 0;
         std::string v;
         if (st == HS_OK && hs_ref_value(sol, it.id, buf.data(), buf.size(), nullptr, &cd) == HS_OK) v = buf.data();
-        if (jsonl) line += std::string(", \"") + it.key + "\": " + (v.empty() ? "null" : json_str(v)) + ", \"" +
-                           it.key + "_digits\": " + std::to_string(cd);
+        if (jsonl)
+          line += std::string(", \"") + it.key + "\": " + (v.empty() ? "null" : json_str(v)) + ", \"" + it.key +
+                  "_digits\": " + std::to_string(cd);
         else line += "," + v + "," + std::to_string(cd);
       }
       if (jsonl) line += "}";
@@ -1277,21 +1361,24 @@ int cmd_table(int argc, char **argv) {
 // ---------------------------------------------------------------- asymptotic-error
 int cmd_asymptotic_error(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2, {"--loading", "--b-over-a"}, {"--json"});
-  if (!args.count("--loading") || !args.count("--b-over-a")) die("asymptotic-error needs --loading shear|bulk and --b-over-a X");
+  if (!args.count("--loading") || !args.count("--b-over-a"))
+    die("asymptotic-error needs --loading shear|bulk and --b-over-a X");
   const std::string l = args.at("--loading");
   if (l != "shear" && l != "bulk") die("bad value for --loading: '" + l + "' (shear or bulk)");
   const double b = parse_number("--b-over-a", args.at("--b-over-a").c_str());
   hs_asymptotic_comparison c;
   c.struct_size = sizeof c;
   // the C library checks 0 < b/a < 1
-  check(hs_asymptotic_error(l == "shear" ? HS_LOADING_SHEAR : HS_LOADING_BULK, b, &c), "bad value for --b-over-a " + g10(b));
+  check(hs_asymptotic_error(l == "shear" ? HS_LOADING_SHEAR : HS_LOADING_BULK, b, &c),
+        "bad value for --b-over-a " + g10(b));
   if (args.count("--json")) {
-    std::printf("{\"loading\": \"%s\", \"b_over_a\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, "
-                "\"d_full\": %s, \"d_asymptotic\": %s, \"energy_full\": %s, \"energy_asymptotic\": %s, "
-                "\"fractional_error\": %s}\n",
-                l.c_str(), num(b).c_str(), num(c.Q_over_fP).c_str(), num(c.sigma_over_fp0).c_str(), num(c.d_full).c_str(),
-                num(c.d_asymptotic).c_str(), num(c.energy_full).c_str(), num(c.energy_asymptotic).c_str(),
-                num(c.fractional_error).c_str());
+    std::printf(
+        "{\"loading\": \"%s\", \"b_over_a\": %s, \"Q_over_fP\": %s, \"sigma_over_fp0\": %s, "
+        "\"d_full\": %s, \"d_asymptotic\": %s, \"energy_full\": %s, \"energy_asymptotic\": %s, "
+        "\"fractional_error\": %s}\n",
+        l.c_str(), num(b).c_str(), num(c.Q_over_fP).c_str(), num(c.sigma_over_fp0).c_str(), num(c.d_full).c_str(),
+        num(c.d_asymptotic).c_str(), num(c.energy_full).c_str(), num(c.energy_asymptotic).c_str(),
+        num(c.fractional_error).c_str());
   } else {
     std::printf("asymptotic edge model vs full Hertz solution, %s loading, b/a = %.10g (a = p0 = f = E* = 1)\n",
                 l.c_str(), b);
@@ -1318,5 +1405,6 @@ int main(int argc, char **argv) {
   if (std::strcmp(argv[1], "table") == 0) return cmd_table(argc, argv);
   if (std::strcmp(argv[1], "history") == 0) return cmd_history(argc, argv);
   if (std::strcmp(argv[1], "asymptotic-error") == 0) return cmd_asymptotic_error(argc, argv);
-  die(std::string("unknown command '") + argv[1] + "' (solve, history, table or asymptotic-error; see halfslip --help)");
+  die(std::string("unknown command '") + argv[1] +
+      "' (solve, history, table or asymptotic-error; see halfslip --help)");
 }

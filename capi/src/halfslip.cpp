@@ -111,8 +111,7 @@ core::hertz_scene<double> to_core(const hs_scene *sc) {
 
 // Evaluate fn at every point into a scratch vector first, so that out is
 // untouched unless every point succeeds.
-template <class Fn>
-int eval_points(const hs_solution *sol, size_t n, const double *x, double *out, Fn fn) {
+template <class Fn> int eval_points(const hs_solution *sol, size_t n, const double *x, double *out, Fn fn) {
   return guard([&] {
     require(sol != nullptr, core::status::null_pointer, "solution is NULL");
     if (n == 0) return;
@@ -192,8 +191,7 @@ std::shared_ptr<const core::pressure_model<double>> pressure_of_geometry(const h
       model = m;
       break;
     }
-    default:
-      throw core::error(core::status::bad_geometry, "unknown geometry");
+    default: throw core::error(core::status::bad_geometry, "unknown geometry");
   }
   return model;
 }
@@ -251,7 +249,7 @@ int hs_version(int *major, int *minor, int *patch) {
 }
 
 #define HS_STR_(x) #x
-#define HS_STR(x) HS_STR_(x)
+#define HS_STR(x)  HS_STR_(x)
 const char *hs_version_string(void) {
   return HS_STR(HS_VERSION_MAJOR) "." HS_STR(HS_VERSION_MINOR) "." HS_STR(HS_VERSION_PATCH);
 }
@@ -260,7 +258,8 @@ const char *hs_strerror(int status) {
   switch (status) {
     case HS_OK: return "success";
     case HS_ERR_NULL_POINTER: return "a required pointer argument is NULL";
-    case HS_ERR_STRUCT_SIZE: return "struct_size field is not sizeof the struct (initialise it with its hs_*_default function)";
+    case HS_ERR_STRUCT_SIZE:
+      return "struct_size field is not sizeof the struct (initialise it with its hs_*_default function)";
     case HS_ERR_NOT_FINITE: return "an input value is NaN or infinite";
     case HS_ERR_BAD_SIZE: return "a size or modulus (a, p0, E*, P, R) is not strictly positive";
     case HS_ERR_BAD_FRICTION: return "the friction coefficient f is not strictly positive";
@@ -274,8 +273,10 @@ const char *hs_strerror(int status) {
     case HS_ERR_INTERNAL: return "internal error in halfslip (please report)";
     case HS_ERR_OVERFLOW: return "a result is not representable in double precision (overflow)";
     case HS_ERR_BAD_NUMBER: return "a decimal number string could not be parsed";
-    case HS_ERR_NOT_APPLICABLE: return "the requested model does not apply to this scene (e.g. asymptotic slip zones that cover the contact)";
-    case HS_ERR_TOLERANCE: return "no model meets the requested tolerance in double precision (use the reference backend, hs_ref_solve)";
+    case HS_ERR_NOT_APPLICABLE:
+      return "the requested model does not apply to this scene (e.g. asymptotic slip zones that cover the contact)";
+    case HS_ERR_TOLERANCE:
+      return "no model meets the requested tolerance in double precision (use the reference backend, hs_ref_solve)";
     default: return "unknown halfslip status code";
   }
 }
@@ -373,14 +374,12 @@ int hs_scene_from_flat_rounded_loads(double P, double R, double flat_width, doub
   });
 }
 
-int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, double Q, double sigma,
-                              hs_scene *scene) {
+int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, double Q, double sigma, hs_scene *scene) {
   return guard([&] {
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
     check_loads({P, R, E_star, f, Q, sigma}, P, E_star, f);
     require(R > 0, core::status::bad_size, "R must be > 0");
-    scene_from_loads(core::hertz_pressure<double>::half_width_from_load(P, R, E_star), P, E_star, f, Q, sigma,
-                     scene);
+    scene_from_loads(core::hertz_pressure<double>::half_width_from_load(P, R, E_star), P, E_star, f, Q, sigma, scene);
   });
 }
 
@@ -453,8 +452,7 @@ int hs_geometry_default(hs_geometry *geometry) {
   });
 }
 
-int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const hs_options *opts,
-                      hs_solution **out) {
+int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const hs_options *opts, hs_solution **out) {
   return guard([&] {
     require(out != nullptr && scene != nullptr && geometry != nullptr, core::status::null_pointer, "NULL argument");
     require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry struct_size");
@@ -495,7 +493,8 @@ core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
 // The points (x, y) of a stress evaluation, each in its body; false: none (n = 0).
 bool check_body_points(int body, size_t n, const double *x, const double *y, const double *out) {
   if (n == 0) return false;
-  require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer, "point or output array is NULL");
+  require(x != nullptr && y != nullptr && out != nullptr, core::status::null_pointer,
+          "point or output array is NULL");
   for (size_t i = 0; i < n; ++i) {
     require(std::isfinite(x[i]) && std::isfinite(y[i]), core::status::not_finite, "point is NaN or infinite");
     require(body == 1 ? y[i] >= 0 : y[i] <= 0, core::status::bad_option,
@@ -532,7 +531,9 @@ int hs_eval_stress(const hs_solution *sol, int body, double bulk2, size_t n, con
     std::vector<double> tmp(3 * n);
     for (size_t i = 0; i < n; ++i) {
       const auto s = core::stress_at(st, body, x[i], std::fabs(y[i]));
-      tmp[3 * i] = s.xx; tmp[3 * i + 1] = s.yy; tmp[3 * i + 2] = s.xy;
+      tmp[3 * i] = s.xx;
+      tmp[3 * i + 1] = s.yy;
+      tmp[3 * i + 2] = s.xy;
     }
     std::memcpy(out, tmp.data(), 3 * n * sizeof(double));
   });
@@ -581,7 +582,11 @@ int hs_surface_stress_extremes(const hs_solution *sol, int body, double bulk2, d
     if (st.breaks.size() <= 64)
       for (double b : st.breaks) special.push_back(b);
     const auto e = core::surface_summary(st, body, L, special);
-    out[0] = e.max; out[1] = e.x_max; out[2] = e.min; out[3] = e.x_min; out[4] = e.bulk;
+    out[0] = e.max;
+    out[1] = e.x_max;
+    out[2] = e.min;
+    out[3] = e.x_min;
+    out[4] = e.bulk;
   });
 }
 
@@ -634,8 +639,8 @@ int hs_ref_solve(const hs_ref_scene *scene, int digits, hs_ref_solution **out) {
     // 0.2 callers pass the size without the geometry parameters: Hertz only
     const bool v02 = scene->struct_size == offsetof(hs_ref_scene, flat_over_a);
     require(scene->struct_size == sizeof(hs_ref_scene) || v02, core::status::struct_size, "scene struct_size");
-    require(scene->geometry == HS_GEOMETRY_HERTZ || (!v02 && (scene->geometry == HS_GEOMETRY_FLAT_ROUNDED ||
-                                                               scene->geometry == HS_GEOMETRY_POWER_LAW)),
+    require(scene->geometry == HS_GEOMETRY_HERTZ ||
+                (!v02 && (scene->geometry == HS_GEOMETRY_FLAT_ROUNDED || scene->geometry == HS_GEOMETRY_POWER_LAW)),
             core::status::bad_geometry, "unknown geometry");
     hs::reference::text_scene t;
     auto take = [](std::string &dst, const char *src) {

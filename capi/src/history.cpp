@@ -214,7 +214,8 @@ double half_width_at(const hs_solution &sol, double q, double s) {
     return core::solve_general<double>(*sol.model, g).half_width();
   }
   core::hertz_scene<double> hz;
-  hz.q = q; hz.s = s;
+  hz.q = q;
+  hz.s = s;
   return core::solve_hertz<double>(hz).half_width();
 }
 }  // namespace
@@ -225,8 +226,8 @@ int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
     const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
     const double s = sol->visit([](const auto &v) { return double(v.scene.s); });
     double where = std::numeric_limits<double>::quiet_NaN();
-    const bool r = core::ramp_recedes<double>(q, s, [&](double qq, double ss) { return half_width_at(*sol, qq, ss); },
-                                              where);
+    const bool r = core::ramp_recedes<double>(
+        q, s, [&](double qq, double ss) { return half_width_at(*sol, qq, ss); }, where);
     *recedes = r ? 1 : 0;
     *at = r ? where : std::numeric_limits<double>::quiet_NaN();
   });
@@ -241,7 +242,8 @@ int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out) {
     const double e1 = sol->visit([](const auto &v) { return double(v.energy(1)); });
     const double e2 = sol->visit([](const auto &v) { return double(v.energy(2)); });
     require(std::isfinite(e1) && std::isfinite(e2), core::status::overflow, "energy not representable");
-    const auto c = core::proportional_steady_cycle<double>(q, s, [&] { return half_width_at(*sol, q, s); }, e1, e2);
+    const auto c = core::proportional_steady_cycle<double>(
+        q, s, [&] { return half_width_at(*sol, q, s); }, e1, e2);
     out->valid = c.valid ? 1 : 0;
     out->cycles_to_steady = c.cycles_to_steady;
     out->energy_per_cycle1 = c.energy1;

@@ -89,7 +89,7 @@ struct hs_solution {
   std::variant<std::monostate, hs::core::hertz_solution<double>, hs::core::general_solution<double>,
                hs::core::edge_solution<double>, hs::capi::reference_double>
       solution;
-  int model_used = 0;           // HS_MODEL_*
+  int model_used = 0;  // HS_MODEL_*
   double error_estimate = 0;
   // issue 15: p and q cached on graded panels for the stresses, built on the
   // first field evaluation that needs them (thread-safe; null: closed forms)
@@ -102,8 +102,8 @@ struct hs_solution {
   template <class F> auto visit(F &&f) const { return visit_from<1>(f); }
 
  private:
-  template <std::size_t I, class F>
-  auto visit_from(F &f) const -> decltype(f(std::declval<const hs::core::hertz_solution<double> &>())) {
+  template <std::size_t I, class F> auto visit_from(F &f) const
+      -> decltype(f(std::declval<const hs::core::hertz_solution<double> &>())) {
     if constexpr (I < std::variant_size<decltype(solution)>::value) {
       if (const auto *s = std::get_if<I>(&solution)) return f(*s);
       return visit_from<I + 1>(f);

@@ -96,7 +96,7 @@ int agreeing_digits(const std::string &a, const std::string &b, int cap) {
   if (x == y) return cap;
   if (y == 0) return 0;
   const big err = abs(x - y);
-  const big e = floor(log10(abs(y)));                  // exponent of b
+  const big e = floor(log10(abs(y)));  // exponent of b
   const big k = floor(e + 1 - log10(2 * err));
   if (k < 0) return 0;
   return k > cap ? cap : int(k.convert_to<long>());

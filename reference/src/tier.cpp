@@ -6,11 +6,11 @@
 #include "tier_impl.hpp"
 
 #ifndef HS_TIER_DIGITS
-#error "compile reference/src/tier.cpp with -DHS_TIER_DIGITS=<decimal digits of the tier>"
+#  error "compile reference/src/tier.cpp with -DHS_TIER_DIGITS=<decimal digits of the tier>"
 #endif
 
 #define HS_TIER_CAT2(a, b) a##b
-#define HS_TIER_CAT(a, b) HS_TIER_CAT2(a, b)
+#define HS_TIER_CAT(a, b)  HS_TIER_CAT2(a, b)
 
 namespace hs { namespace reference {
 

@@ -16,25 +16,33 @@
 
 namespace hs { namespace reference {
 
-template <unsigned D>
-using mp_real = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D>,
-                                              boost::multiprecision::et_off>;
+template <unsigned D> using mp_real =
+    boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<D>, boost::multiprecision::et_off>;
 
 template <class T> T parse_decimal(const std::string &s, const char *what) {
   // strict: optional sign, digits, optional fraction, optional exponent
   size_t i = 0, n = s.size();
   bool digits = false;
   if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
-  while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { ++i; digits = true; }
+  while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) {
+    ++i;
+    digits = true;
+  }
   if (i < n && s[i] == '.') {
     ++i;
-    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { ++i; digits = true; }
+    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) {
+      ++i;
+      digits = true;
+    }
   }
   if (digits && i < n && (s[i] == 'e' || s[i] == 'E')) {
     ++i;
     if (i < n && (s[i] == '+' || s[i] == '-')) ++i;
     bool ed = false;
-    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) { ++i; ed = true; }
+    while (i < n && std::isdigit(static_cast<unsigned char>(s[i]))) {
+      ++i;
+      ed = true;
+    }
     if (!ed) digits = false;
   }
   if (!digits || i != n || n > 4096) throw core::error(core::status::bad_number, what);
@@ -72,7 +80,8 @@ template <unsigned D> class tier_solution_impl final : public tier_solution {
  public:
   tier_solution_impl(const text_scene &in, int max_iterations) {
     if (in.geometry != geometry_hertz && in.geometry != geometry_flat_rounded && in.geometry != geometry_power_law)
-      throw core::error(core::status::bad_geometry, "unknown geometry (reference backend: Hertz, flat-rounded, power law)");
+      throw core::error(core::status::bad_geometry,
+                        "unknown geometry (reference backend: Hertz, flat-rounded, power law)");
     core::hertz_scene<T> sc;
     sc.f = parse_decimal<T>(in.f, "friction coefficient f is not a decimal number");
     sc.Estar = parse_decimal<T>(in.Estar, "E* is not a decimal number");
@@ -119,10 +128,18 @@ template <unsigned D> class tier_solution_impl final : public tier_solution {
     }
   }
   unsigned digits10() const override { return D; }
-  int regime() const override { return visit([](const auto &s) { return int(s.reg); }); }
-  int dir1() const override { return visit([](const auto &s) { return s.dir1(); }); }
-  int dir2() const override { return visit([](const auto &s) { return s.dir2(); }); }
-  int iterations() const override { return visit([](const auto &s) { return s.iterations; }); }
+  int regime() const override {
+    return visit([](const auto &s) { return int(s.reg); });
+  }
+  int dir1() const override {
+    return visit([](const auto &s) { return s.dir1(); });
+  }
+  int dir2() const override {
+    return visit([](const auto &s) { return s.dir2(); });
+  }
+  int iterations() const override {
+    return visit([](const auto &s) { return s.iterations; });
+  }
   int quadrature_order() const override { return general_ ? general_->order : 0; }
   std::string value(quantity q, int sig) const override {
     return visit([&](const auto &s) -> std::string {

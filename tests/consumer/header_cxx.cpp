@@ -6,15 +6,14 @@
 #include <cstddef>
 
 #if __cplusplus >= 201103L
-#include <type_traits>
+#  include <type_traits>
 static_assert(std::is_standard_layout<hs_scene>::value && std::is_trivial<hs_scene>::value, "hs_scene is POD");
 static_assert(std::is_standard_layout<hs_summary>::value && std::is_trivial<hs_summary>::value, "hs_summary");
 static_assert(std::is_standard_layout<hs_ref_scene>::value, "hs_ref_scene");
 static_assert(std::is_standard_layout<hs_geometry>::value && std::is_trivial<hs_geometry>::value, "hs_geometry");
 static_assert(offsetof(hs_scene, struct_size) == 0 && offsetof(hs_options, struct_size) == 0 &&
                   offsetof(hs_summary, struct_size) == 0 && offsetof(hs_ref_scene, struct_size) == 0 &&
-                  offsetof(hs_geometry, struct_size) == 0 &&
-                  offsetof(hs_ref_summary, struct_size) == 0,
+                  offsetof(hs_geometry, struct_size) == 0 && offsetof(hs_ref_summary, struct_size) == 0,
               "struct_size comes first");
 static_assert(std::is_same<decltype(&hs_solve), int (*)(const hs_scene *, const hs_options *, hs_solution **)>::value,
               "hs_solve signature");

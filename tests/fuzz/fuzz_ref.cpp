@@ -20,7 +20,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   std::string in(reinterpret_cast<const char *>(data), size);
   std::string f[4];
   for (int i = 0, k = 0; i < int(in.size()) && k < 4; ++i) {
-    if (in[size_t(i)] == '|') { ++k; continue; }
+    if (in[size_t(i)] == '|') {
+      ++k;
+      continue;
+    }
     f[k] += in[size_t(i)];
   }
   if (f[0].size() > 64 || f[1].size() > 64 || f[2].size() > 64) return 0;

@@ -70,8 +70,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   for (size_t i = 0; i < n; ++i) x[i] = r.real();
   for (int k = 0; k < 4; ++k) {
     for (size_t i = 0; i < n; ++i) out[i] = 12345.0;
-    int (*fn)(const hs_solution *, size_t, const double *, double *) =
-        k == 0 ? hs_eval_Bx : k == 1 ? hs_eval_slip : k == 2 ? hs_eval_work : hs_eval_pressure;
+    int (*fn)(const hs_solution *, size_t, const double *, double *) = k == 0   ? hs_eval_Bx
+                                                                       : k == 1 ? hs_eval_slip
+                                                                       : k == 2 ? hs_eval_work
+                                                                                : hs_eval_pressure;
     const int es = fn(sol, n, x, out);
     require(known(es));
     for (size_t i = 0; i < n; ++i) require(es == HS_OK ? std::isfinite(out[i]) : out[i] == 12345.0);
@@ -87,32 +89,32 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   // a fuzzed parameter (bounded loads keep one input's cost in milliseconds)
   const uint8_t g = r.byte();
   [&] {
-  if ((g & 1) && std::fabs(sc.sigma_over_fp0) < 50 && std::fabs(sc.Q_over_fP) < 0.999) {
-    hs_geometry geo;
-    hs_geometry_default(&geo);
-    geo.kind = (g & 2) ? HS_GEOMETRY_POWER_LAW : HS_GEOMETRY_FLAT_ROUNDED;
-    const double par = r.real();
-    if (geo.kind == HS_GEOMETRY_POWER_LAW) geo.exponent = par;
-    else geo.flat_over_a = par;
-    hs_solution *gs = nullptr;
-    const int gst = hs_solve_geometry(&sc, &geo, nullptr, &gs);
-    require(known(gst));
-    if (gst != HS_OK) {
-      require(gs == nullptr);
-      return;
+    if ((g & 1) && std::fabs(sc.sigma_over_fp0) < 50 && std::fabs(sc.Q_over_fP) < 0.999) {
+      hs_geometry geo;
+      hs_geometry_default(&geo);
+      geo.kind = (g & 2) ? HS_GEOMETRY_POWER_LAW : HS_GEOMETRY_FLAT_ROUNDED;
+      const double par = r.real();
+      if (geo.kind == HS_GEOMETRY_POWER_LAW) geo.exponent = par;
+      else geo.flat_over_a = par;
+      hs_solution *gs = nullptr;
+      const int gst = hs_solve_geometry(&sc, &geo, nullptr, &gs);
+      require(known(gst));
+      if (gst != HS_OK) {
+        require(gs == nullptr);
+        return;
+      }
+      hs_summary gm;
+      gm.struct_size = sizeof gm;
+      require(hs_solution_summary(gs, &gm) == HS_OK);
+      require(std::isfinite(gm.b1) && std::isfinite(gm.b2) && gm.d1 >= 0 && gm.d2 >= 0);
+      // nothing is integrated when Q = sigma = 0 (stuck); otherwise the order is reported
+      require(gm.regime == HS_REGIME_STUCK || gm.quadrature_order > 0);
+      double gx[1] = {0.999 * gm.a}, gout[1];
+      // HS_ERR_OVERFLOW is a correct answer when, e.g., E* is denormal
+      const int bs = hs_eval_Bx(gs, 1, gx, gout);
+      require(known(bs) && (bs != HS_OK || std::isfinite(gout[0])));
+      hs_solution_free(gs);
     }
-    hs_summary gm;
-    gm.struct_size = sizeof gm;
-    require(hs_solution_summary(gs, &gm) == HS_OK);
-    require(std::isfinite(gm.b1) && std::isfinite(gm.b2) && gm.d1 >= 0 && gm.d2 >= 0);
-    // nothing is integrated when Q = sigma = 0 (stuck); otherwise the order is reported
-    require(gm.regime == HS_REGIME_STUCK || gm.quadrature_order > 0);
-    double gx[1] = {0.999 * gm.a}, gout[1];
-    // HS_ERR_OVERFLOW is a correct answer when, e.g., E* is denormal
-    const int bs = hs_eval_Bx(gs, 1, gx, gout);
-    require(known(bs) && (bs != HS_OK || std::isfinite(gout[0])));
-    hs_solution_free(gs);
-  }
   }();
   // model selection (read last, so that earlier corpus inputs decode as before):
   // any model, rtol from the options above; AUTO must meet rtol when it succeeds

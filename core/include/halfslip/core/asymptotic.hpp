@@ -50,7 +50,8 @@ template <class T> struct edge_model {
 // K_N = p0 sqrt(2/a) (= (1/pi) sqrt(2/a) dP/da, eq 27, for Hertz);
 // q_st = (Q/pi - sigma x/4)/sqrt(a^2-x^2) -> (Q/pi - side sigma a/4)/sqrt(2 a z).
 template <class T> edge_model<T> hertz_edge(const hertz_scene<T> &sc, int side) {
-  using std::abs; using std::sqrt;
+  using std::abs;
+  using std::sqrt;
   edge_model<T> m;
   m.f = sc.f;
   m.Estar = sc.Estar;
@@ -101,16 +102,28 @@ template <class T> class edge_solution {
     reg = (s1 == 0 && s2 == 0) ? regime::stuck : (s1 * s2 < 0 ? regime::opposite_sign : regime::same_sign);
   }
   static int sgn(const T &v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
-  T d1() const { using std::abs; return abs(m1.d()); }
-  T d2() const { using std::abs; return abs(m2.d()); }
+  T d1() const {
+    using std::abs;
+    return abs(m1.d());
+  }
+  T d2() const {
+    using std::abs;
+    return abs(m2.d());
+  }
   T b1() const { return scene.a - d1(); }
   T b2() const { return scene.a - d2(); }
   int dir1() const { return sgn(m1.KT); }
   int dir2() const { return sgn(m2.KT); }
   // z: distance from the edge; 0 if x is in the stick zone
   int locate(const T &x, T &z) const {
-    if (d1() > 0 && x >= b1()) { z = scene.a - x; return 1; }
-    if (d2() > 0 && x <= -b2()) { z = scene.a + x; return 2; }
+    if (d1() > 0 && x >= b1()) {
+      z = scene.a - x;
+      return 1;
+    }
+    if (d2() > 0 && x <= -b2()) {
+      z = scene.a + x;
+      return 2;
+    }
     z = 0;
     return 0;
   }
@@ -164,8 +177,8 @@ template <class T> class edge_solution {
 // (loading = -1: sigma only), the full and the asymptotic energy dissipated
 // in one slip zone (a = p0 = f = E* = 1). Held equal: the load.
 template <class T> struct asymptotic_comparison {
-  hertz_scene<T> scene;   // the load
-  T d_full, d_asym;       // slip zone lengths (units of a)
+  hertz_scene<T> scene;  // the load
+  T d_full, d_asym;      // slip zone lengths (units of a)
   T energy_full, energy_asym;
   T fractional_error() const { return (energy_asym - energy_full) / energy_full; }
 };

@@ -26,7 +26,8 @@ namespace hs { namespace core {
 // max_iterations: the loop's limit (the default is never reached for valid
 // input: each step squares the relative gap); running out throws no_convergence.
 template <class T> T cel(T kc, T p, T a, T b, int max_iterations = 200) {
-  using std::abs; using std::sqrt;
+  using std::abs;
+  using std::sqrt;
   if (!(kc > 0) || !(p > 0)) throw error(status::internal, "cel: needs kc > 0 and p > 0");
   // The loop stops once kc and g agree to sqrt(eps): the last step is quadratic.
   const T ca = sqrt(boost::math::tools::epsilon<T>());
@@ -60,7 +61,10 @@ template <class T> T cel(T kc, T p, T a, T b, int max_iterations = 200) {
 // (tests/test_elliptic.cpp compares it with cel where both are defined).
 // A stick zone narrower than the range of T (large sigma) has such a modulus.
 template <class T> T cel_log(const T &kc, const T &lkc, const T &p, const T &a, const T &b) {
-  using std::log; using std::min; using std::pow; using std::sqrt;
+  using std::log;
+  using std::min;
+  using std::pow;
+  using std::sqrt;
   if (!(p > 0)) throw error(status::internal, "cel: needs p > 0");
   const T ks = pow(boost::math::tools::epsilon<T>(), T(0.6)) * min(T(1), sqrt(p));
   if (kc > ks) return cel(kc, p, a, b);

@@ -33,40 +33,40 @@
 
 namespace hs { namespace core {
 
-template <class T> struct cauchy_pair {
-  std::complex<T> F0{0, 0}, F1{0, 0};
-};
+template <class T> struct cauchy_pair { std::complex<T> F0{0, 0}, F1{0, 0}; };
 
 template <class T> class traction_panels {
  public:
   static constexpr int n = 20;
   struct panel {
-    T end, h;   // s = end + h t^2 on this half-piece
-    T m;        // the piece's midpoint (t = 1), the same number for both halves
-    T ba, bb;   // t-range of the base panel (children keep it)
-    T ta, tb;   // t-range of the panel
-    int half;   // index of the half-piece
+    T end, h;                    // s = end + h t^2 on this half-piece
+    T m;                         // the piece's midpoint (t = 1), the same number for both halves
+    T ba, bb;                    // t-range of the base panel (children keep it)
+    T ta, tb;                    // t-range of the panel
+    int half;                    // index of the half-piece
     std::array<T, n> s, wp, wq;  // nodes, weight * p, weight * q (weights of ds)
     std::array<T, n> p, q;       // values at the nodes (for interpolation)
   };
   struct half_piece {
-    T end, h, lo, hi;  // s-range [lo, hi]
-    T m;               // the piece's midpoint
+    T end, h, lo, hi;          // s-range [lo, hi]
+    T m;                       // the piece's midpoint
     std::size_t first, count;  // its panels
   };
 
   // dens(s, p, q) gives the densities; pts: sorted breakpoints, pts[0] = -a,
   // pts.back() = a; kinks: the breakpoints where p is log-singular (graded more).
-  template <class D>
-  traction_panels(const D &dens, const std::vector<T> &pts, const std::vector<T> &kinks) {
+  template <class D> traction_panels(const D &dens, const std::vector<T> &pts, const std::vector<T> &kinks) {
     using gl = boost::math::quadrature::gauss<T, n>;
-    using std::sqrt; using std::abs;
+    using std::abs;
+    using std::sqrt;
     // full node set on [-1, 1], ascending, and barycentric weights (-1)^k sqrt((1 - x^2) w)
     const auto &xs = gl::abscissa();
     const auto &ws = gl::weights();
     for (int k = 0; k < n / 2; ++k) {
-      xr_[n / 2 - 1 - k] = -xs[k]; wr_[n / 2 - 1 - k] = ws[k];
-      xr_[n / 2 + k] = xs[k]; wr_[n / 2 + k] = ws[k];
+      xr_[n / 2 - 1 - k] = -xs[k];
+      wr_[n / 2 - 1 - k] = ws[k];
+      xr_[n / 2 + k] = xs[k];
+      wr_[n / 2 + k] = ws[k];
     }
     for (int k = 0; k < n; ++k) lam_[k] = (k % 2 ? -1 : 1) * sqrt((1 - xr_[k] * xr_[k]) * wr_[k]);
     // values at the nodes of the left/right half of a panel from its own nodes:
@@ -109,7 +109,11 @@ template <class T> class traction_panels {
       }
     }
     for (const panel &pn : panels_)
-      for (int k = 0; k < n; ++k) { S_.push_back(pn.s[k]); WP_.push_back(pn.wp[k]); WQ_.push_back(pn.wq[k]); }
+      for (int k = 0; k < n; ++k) {
+        S_.push_back(pn.s[k]);
+        WP_.push_back(pn.wp[k]);
+        WQ_.push_back(pn.wq[k]);
+      }
   }
 
   T a() const { return a_; }
@@ -117,7 +121,8 @@ template <class T> class traction_panels {
 
   // F0 and F1 of p and q at zeta (Im zeta >= 0; on the real axis only off the contact).
   void cauchy(const std::complex<T> &zeta, cauchy_pair<T> &P, cauchy_pair<T> &Q) const {
-    P = {}; Q = {};
+    P = {};
+    Q = {};
     for (const half_piece &hp : halves_) {
       const std::complex<T> tau = std::sqrt((zeta - hp.end) / hp.h);
       if (far(tau, T(0), T(0.5)) && far(tau, T(0.5), T(1))) {  // far from every panel (lengths <= 1/2)
@@ -135,7 +140,8 @@ template <class T> class traction_panels {
 
   // Re F0[q](x + i0) for real x (the principal value on the contact), x not a breakpoint.
   T re_f0_q(const T &x) const {
-    using std::sqrt; using std::abs;
+    using std::abs;
+    using std::sqrt;
     T sum = 0;
     for (const half_piece &hp : halves_) {
       const T tau2 = (x - hp.end) / hp.h;
@@ -167,7 +173,14 @@ template <class T> class traction_panels {
   panel make_panel(const D &dens, const T &end, const T &h, const T &m, const T &t0, const T &t1, int half) {
     using std::abs;
     panel pn;
-    pn.end = end; pn.h = h; pn.m = m; pn.ta = t0; pn.tb = t1; pn.ba = t0; pn.bb = t1; pn.half = half;
+    pn.end = end;
+    pn.h = h;
+    pn.m = m;
+    pn.ta = t0;
+    pn.tb = t1;
+    pn.ba = t0;
+    pn.bb = t1;
+    pn.half = half;
     const T mid = (t0 + t1) / 2, hl = (t1 - t0) / 2;
     for (int k = 0; k < n; ++k) {
       const T t = mid + hl * xr_[k];
@@ -216,18 +229,31 @@ template <class T> class traction_panels {
       const T den = 1 / (dr * dr + zi * zi);
       const T rr = dr * den, ri = zi * den;
       const T r2r = rr * rr - ri * ri, r2i = 2 * rr * ri;
-      p0r += wp[k] * rr; p0i += wp[k] * ri; p1r += wp[k] * r2r; p1i += wp[k] * r2i;
-      q0r += wq[k] * rr; q0i += wq[k] * ri; q1r += wq[k] * r2r; q1i += wq[k] * r2i;
+      p0r += wp[k] * rr;
+      p0i += wp[k] * ri;
+      p1r += wp[k] * r2r;
+      p1i += wp[k] * r2i;
+      q0r += wq[k] * rr;
+      q0i += wq[k] * ri;
+      q1r += wq[k] * r2r;
+      q1i += wq[k] * r2i;
     }
-    P.F0 += std::complex<T>(p0r, p0i); P.F1 += std::complex<T>(p1r, p1i);
-    Q.F0 += std::complex<T>(q0r, q0i); Q.F1 += std::complex<T>(q1r, q1i);
+    P.F0 += std::complex<T>(p0r, p0i);
+    P.F1 += std::complex<T>(p1r, p1i);
+    Q.F0 += std::complex<T>(q0r, q0i);
+    Q.F1 += std::complex<T>(q1r, q1i);
   }
 
   // half `side` (0 left, 1 right) of a panel, with values from its interpolant
   panel child(const panel &pn, int side, bool with_p = true) const {
     using std::abs;
     panel c;
-    c.end = pn.end; c.h = pn.h; c.m = pn.m; c.ba = pn.ba; c.bb = pn.bb; c.half = pn.half;
+    c.end = pn.end;
+    c.h = pn.h;
+    c.m = pn.m;
+    c.ba = pn.ba;
+    c.bb = pn.bb;
+    c.half = pn.half;
     const T um = (pn.ta + pn.tb) / 2;
     c.ta = side == 0 ? pn.ta : um;
     c.tb = side == 0 ? um : pn.tb;
@@ -236,21 +262,26 @@ template <class T> class traction_panels {
     for (int i = 0; i < n; ++i) {
       T pv = 0, qv = 0;
       if (with_p)
-        for (int k = 0; k < n; ++k) { pv += M[i * n + k] * pn.p[k]; qv += M[i * n + k] * pn.q[k]; }
+        for (int k = 0; k < n; ++k) {
+          pv += M[i * n + k] * pn.p[k];
+          qv += M[i * n + k] * pn.q[k];
+        }
       else
         for (int k = 0; k < n; ++k) qv += M[i * n + k] * pn.q[k];
       const T t = mid + hl * xr_[i];
       c.s[i] = pn.end + pn.h * t * t;
       const T w = wr_[i] * hl * 2 * abs(pn.h) * t;
-      c.p[i] = pv; c.q[i] = qv;
-      c.wp[i] = w * pv; c.wq[i] = w * qv;
+      c.p[i] = pv;
+      c.q[i] = qv;
+      c.wp[i] = w * pv;
+      c.wq[i] = w * qv;
     }
     return c;
   }
 
   // a panel near the poles: bisected until they are far
-  void refine(const panel &pn, const std::complex<T> &tau, const std::complex<T> &zeta, int depth,
-              cauchy_pair<T> &P, cauchy_pair<T> &Q) const {
+  void refine(const panel &pn, const std::complex<T> &tau, const std::complex<T> &zeta, int depth, cauchy_pair<T> &P,
+              cauchy_pair<T> &Q) const {
     if (depth < 60 && !far(tau, pn.ta, pn.tb)) {
       refine(child(pn, 0), tau, zeta, depth + 1, P, Q);
       refine(child(pn, 1), tau, zeta, depth + 1, P, Q);
@@ -272,11 +303,19 @@ template <class T> class traction_panels {
       const T den = 1 / (d.real() * d.real() + d.imag() * d.imag());
       const T rr = d.real() * den, ri = -d.imag() * den;  // 1/d
       const T r2r = rr * rr - ri * ri, r2i = 2 * rr * ri;
-      p0r += pn.wp[k] * rr; p0i += pn.wp[k] * ri; p1r += pn.wp[k] * r2r; p1i += pn.wp[k] * r2i;
-      q0r += pn.wq[k] * rr; q0i += pn.wq[k] * ri; q1r += pn.wq[k] * r2r; q1i += pn.wq[k] * r2i;
+      p0r += pn.wp[k] * rr;
+      p0i += pn.wp[k] * ri;
+      p1r += pn.wp[k] * r2r;
+      p1i += pn.wp[k] * r2i;
+      q0r += pn.wq[k] * rr;
+      q0i += pn.wq[k] * ri;
+      q1r += pn.wq[k] * r2r;
+      q1i += pn.wq[k] * r2i;
     }
-    P.F0 += std::complex<T>(p0r, p0i); P.F1 += std::complex<T>(p1r, p1i);
-    Q.F0 += std::complex<T>(q0r, q0i); Q.F1 += std::complex<T>(q1r, q1i);
+    P.F0 += std::complex<T>(p0r, p0i);
+    P.F1 += std::complex<T>(p1r, p1i);
+    Q.F0 += std::complex<T>(q0r, q0i);
+    Q.F1 += std::complex<T>(q1r, q1i);
   }
 
   // The contribution of the (sub)panel sub of base panel pn to Re F0[q](x),
@@ -316,7 +355,8 @@ template <class T> class traction_panels {
   // PV int_{ta}^{tb} q(t)/(t - c) dt for the panel's interpolant q, c real in
   // [ta, tb], by subtraction of q(c).
   T subtract(const panel &pn, const T &c, const T &om) const {
-    using std::abs; using std::log;
+    using std::abs;
+    using std::log;
     const T mid = (pn.ta + pn.tb) / 2, hl = (pn.tb - pn.ta) / 2;
     const T u = (c - mid) / hl;  // in the reference interval
     // g(u) by the barycentric formula; node hit: exact value
@@ -324,14 +364,19 @@ template <class T> class traction_panels {
     int hit = -1;
     for (int k = 0; k < n; ++k) {
       const T d = u - xr_[k];
-      if (d == 0) { hit = k; r[k] = 0; }
-      else r[k] = lam_[k] / d;
+      if (d == 0) {
+        hit = k;
+        r[k] = 0;
+      } else r[k] = lam_[k] / d;
     }
     T gc;
     if (hit >= 0) gc = pn.q[hit];
     else {
       T num = 0, den = 0;
-      for (int k = 0; k < n; ++k) { num += r[k] * pn.q[k]; den += r[k]; }
+      for (int k = 0; k < n; ++k) {
+        num += r[k] * pn.q[k];
+        den += r[k];
+      }
       gc = num / den;
     }
     // sum_j W_j (g_j - g(c))/(t_j - c) = sum_j wr_j (g(u) - g_j)/(u - x_j) (the factors hl cancel),

@@ -39,11 +39,12 @@ namespace hs { namespace core {
 // Adds the Cauchy integrals of amp * sqrt(c^2 - (s - e)^2) on [e - c, e + c]
 // (closed form: pi amp c (X - nu), pi amp (nu/X - 1), nu = (zeta - e)/c,
 // X = sqrt(nu - 1) sqrt(nu + 1) ~ nu at infinity; Im zeta >= 0).
-template <class T> void add_semi_ellipse(const T &amp, const T &c, const T &e, const std::complex<T> &zeta,
-                                         cauchy_pair<T> &out) {
+template <class T>
+void add_semi_ellipse(const T &amp, const T &c, const T &e, const std::complex<T> &zeta, cauchy_pair<T> &out) {
   if (!(c > 0) || amp == 0) return;
   if (zeta.imag() == 0) {  // the real axis outside the support: all real (the surface off the contact)
-    using std::abs; using std::sqrt;
+    using std::abs;
+    using std::sqrt;
     const T nu = (zeta.real() - e) / c;
     if (abs(nu) > 1) {
       const T X = nu > 0 ? T(sqrt((nu - 1) * (nu + 1))) : T(-sqrt((nu - 1) * (nu + 1)));
@@ -64,9 +65,9 @@ template <class T> void add_semi_ellipse(const T &amp, const T &c, const T &e, c
 // half s = end +- h t^2 removes the square root at its end, and the panels in
 // t are graded geometrically towards the pole's image, so that every panel is
 // at least its own length from the pole (20-point rule: error < 1e-16).
-template <class T, class G>
-void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex<T> &zeta, cauchy_pair<T> &P,
-                    cauchy_pair<T> &Q, const std::vector<T> &kinks = {}) {
+template <class T, class G> void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex<T> &zeta,
+                                                cauchy_pair<T> &P, cauchy_pair<T> &Q,
+                                                const std::vector<T> &kinks = {}) {
   using std::abs;
   using gl = boost::math::quadrature::gauss<T, 20>;
   const auto &xs = gl::abscissa();
@@ -122,7 +123,10 @@ void cauchy_numeric(const G &dens, const std::vector<T> &pts, const std::complex
 template <class T> struct stress_tensor {
   T xx{0}, yy{0}, xy{0};
   // in-plane principal stresses and maximum shear
-  T radius() const { using std::hypot; return hypot((xx - yy) / 2, xy); }
+  T radius() const {
+    using std::hypot;
+    return hypot((xx - yy) / 2, xy);
+  }
   T max_principal() const { return (xx + yy) / 2 + radius(); }
   T min_principal() const { return (xx + yy) / 2 - radius(); }
   T max_shear() const { return radius(); }
@@ -163,11 +167,21 @@ template <class T> struct contact_state {
     return v;
   }
   void cauchy(const std::complex<T> &zeta, cauchy_pair<T> &P, cauchy_pair<T> &Q) const {
-    P = {}; Q = {};
+    P = {};
+    Q = {};
     if (closed && closed(zeta, P, Q)) return;
-    P = {}; Q = {};
-    if (panels) { panels->cauchy(zeta, P, Q); return; }
-    cauchy_numeric<T>([&](const T &s, T &pv, T &qv) { pv = p(s); qv = q(s); }, points(), zeta, P, Q, kinks);
+    P = {};
+    Q = {};
+    if (panels) {
+      panels->cauchy(zeta, P, Q);
+      return;
+    }
+    cauchy_numeric<T>(
+        [&](const T &s, T &pv, T &qv) {
+          pv = p(s);
+          qv = q(s);
+        },
+        points(), zeta, P, Q, kinks);
   }
 };
 
@@ -182,7 +196,10 @@ template <class T> stress_tensor<T> stress_at(const contact_state<T> &st, int bo
     using std::abs;
     stress_tensor<T> s;
     s.xx = surface_sxx(st, body, x);
-    if (abs(x) < st.a) { s.yy = -st.p(x); s.xy = -st.q(x); }
+    if (abs(x) < st.a) {
+      s.yy = -st.p(x);
+      s.xy = -st.q(x);
+    }
     return s;
   }
   cauchy_pair<T> P, Q;
@@ -238,13 +255,10 @@ template <class T> T surface_sxx(const contact_state<T> &st, int body, const T &
 }
 
 // Extremes of sigma_xx(x, 0) over |x| <= L.
-template <class T> struct surface_extremes {
-  T max, x_max, min, x_min, bulk;
-};
+template <class T> struct surface_extremes { T max, x_max, min, x_min, bulk; };
 
-template <class T>
-surface_extremes<T> surface_summary(const contact_state<T> &st, int body, const T &L, const std::vector<T> &special,
-                                    int samples = 400) {
+template <class T> surface_extremes<T> surface_summary(const contact_state<T> &st, int body, const T &L,
+                                                       const std::vector<T> &special, int samples = 400) {
   using std::abs;
   std::vector<T> xs;
   for (int i = 0; i <= samples; ++i) xs.push_back(-L + 2 * L * T(i) / T(samples));
@@ -268,11 +282,28 @@ surface_extremes<T> surface_summary(const contact_state<T> &st, int body, const 
     T c = hi - g * (hi - lo), d = lo + g * (hi - lo);
     T fc = sgn * surface_sxx(st, body, c), fd = sgn * surface_sxx(st, body, d);
     for (int it = 0; it < 60 && hi - lo > 16 * eps<T>() * (abs(lo) + abs(hi) + st.a); ++it) {
-      if (fc > fd) { hi = d; d = c; fd = fc; c = hi - g * (hi - lo); fc = sgn * surface_sxx(st, body, c); }
-      else { lo = c; c = d; fc = fd; d = lo + g * (hi - lo); fd = sgn * surface_sxx(st, body, d); }
+      if (fc > fd) {
+        hi = d;
+        d = c;
+        fd = fc;
+        c = hi - g * (hi - lo);
+        fc = sgn * surface_sxx(st, body, c);
+      } else {
+        lo = c;
+        c = d;
+        fc = fd;
+        d = lo + g * (hi - lo);
+        fd = sgn * surface_sxx(st, body, d);
+      }
     }
-    if (fc > sgn * best) { best = sgn * fc; xb = c; }
-    if (fd > sgn * best) { best = sgn * fd; xb = d; }
+    if (fc > sgn * best) {
+      best = sgn * fc;
+      xb = c;
+    }
+    if (fd > sgn * best) {
+      best = sgn * fd;
+      xb = d;
+    }
     return {best, xb};
   };
   const auto mx = refine(+1), mn = refine(-1);
@@ -331,7 +362,10 @@ template <class T> contact_state<T> hertz_state(const hertz_solution<T> &sol, co
 // General pressures: the pressure's kinks are quadrature split points too.
 template <class T> contact_state<T> general_state_of(const general_solution<T> &sol, const T &bulk2 = T(0)) {
   contact_state<T> st = make_state<T>(sol, bulk2);
-  for (const T &k : sol.user_kinks()) { st.breaks.push_back(k); st.kinks.push_back(k); }
+  for (const T &k : sol.user_kinks()) {
+    st.breaks.push_back(k);
+    st.kinks.push_back(k);
+  }
   return st;
 }
 
@@ -348,8 +382,10 @@ template <class T> contact_state<T> general_state_of(const general_solution<T> &
 template <class T> class stick_series {
  public:
   template <class Q> stick_series(const Q &q, const T &lo, const T &hi, int max_degree = 256) : lo_(lo), hi_(hi) {
-    using std::abs; using std::cos;
-    m_ = (lo + hi) / 2; w_ = (hi - lo) / 2;
+    using std::abs;
+    using std::cos;
+    m_ = (lo + hi) / 2;
+    w_ = (hi - lo) / 2;
     std::vector<T> g;
     for (int N = 32; N <= max_degree; N *= 2) {
       // values at the Chebyshev-Lobatto points u_j = cos(j pi/N), theta = (u + 1) pi/2
@@ -360,14 +396,18 @@ template <class T> class stick_series {
       c_.assign(N + 1, T(0));
       for (int k = 0; k <= N; ++k) {
         T sum = 0;
-        for (int j = 0; j <= N; ++j) sum += (j == 0 || j == N ? T(0.5) : T(1)) * g[j] * cos(pi<T>() * T(j * k % (2 * N)) / N);
+        for (int j = 0; j <= N; ++j)
+          sum += (j == 0 || j == N ? T(0.5) : T(1)) * g[j] * cos(pi<T>() * T(j * k % (2 * N)) / N);
         c_[k] = sum * 2 / N * (k == 0 || k == N ? T(0.5) : T(1));
       }
       T big = 0, tail = 0;
       for (int k = 0; k <= N; ++k) big = std::max(big, T(abs(c_[k])));
       for (int k = 3 * N / 4; k <= N; ++k) tail = std::max(tail, T(abs(c_[k])));
       tail_ = tail / big;
-      if (tail <= 64 * eps<T>() * big) { ok_ = true; return; }
+      if (tail <= 64 * eps<T>() * big) {
+        ok_ = true;
+        return;
+      }
     }
     c_.clear();
   }
@@ -375,24 +415,30 @@ template <class T> class stick_series {
   T tail() const { return tail_; }
   bool inside(const T &x) const { return x > lo_ && x < hi_; }
   T operator()(const T &x) const {
-    using std::asin; using std::sqrt;
+    using std::asin;
+    using std::sqrt;
     // theta from the distance to the nearer end (accurate near both ends)
     const T th = x >= m_ ? 2 * asin(sqrt((hi_ - x) / (2 * w_))) : pi<T>() - 2 * asin(sqrt((x - lo_) / (2 * w_)));
     const T u = 2 * th / pi<T>() - 1;
     T b1 = 0, b2 = 0;  // Clenshaw
     for (std::size_t k = c_.size(); k-- > 1;) {
       const T b0 = 2 * u * b1 - b2 + c_[k];
-      b2 = b1; b1 = b0;
+      b2 = b1;
+      b1 = b0;
     }
     return u * b1 - b2 + c_[0];
   }
 
  private:
   T x_of(const T &u) const {
-    using std::cos; using std::sin;
+    using std::cos;
+    using std::sin;
     const T th = (u + 1) * pi<T>() / 2;
     // ends from the distances (hi - x = 2w sin^2(theta/2)), exact at theta = 0, pi
-    if (th <= pi<T>() / 2) { const T sh = sin(th / 2); return hi_ - 2 * w_ * sh * sh; }
+    if (th <= pi<T>() / 2) {
+      const T sh = sin(th / 2);
+      return hi_ - 2 * w_ * sh * sh;
+    }
     const T ch = cos(th / 2);
     return lo_ + 2 * w_ * ch * ch;
   }

@@ -24,7 +24,7 @@ template <class Derived, class T, class Scene> struct canonical_solution {
   bool mirror = false;  // canonical x = -x (edges swapped)
   // canonical, dimensionless: right zone (beta1, 1), left zone (-1, -beta2)
   T beta1{1}, beta2{1}, delta1{0}, delta2{0};
-  T width{2};  // beta1 + beta2 (stick-zone length / a), accurate when tiny
+  T width{2};              // beta1 + beta2 (stick-zone length / a), accurate when tiny
   int dirR = 0, dirL = 0;  // canonical slip directions
   int iterations = 0;
   T rtol{0};
@@ -71,8 +71,8 @@ template <class Derived, class T, class Scene> struct canonical_solution {
   // Shear traction q(x) on body 1 (docs/conventions.md), generic form
   // (traction.hpp); kinks: user-frame points where the pressure is not smooth.
   T traction_generic(const T &x, const std::vector<T> &kinks = {}) const {
-    return monotonic_traction<T>([&](const T &v) { return self().pressure(v); }, scene.a, scene.f, b1(), b2(),
-                                 dir1(), dir2(), x, kinks);
+    return monotonic_traction<T>([&](const T &v) { return self().pressure(v); }, scene.a, scene.f, b1(), b2(), dir1(),
+                                 dir2(), x, kinks);
   }
   T work(const T &x) const {
     using std::abs;

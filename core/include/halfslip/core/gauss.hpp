@@ -70,7 +70,8 @@ template <class T> struct rule_cache {
 // until the correction is below a few eps (quadratic convergence: one more
 // step then changes nothing). Running out of max_newton throws no_convergence.
 template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n, int max_newton = 100) {
-  using std::abs; using std::cos;
+  using std::abs;
+  using std::cos;
   auto r = std::make_shared<gl_rule<T>>();
   r->x.resize(n);
   r->w.resize(n);
@@ -164,8 +165,9 @@ template <class T> std::shared_ptr<const gl_rule<T>> gauss_legendre(int n) {
 
 // The rule of order n with its cumulative matrix (same cache).
 template <class T> std::shared_ptr<const gl_cumulative<T>> gauss_legendre_cumulative(int n) {
-  return gauss_detail::cached<T, gl_cumulative<T>>(&gauss_detail::rule_cache<T>::entry::cum, n,
-                                                   [n] { return gauss_detail::make_cumulative<T>(gauss_legendre<T>(n)); });
+  return gauss_detail::cached<T, gl_cumulative<T>>(&gauss_detail::rule_cache<T>::entry::cum, n, [n] {
+    return gauss_detail::make_cumulative<T>(gauss_legendre<T>(n));
+  });
 }
 
 }}  // namespace hs::core

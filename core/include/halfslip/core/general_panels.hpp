@@ -16,9 +16,7 @@
 #include "numerics.hpp"
 #include "pressure.hpp"
 
-namespace hs { namespace core {
-
-namespace gdetail {
+namespace hs { namespace core { namespace gdetail {
 
 template <class T> struct panel {
   T lo, hi;
@@ -36,9 +34,7 @@ template <class T> int grading_power() {
 // Geometric layers around graded kinks for the fixed-rule energies and slips
 // (see make_panels); none up to long double, where the map alone suffices
 // (m = 4) and the double-precision cost and results stay as they were.
-template <class T> int kink_layers() {
-  return std::numeric_limits<T>::digits10 > 20 ? 6 : 0;
-}
+template <class T> int kink_layers() { return std::numeric_limits<T>::digits10 > 20 ? 6 : 0; }
 
 // Panels on [0, pi/2] in theta for a zone of length d next to a stick zone
 // of length e; kinks: theta values with their grading flag.
@@ -51,7 +47,10 @@ template <class T> int kink_layers() {
 // sees the kink at 1/6 of its length: both gave ~1e-30 at order 64.
 template <class T>
 std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<T, bool>> kinks, int layers = 0) {
-  using std::asin; using std::sqrt; using std::min; using std::ldexp;
+  using std::asin;
+  using std::ldexp;
+  using std::min;
+  using std::sqrt;
   const T half_pi = pi<T>() / 2;
   std::vector<std::pair<T, bool>> pts = kinks;
   pts.push_back({T(0), false});
@@ -118,9 +117,9 @@ template <class T> T kink_distance(int side, const T &d, const T &x) {
 
 // The breakpoints inside zone `side` as theta = asin(sqrt(dist/d)), with their
 // grading flag (the kink -> theta map of every panel set of a zone).
-template <class T>
-std::vector<std::pair<T, bool>> zone_kinks(const pressure_model<T> &pm, int side, const T &d) {
-  using std::asin; using std::sqrt;
+template <class T> std::vector<std::pair<T, bool>> zone_kinks(const pressure_model<T> &pm, int side, const T &d) {
+  using std::asin;
+  using std::sqrt;
   std::vector<std::pair<T, bool>> kinks;
   for (const auto &bp : pm.breakpoints()) {
     const T dist = kink_distance(side, d, bp.x);
@@ -183,7 +182,10 @@ template <class T, class F> void for_nodes_c(const std::vector<panel<T>> &panels
       } else {
         const T u = pn.grade < 0 ? (1 + t) / 2 : (1 - t) / 2;
         T um1 = 1, geo = 1;  // u^(m-1), 1 + u + ... + u^(m-1)
-        for (int k = 0; k < m - 1; ++k) { um1 *= u; geo += um1; }
+        for (int k = 0; k < m - 1; ++k) {
+          um1 *= u;
+          geo += um1;
+        }
         const T off = L * um1 * u;
         const T jac = L * T(m) * um1 / 2;
         if (pn.grade < 0) f(pn.lo + off, top + L * (1 - t) / 2 * geo, jac * w, jac);
@@ -196,7 +198,7 @@ template <class T, class F> void for_nodes_c(const std::vector<panel<T>> &panels
 // The nodes of one slip zone in theta (t = stick edge +- d sin^2 theta) with
 // what the zone energy and slip need there.
 template <class T> struct zone_nodes {
-  int n = 0;                     // nodes per panel
+  int n = 0;  // nodes per panel
   T d{0};
   std::vector<panel<T>> panels;
   std::vector<T> s2, c2, w, jac;  // sin^2, cos^2 (each accurate), weight, d theta/d x
@@ -207,10 +209,11 @@ template <class T> struct zone_nodes {
 
 // cut: an extra (ungraded) panel end in (0, pi/2), if any; graded_only: keep
 // only the graded panels (the high-order inner rule of hgrad_nodes).
-template <class T>
-zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d, const T &e, int n,
-                              const T *cut = nullptr, bool graded_only = false) {
-  using std::asin; using std::sin; using std::sqrt;
+template <class T> zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d, const T &e, int n,
+                                                 const T *cut = nullptr, bool graded_only = false) {
+  using std::asin;
+  using std::sin;
+  using std::sqrt;
   zone_nodes<T> z;
   z.n = n;
   z.d = d;
@@ -225,7 +228,12 @@ zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d,
     z.panels.swap(g);
   }
   const std::size_t N = z.panels.size() * std::size_t(n);
-  z.s2.reserve(N); z.c2.reserve(N); z.w.reserve(N); z.jac.reserve(N); z.H.reserve(N); z.p.reserve(N);
+  z.s2.reserve(N);
+  z.c2.reserve(N);
+  z.w.reserve(N);
+  z.jac.reserve(N);
+  z.H.reserve(N);
+  z.p.reserve(N);
   for_nodes_c<T>(z.panels, n, [&](const T &th, const T &thc, const T &w, const T &jac) {
     const T sn = sin(th), cs = sin(thc);
     const T s2 = sn * sn, c2 = cs * cs;
@@ -243,6 +251,4 @@ zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d,
   return z;
 }
 
-}  // namespace gdetail
-
-}}  // namespace hs::core
+}}}  // namespace hs::core::gdetail

@@ -18,18 +18,29 @@
 
 namespace hs { namespace core {
 
-template <class T>
-class general_solution : public canonical_solution<general_solution<T>, T, general_scene<T>> {
+template <class T> class general_solution : public canonical_solution<general_solution<T>, T, general_scene<T>> {
  public:
   using base = canonical_solution<general_solution<T>, T, general_scene<T>>;
-  using base::reg; using base::beta1; using base::beta2; using base::delta1; using base::delta2;
-  using base::width; using base::rtol; using base::scene; using base::mirror; using base::negate;
-  using base::dirR; using base::dirL; using base::iterations; using base::sign; using base::locate;
+  using base::beta1;
+  using base::beta2;
+  using base::delta1;
+  using base::delta2;
+  using base::dirL;
+  using base::dirR;
+  using base::iterations;
+  using base::locate;
+  using base::mirror;
+  using base::negate;
+  using base::reg;
+  using base::rtol;
+  using base::scene;
+  using base::sign;
+  using base::width;
   int continuation_steps = 0;
-  int order = 0;            // Gauss-Legendre order per panel of the accepted residual
-  int max_order = 1024;     // largest order of the energies and slips (general_options::max_order)
+  int order = 0;         // Gauss-Legendre order per panel of the accepted residual
+  int max_order = 1024;  // largest order of the energies and slips (general_options::max_order)
   std::shared_ptr<const pressure_model<T>> owned;  // mirrored view, if any
-  const pressure_model<T> *pm = nullptr;            // canonical pressure (must outlive)
+  const pressure_model<T> *pm = nullptr;           // canonical pressure (must outlive)
 
   T quad_tol() const {
     using std::cbrt;
@@ -40,7 +51,10 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   // C_Z(xi) = int_Z p_hat(t) / (R(t) (t - xi)) dt (principal value when xi in Z)
   // for the canonical point xi at distance dl from the stick edge of zone pz.
   T cauchy(int zside, int pz, const T &dl) const {
-    using std::asin; using std::cos; using std::sin; using std::sqrt;
+    using std::asin;
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
     const T d = zside > 0 ? delta1 : delta2;
     if (!(d > 0)) return T(0);
     const T e = width;
@@ -80,17 +94,19 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
       const T lo = cuts[i], hi = cuts[i + 1];
       if (!(hi > lo)) continue;
-      sum += integrate_ts<T>([&](const T &th, const T &xc) {
-        // exact distance to thx when thx is an end of this piece
-        T delta;
-        if (xc < 0 && lo == thx) delta = -xc;
-        else if (xc > 0 && hi == thx) delta = -xc;
-        else delta = th - thx;
-        const T thc = (xc > 0 && hi == half_pi) ? xc : half_pi - th;
-        const T den = sin(delta) * sin(2 * thx + delta);
-        if (den == 0) return T(0);
-        return (H(th, thc) - Hx) / den;
-      }, lo, hi, tol);
+      sum += integrate_ts<T>(
+          [&](const T &th, const T &xc) {
+            // exact distance to thx when thx is an end of this piece
+            T delta;
+            if (xc < 0 && lo == thx) delta = -xc;
+            else if (xc > 0 && hi == thx) delta = -xc;
+            else delta = th - thx;
+            const T thc = (xc > 0 && hi == half_pi) ? xc : half_pi - th;
+            const T den = sin(delta) * sin(2 * thx + delta);
+            if (den == 0) return T(0);
+            return (H(th, thc) - Hx) / den;
+          },
+          lo, hi, tol);
     }
     return zside > 0 ? sum / d : -sum / d;
   }
@@ -149,9 +165,7 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   // graded outer nodes; 2e-48 still from the layer next to them; the own
   // graded panel 6e-35). 6M + 1 (also interlacing) reaches the precision.
   // Not needed in double (m = 4: the errors stay below 1e-16).
-  static int graded_inner_order(int M) {
-    return std::numeric_limits<T>::digits10 > 20 ? 6 * M + 1 : 0;
-  }
+  static int graded_inner_order(int M) { return std::numeric_limits<T>::digits10 > 20 ? 6 * M + 1 : 0; }
 
   // h' at the first `count` outer nodes O of zone z (inner rules IR, IL;
   // G: the high-order rule on the graded panels of zone z, or null).
@@ -205,7 +219,8 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   // zone energy with the outer order M (see above), by parts:
   // int_0^d tail(d - u) h'(u) du with the tail cumulated on the outer nodes
   T energy_hat_order(int z, int M) const {
-    using std::abs; using std::sqrt;
+    using std::abs;
+    using std::sqrt;
     const T d = zone_length(z);
     if (!(d > 0)) return T(0);
     const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
@@ -242,7 +257,8 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   // interlace) get an extra end at theta_x = asin(sqrt(dl/d)); h is the sum
   // over the panels below it (relative accuracy also for dl << d).
   T hhat_order(int z, const T &dl, int M) const {
-    using std::asin; using std::sqrt;
+    using std::asin;
+    using std::sqrt;
     const T d = zone_length(z);
     if (!(dl > 0) || !(d > 0)) return T(0);
     const T half_pi = pi<T>() / 2;
@@ -283,12 +299,14 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
   // difference: geometric convergence on the smooth panels, N^(-4m) on the
   // graded ones).
   T energy_tol() const {
-    using std::max; using std::sqrt;
+    using std::max;
+    using std::sqrt;
     const T e34 = sqrt(eps<T>() * sqrt(eps<T>()));
     return max(rtol, e34);
   }
   template <class F> T by_order(const F &f) const {
-    using std::abs; using std::max;
+    using std::abs;
+    using std::max;
     const T tol = energy_tol();
     int M = 4;
     {
@@ -306,7 +324,8 @@ class general_solution : public canonical_solution<general_solution<T>, T, gener
       v = v2;
     }
     // the orders allowed ran out before two agreed: report it (no silent value)
-    throw error(status::no_convergence, "zone energy or slip: no two orders agreed up to the order limit (max_order)");
+    throw error(status::no_convergence,
+                "zone energy or slip: no two orders agreed up to the order limit (max_order)");
   }
   T energy_hat(int z) const {
     if (!(zone_length(z) > 0)) return T(0);

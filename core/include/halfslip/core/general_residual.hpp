@@ -19,9 +19,7 @@ namespace hs { namespace core {
 // e < ~1e-16 (large sigma; issue 13). The d-derivative below is O(ln(1/e));
 // the e-derivative is kept as e dI/de (the 1/e^(3/2) of each node times e
 // overflowed for e < 1e-205).
-template <class T> struct zone_sums {
-  T I1{0}, I2{0}, I1d{0}, I2d{0}, I1le{0}, I2le{0};
-};
+template <class T> struct zone_sums { T I1{0}, I2{0}, I1d{0}, I2d{0}, I1le{0}, I2le{0}; };
 
 // Single-zone integrals I_j = int_zone p_hat t^(j-1)/R(t) dt, j = 1, 2, and
 // (if jac) their derivatives in b1 and b2, by the composite rule of order n.
@@ -29,20 +27,23 @@ template <class T> struct zone_sums {
 // e = b1 + b2 > 0.
 template <class T>
 zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, const T &e, int n, bool jac) {
-  using std::asin; using std::cos; using std::sin; using std::sqrt;
+  using std::asin;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
   zone_sums<T> r;
   if (!(d > 0)) return r;
   const auto panels = gdetail::make_panels<T>(d, e, gdetail::zone_kinks(pm, side, d));
   gdetail::for_nodes<T>(panels, n, [&](const T &th, const T &w) {
     const T sn = sin(th), cs = cos(th);
     const T s2 = sn * sn, c2 = cs * cs;
-    const T ds = d * s2;           // distance to the stick edge
-    const T g = e + ds;            // |t - (other stick edge)|: t + b2 (R) or b1 - t (L)
+    const T ds = d * s2;  // distance to the stick edge
+    const T g = e + ds;   // |t - (other stick edge)|: t + b2 (R) or b1 - t (L)
     const gdetail::zone_point<T> x = gdetail::zone_point_at(side, d, s2, c2);
     T dph = 0;
     const T ph = jac ? pm.phi_dphi(x.t, x.dm, x.dp, dph) : pm.phi(x.t, x.dm, x.dp);
     const T sf = sqrt(x.far(side));  // sqrt of the distance to the far contact edge
-    const T psi = sf * ph;                 // p_hat / sqrt(distance to the near edge)
+    const T psi = sf * ph;           // p_hat / sqrt(distance to the near edge)
     const T rg = 1 / sqrt(g);
     const T base = 2 * d * c2 * psi * rg;  // integrand of I_1 (per dtheta)
     // t - c: +(ds + e/2) in zone R, -(ds + e/2) in zone L
@@ -77,14 +78,16 @@ template <class T> struct general_eval {
 template <class T> struct general_state {
   T x1;  // +d1 (same sign), -d1 (opposite sign)
   T e;   // b1 + b2
-  T d1() const { using std::abs; return abs(x1); }
+  T d1() const {
+    using std::abs;
+    return abs(x1);
+  }
   T d2() const { return 2 - d1() - e; }
   int sR() const { return x1 < 0 ? -1 : 1; }
 };
 
-template <class T>
-general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const T &s, const general_state<T> &st,
-                                 int n, bool jac) {
+template <class T> general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const T &s,
+                                                    const general_state<T> &st, int n, bool jac) {
   const T pi_ = pi<T>();
   const T d1 = st.d1(), d2 = st.d2(), e = st.e;
   const int sR = st.sR();

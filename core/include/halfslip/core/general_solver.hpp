@@ -54,7 +54,9 @@ template <class T> struct general_problem {
   // a full step below the step tolerance after a converging one: take it
   // without evaluating the residual there (it would only confirm the step)
   bool shortcut(state &st, const T &dx, const T &dy, const T &prev_step) const {
-    using std::abs; using std::exp; using std::max;
+    using std::abs;
+    using std::exp;
+    using std::max;
     if (prev_step >= 0 && max(abs(dx), abs(dy)) <= tol_step && max(abs(dx), abs(dy)) <= prev_step) {
       st.x1 += dx;
       st.e *= exp(dy);
@@ -65,7 +67,10 @@ template <class T> struct general_problem {
   // x1 = +-d1 moves by at most the contact half-width
   void cap_x(T &dx, T &dy) const {
     using std::abs;
-    if (abs(dx) > 1) { dy /= abs(dx); dx = dx > 0 ? T(1) : T(-1); }
+    if (abs(dx) > 1) {
+      dy /= abs(dx);
+      dx = dx > 0 ? T(1) : T(-1);
+    }
   }
   bool trial(const state &st, const T &lam, const T &dx, const T &dy, state &nst) const {
     using std::exp;
@@ -75,7 +80,8 @@ template <class T> struct general_problem {
     return nst.e > tiny && nd2 > st.d2() / 4 && nst.d1() < 2;
   }
   newton_steps<T> steps(const state &, const T &lam, const T &dx, const T &dy) const {
-    using std::abs; using std::max;
+    using std::abs;
+    using std::max;
     const T step = max(abs(lam * dx), abs(lam * dy));
     return {step, step};
   }
@@ -84,9 +90,8 @@ template <class T> struct general_problem {
 
 // Newton from a start at fixed order n; true on convergence. iterations is
 // increased by the iterations begun.
-template <class T>
-bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n, const T &tol_step,
-            int max_it, int &iterations, const general_eval<T> *r0 = nullptr) {
+template <class T> bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
+                               const T &tol_step, int max_it, int &iterations, const general_eval<T> *r0 = nullptr) {
   general_problem<T> p(pm, q, s, n, tol_step);
   const newton_outcome o = damped_newton(p, st, r0 ? *r0 : p.residual(st), max_it);
   iterations += o.iterations;
@@ -100,12 +105,10 @@ bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T
 // asymmetric one it is a start for the 2D Newton.) The iteration limit is
 // not an error: the result is only a start, which Newton validates (and
 // reports no_convergence if it cannot finish from it).
-template <class T>
-general_state<T> shear_only_start(const pressure_model<T> &pm, const T &q, int n) {
-  using std::abs; using std::sqrt;
-  auto F = [&](const T &d) {
-    return general_residual(pm, q, T(0), general_state<T>{d, 2 * (1 - d)}, n, false).F2;
-  };
+template <class T> general_state<T> shear_only_start(const pressure_model<T> &pm, const T &q, int n) {
+  using std::abs;
+  using std::sqrt;
+  auto F = [&](const T &d) { return general_residual(pm, q, T(0), general_state<T>{d, 2 * (1 - d)}, n, false).F2; };
   T lo = 0, hi = 1, flo = pi<T>() * q / 2, fhi = pi<T>() * (q - 1) / 2;
   int side = 0;
   const T tol = sqrt(eps<T>());
@@ -114,11 +117,13 @@ general_state<T> shear_only_start(const pressure_model<T> &pm, const T &q, int n
     if (!(d > lo && d < hi)) d = (lo + hi) / 2;
     const T fd = F(d);
     if (fd > 0) {
-      lo = d; flo = fd;
+      lo = d;
+      flo = fd;
       if (side == +1) fhi /= 2;
       side = +1;
     } else {
-      hi = d; fhi = fd;
+      hi = d;
+      fhi = fd;
       if (side == -1) flo /= 2;
       side = -1;
     }
@@ -142,9 +147,21 @@ template <class T> bool sliding_point(const pressure_model<T> &pm, const T &q, T
     T d = (lo * fhi - hi * flo) / (fhi - flo);
     if (!(d > lo && d < hi)) d = (lo + hi) / 2;
     const T fd = pm.tail(+1, d) - target;
-    if (fd < 0) { lo = d; flo = fd; if (side == -1) fhi /= 2; side = -1; }
-    else { hi = d; fhi = fd; if (side == +1) flo /= 2; side = +1; }
-    if (hi - lo <= 4 * eps<T>() * hi || fd == 0) { d_inf = fd == 0 ? d : (lo + hi) / 2; return true; }
+    if (fd < 0) {
+      lo = d;
+      flo = fd;
+      if (side == -1) fhi /= 2;
+      side = -1;
+    } else {
+      hi = d;
+      fhi = fd;
+      if (side == +1) flo /= 2;
+      side = +1;
+    }
+    if (hi - lo <= 4 * eps<T>() * hi || fd == 0) {
+      d_inf = fd == 0 ? d : (lo + hi) / 2;
+      return true;
+    }
   }
   return false;
 }
@@ -157,10 +174,13 @@ template <class T> bool sliding_point(const pressure_model<T> &pm, const T &q, T
 // be below the range of T: tiny_le is ln of the smallest width allowed).
 // below_range is set when the width would be below exp(tiny_le). The secant
 // limit is not an error: the result is only a start, validated by Newton.
-template <class T>
-bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int n, const T &tiny_le,
-                       general_state<T> &out, bool &below_range) {
-  using std::abs; using std::exp; using std::log; using std::max; using std::min;
+template <class T> bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int n,
+                                          const T &tiny_le, general_state<T> &out, bool &below_range) {
+  using std::abs;
+  using std::exp;
+  using std::log;
+  using std::max;
+  using std::min;
   T d_inf;
   if (!sliding_point(pm, q, d_inf) || !(d_inf > 0 && d_inf < 2)) return false;
   auto F1 = [&](const T &le) {
@@ -174,9 +194,15 @@ bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int 
     if (!(f1 != f0) || !(f0 == f0) || !(f1 == f1)) return false;
     T l2 = l1 - f1 * (l1 - l0) / (f1 - f0);
     l2 = min(l2, cap);
-    if (!(l2 > tiny_le)) { below_range = l2 <= tiny_le; return false; }
+    if (!(l2 > tiny_le)) {
+      below_range = l2 <= tiny_le;
+      return false;
+    }
     const T f2 = F1(l2);
-    l0 = l1; f0 = f1; l1 = l2; f1 = f2;
+    l0 = l1;
+    f0 = f1;
+    l1 = l2;
+    f1 = f2;
     if (abs(l1 - l0) <= T(1e-3) * (1 + abs(l1))) break;
   }
   const T e = exp(l1);
@@ -185,10 +211,11 @@ bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int 
 }
 
 // Continuation in s from s = 0 with the tangent predictor dx/ds = -J^-1 dF/ds.
-template <class T>
-bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
-                  const T &tol_step, int max_it, int &iterations, int &steps) {
-  using std::abs; using std::exp; using std::ldexp;
+template <class T> bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
+                                     const T &tol_step, int max_it, int &iterations, int &steps) {
+  using std::abs;
+  using std::exp;
+  using std::ldexp;
   T sc = 0;
   // (s may be denormal: s/4 and s 2^-40 then underflow to 0; every step
   // must make progress, else a zero step loops for ever: fuzzer input
@@ -233,10 +260,11 @@ bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_s
 // Solve a general scene for the pressure pm (dimensionless model; scene
 // gives a, p0, f, E* for the dimensional outputs). pm must outlive the
 // solution. Throws hs::core::error on bad input or failure.
-template <class T>
-general_solution<T> solve_general(const pressure_model<T> &pm, const general_scene<T> &sc,
-                                  const general_options<T> &opt = {}) {
-  using std::abs; using std::max; using std::sqrt;
+template <class T> general_solution<T> solve_general(const pressure_model<T> &pm, const general_scene<T> &sc,
+                                                     const general_options<T> &opt = {}) {
+  using std::abs;
+  using std::max;
+  using std::sqrt;
   validate(sc);
   if (opt.max_iterations < 1 || opt.max_order < 2 || !(opt.rtol >= 0))
     throw error(status::bad_option, "bad solver options");
@@ -245,8 +273,15 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
   sol.rtol = opt.rtol;
   sol.max_order = opt.max_order;
   T q = sc.q, s = sc.s;
-  if (q < 0) { sol.negate = true; q = -q; s = -s; }
-  if (s < 0) { sol.mirror = true; s = -s; }
+  if (q < 0) {
+    sol.negate = true;
+    q = -q;
+    s = -s;
+  }
+  if (s < 0) {
+    sol.mirror = true;
+    s = -s;
+  }
   if (sol.mirror && !pm.symmetric()) {
     auto mp = std::make_shared<mirrored_pressure<T>>(pm);
     sol.owned = mp;
@@ -255,7 +290,10 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
     sol.pm = &pm;
   }
   const pressure_model<T> &P = *sol.pm;
-  if (q == 0 && s == 0) { sol.reg = regime::stuck; return sol; }
+  if (q == 0 && s == 0) {
+    sol.reg = regime::stuck;
+    return sol;
+  }
 
   const T tolq = max(opt.rtol, 64 * eps<T>());
   const T tol_step = max(opt.rtol, 4 * eps<T>());
@@ -271,7 +309,8 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
   general_state<T> st;
   {
     hertz_scene<T> hs;
-    hs.q = q; hs.s = s;
+    hs.q = q;
+    hs.s = s;
     const auto h = solve_hertz(hs);
     st.x1 = h.reg == regime::opposite_sign ? -h.delta1 : h.delta1;
     st.e = h.width;
@@ -313,8 +352,7 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
     if (!gdetail::newton(P, q, T(0), s0, n, tol_step, opt.max_iterations, its))
       throw error(status::no_convergence, "general solver: no convergence at sigma = 0");
     trial = s0;
-    if (s > 0 && !gdetail::continuation(P, q, s, trial, n, tol_step, opt.max_iterations, its,
-                                        sol.continuation_steps))
+    if (s > 0 && !gdetail::continuation(P, q, s, trial, n, tol_step, opt.max_iterations, its, sol.continuation_steps))
       throw error(status::no_convergence, "general solver: continuation in sigma failed");
   }
   st = trial;
@@ -329,15 +367,13 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
         const T dx = -x.x1, dy = -x.x2;
         general_state<T> ns{st.x1 + dx, st.e * exp(dy)};
         // keep the regime of the accepted state unless the state sits on the boundary
-        if (ns.d2() > 0 && ns.e > 0 && (ns.x1 == 0 || (ns.x1 > 0) == (st.x1 > 0) || abs(st.x1) <= qtol))
-          st = ns;
+        if (ns.d2() > 0 && ns.e > 0 && (ns.x1 == 0 || (ns.x1 > 0) == (st.x1 > 0) || abs(st.x1) <= qtol)) st = ns;
       }
       n *= 2;
       break;
     }
     n *= 2;
-    if (2 * n > opt.max_order)
-      throw error(status::no_convergence, "general solver: quadrature order limit reached");
+    if (2 * n > opt.max_order) throw error(status::no_convergence, "general solver: quadrature order limit reached");
     // Newton at the doubled order from the residual just evaluated there
     if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its, &r2))
       throw error(status::no_convergence, "general solver: Newton iteration did not converge");
@@ -359,6 +395,5 @@ general_solution<T> solve_general(const pressure_model<T> &pm, const general_sce
   sol.dirL = 1;
   return sol;
 }
-
 
 }}  // namespace hs::core

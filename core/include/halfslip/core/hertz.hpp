@@ -23,8 +23,8 @@ namespace hs { namespace core {
 // One contact scene for every solver (Hertz and general pressures alike).
 template <class T> struct contact_scene {
   T a{1}, p0{1}, f{1}, Estar{1};  // p0 = 2P/(pi a)
-  T q{0};                          // Q / (f P), P = pi a p0 / 2
-  T s{0};                          // sigma / (f p0)
+  T q{0};                         // Q / (f P), P = pi a p0 / 2
+  T s{0};                         // sigma / (f p0)
 };
 template <class T> using hertz_scene = contact_scene<T>;
 template <class T> using general_scene = contact_scene<T>;
@@ -37,8 +37,8 @@ template <class T> struct solve_options {
 template <class T> void validate(const hertz_scene<T> &sc) {
   using boost::math::isfinite;
   using std::abs;
-  if (!isfinite(sc.a) || !isfinite(sc.p0) || !isfinite(sc.f) || !isfinite(sc.Estar) ||
-      !isfinite(sc.q) || !isfinite(sc.s))
+  if (!isfinite(sc.a) || !isfinite(sc.p0) || !isfinite(sc.f) || !isfinite(sc.Estar) || !isfinite(sc.q) ||
+      !isfinite(sc.s))
     throw error(status::not_finite, "scene has a NaN or infinite value");
   if (!(sc.a > 0)) throw error(status::bad_size, "contact half-width a must be > 0");
   if (!(sc.p0 > 0)) throw error(status::bad_size, "reference pressure p0 must be > 0");
@@ -47,11 +47,17 @@ template <class T> void validate(const hertz_scene<T> &sc) {
   if (!(abs(sc.q) < 1)) throw error(status::gross_sliding, "|Q| >= fP: gross sliding, no stick zone");
 }
 
-template <class T>
-struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>> {
+template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>> {
   using base = canonical_solution<hertz_solution<T>, T, hertz_scene<T>>;
-  using base::reg; using base::beta1; using base::beta2; using base::delta1; using base::delta2;
-  using base::width; using base::rtol; using base::scene; using base::half_width;
+  using base::beta1;
+  using base::beta2;
+  using base::delta1;
+  using base::delta2;
+  using base::half_width;
+  using base::reg;
+  using base::rtol;
+  using base::scene;
+  using base::width;
   // ln(width): the stick zone of a large-sigma scene can be narrower than the
   // range of T (width = 0); the opposite-sign slip and energies need its log
   T log_width{0};
@@ -86,9 +92,8 @@ struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>>
     if (!(dl > 0)) return T(0);
     if (reg != regime::opposite_sign) return 2 * sqrt_quadratic_integral(dl, half_width());
     // int_0^dl bhat(u) du; bhat ~ sqrt(u) at u = 0: tanh-sinh handles it.
-    const T I = integrate_ts<T>(
-        [&](const T &u, const T &uc) { return bhat(zone, uc < 0 ? -uc : u); }, T(0), dl,
-        quad_tol());
+    const T I = integrate_ts<T>([&](const T &u, const T &uc) { return bhat(zone, uc < 0 ? -uc : u); }, T(0), dl,
+                                quad_tol());
     return zone > 0 ? I : -I;
   }
 
@@ -136,9 +141,9 @@ struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>>
 };
 
 // Solve a Hertz scene. Throws hs::core::error on bad input or failure.
-template <class T>
-hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &opt = {}) {
-  using std::log; using std::sqrt;
+template <class T> hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const solve_options<T> &opt = {}) {
+  using std::log;
+  using std::sqrt;
   validate(sc);
   if (opt.max_iterations < 1) throw error(status::bad_option, "max_iterations must be >= 1");
   hertz_solution<T> sol;

@@ -48,7 +48,9 @@ template <class T> T log_width(const opposite_state<T> &st) {
 template <class T> struct opposite_basis {
   T op1, op2, Q, sQ, kc, lkc, RF, eRDb, RJc;
   explicit opposite_basis(const opposite_state<T> &st) {
-    using std::exp; using std::log; using std::sqrt;
+    using std::exp;
+    using std::log;
+    using std::sqrt;
     op2 = st.d1 + st.e;  // 1 + beta2
     op1 = st.d2 + st.e;  // 1 + beta1
     Q = op1 * op2;
@@ -65,7 +67,7 @@ template <class T> struct opposite_basis {
     }
     RF = cel_log(kc, lkc, T(1), T(1), T(1)) / sQ;
     const T C = cel_log(kc, lkc, T(1), T(1), T(0));
-    eRDb = 3 * C / (2 * sQ);  // e * R_D(0,Q,P), finite as e -> 0
+    eRDb = 3 * C / (2 * sQ);                                     // e * R_D(0,Q,P), finite as e -> 0
     RJc = 3 * cel_log(kc, lkc, 2 / op1, T(0), T(1)) / (Q * sQ);  // R_J(0,P,Q,2(1+beta2))
   }
 };
@@ -135,14 +137,12 @@ template <class T> void opposite_moments(const opposite_state<T> &st, T &A0, T &
 // the configuration (beta1, beta2) as (d1, d2, e).
 template <class T> T opposite_G_state(const opposite_state<T> &st, const T &dl) {
   const opposite_basis<T> B(st);
-  const T opx = st.d2 - dl;             // 1 + x
-  const T omx = st.d1 + st.e + dl;      // 1 - x
+  const T opx = st.d2 - dl;                      // 1 + x
+  const T omx = st.d1 + st.e + dl;               // 1 - x
   const T px = 2 * (st.e + dl) / (B.op1 * omx);  // q_x / Q, no cancellation
   const T RJq = 3 * cel_log(B.kc, B.lkc, px, T(0), T(1)) / (B.Q * B.sQ);
   return 4 * st.d1 * B.op2 / 3 * (B.RJc + opx / omx * RJq);
 }
-
-
 
 // Stick point of full sliding with opposite-sign zones, the limit of the
 // stick zone as s -> infinity: (2/pi)(c sqrt(1-c^2) + asin c) = q. With
@@ -151,7 +151,11 @@ template <class T> T opposite_G_state(const opposite_state<T> &st, const T &dl) 
 // w = sqrt(1 - c^2) = sin(psi/2), both without cancellation as q -> 1.
 // Running out of max_iterations throws no_convergence.
 template <class T> void sliding_stick_point(const T &q, T &c, T &w, int max_iterations = 100) {
-  using std::abs; using std::cbrt; using std::cos; using std::min; using std::sin;
+  using std::abs;
+  using std::cbrt;
+  using std::cos;
+  using std::min;
+  using std::sin;
   const T target = pi<T>() * (1 - q);
   T psi = min(cbrt(6 * target), pi<T>());
   int i = 0;
@@ -203,7 +207,8 @@ template <class T, class Basis> struct opposite_problem {
   // lengths are known to an ulp of 2, and F moves by F_c per unit length;
   // F_c ~ 1/(d1 + e) grows large as Q -> fP at large sigma)
   T floor(const eval &f) const {
-    using std::abs; using std::max;
+    using std::abs;
+    using std::max;
     return max(floor0, 64 * eps<T>() * f.mag + 8 * eps<T>() * (abs(f.F1c) + abs(f.F2c)));
   }
   jacobian2<T> jacobian(const state &st, const eval &r) {
@@ -218,12 +223,17 @@ template <class T, class Basis> struct opposite_problem {
   void cap_x(T &dx, T &dy) const {
     using std::abs;
     const T cap = 4;
-    if (near_boundary && abs(dx) > cap) { dy *= cap / abs(dx); dx = dx > 0 ? cap : -cap; }
+    if (near_boundary && abs(dx) > cap) {
+      dy *= cap / abs(dx);
+      dx = dx > 0 ? cap : -cap;
+    }
   }
   bool trial(const state &st, const T &lam, const T &dx, const T &dy, state &nst) {
-    using std::exp; using std::expm1; using std::log;
     using boost::math::expm1;
     using boost::math::isfinite;
+    using std::exp;
+    using std::expm1;
+    using std::log;
     rel_de = expm1(lam * dy);
     const T de = st.e * rel_de;
     if (!near_boundary) {
@@ -242,13 +252,17 @@ template <class T, class Basis> struct opposite_problem {
     // keep d1 + d2 + e = 2 exactly in the largest of the three
     if (nst.d1 >= nst.d2 && nst.d1 >= nst.e) nst.d1 = 2 - nst.d2 - nst.e;
     else if (nst.d2 >= nst.e) nst.d2 = 2 - nst.d1 - nst.e;
-    else { nst.e = 2 - nst.d1 - nst.d2; nst.le = log(nst.e); }
+    else {
+      nst.e = 2 - nst.d1 - nst.d2;
+      nst.le = log(nst.e);
+    }
     return isfinite(nst.le) && nst.e >= 0;
   }
   // relative change of each length (all three must settle); the stalled-step
   // test on the absolute change of d1, d2
   newton_steps<T> steps(const state &st, const T &, const T &, const T &) const {
-    using std::abs; using std::max;
+    using std::abs;
+    using std::max;
     return {max(max(abs(dd1) / st.d1, abs(dd2) / st.d2), T(abs(rel_de))), max(abs(dd1), abs(dd2))};
   }
   bool converged(const T &, const T &step, const T &norm, const T &floor) const {
@@ -280,9 +294,11 @@ template <> struct refine_type<double> { using type = long double; };
 // One Newton step with the residual and Jacobian evaluated in the wider type
 // R: removes the rounding error the residual's O(pi s) terms leave in the
 // lengths, so that d1, d2 come out to a few ulps relative, not absolute.
-template <class T, class R>
-opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T> &st) {
-  using std::abs; using std::exp; using std::expm1; using std::log;
+template <class T, class R> opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T> &st) {
+  using std::abs;
+  using std::exp;
+  using std::expm1;
+  using std::log;
   // a wider type may hold a stick zone that underflows in T (long double: e
   // down to ~1e-4900)
   const R le = R(log_width(st));
@@ -319,8 +335,13 @@ opposite_state<T> refine_opposite(const T &q, const T &s, const opposite_state<T
 // continuation in sigma from the boundary, where the solution is known.
 template <class T, class Basis = opposite_basis<T>>
 opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
-  using std::exp; using std::ldexp; using std::log; using std::max; using std::min; using std::sqrt;
   using boost::math::isfinite;
+  using std::exp;
+  using std::ldexp;
+  using std::log;
+  using std::max;
+  using std::min;
+  using std::sqrt;
   const T pi_ = pi<T>();
   const T m = q / (1 + sqrt(1 - q));  // same-sign d1 + s/4
   opposite_state<T> best{};
@@ -347,7 +368,9 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
     consider({1 - c_inf - e / 2, 1 + c_inf - e / 2, e, le});
   }
   if (best_norm < 0)
-    throw error(status::overflow, "opposite-sign regime: the logarithm of the stick-zone width is not representable (sigma/(f p0) too large)");
+    throw error(
+        status::overflow,
+        "opposite-sign regime: the logarithm of the stick-zone width is not representable (sigma/(f p0) too large)");
   opposite_state<T> st;
   int its = 0;
   using W = typename refine_type<T>::type;

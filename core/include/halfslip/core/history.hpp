@@ -61,10 +61,10 @@ template <class T> struct history_options {
 template <class T> struct history_vertex {
   T q{0}, s{0};
   T b1{1}, b2{1};
-  int dir1 = 0, dir2 = 0;  // slip direction of each edge zone at the vertex (0: stuck)
-  T energy1{0}, energy2{0};  // dissipated over the segment that ends here
-  size_t step_end = 0;       // number of steps up to this vertex
-  int cycle = 0;             // 0: path; k >= 1: k-th cycle of add_cycles
+  int dir1 = 0, dir2 = 0;      // slip direction of each edge zone at the vertex (0: stuck)
+  T energy1{0}, energy2{0};    // dissipated over the segment that ends here
+  size_t step_end = 0;         // number of steps up to this vertex
+  int cycle = 0;               // 0: path; k >= 1: k-th cycle of add_cycles
   size_t interior_merges = 0;  // interior slip patches merged so far (history::interior_merges)
   T step{0};                   // load step the segment was marched at (refined_history; 0: max_step)
   T error_estimate{0};         // refined_history: the segment's h/2h difference over 7
@@ -123,7 +123,8 @@ template <class T> endpoly<T> interpolate(const std::vector<T> &b, const std::ve
 }
 
 template <class T> T acosh1p(const T &w) {  // acosh(1 + w), w >= 0, accurate for small w
-  using std::log1p; using std::sqrt;
+  using std::log1p;
+  using std::sqrt;
   return log1p(w + sqrt(w * (w + 2)));
 }
 
@@ -132,7 +133,7 @@ template <class T> T acosh1p(const T &w) {  // acosh(1 + w), w >= 0, accurate fo
 // One step of the march: loads linear in u in [0, 1], stick-zone ends b1(u), b2(u).
 template <class T> struct history_step {
   T q0, s0, dq, ds;
-  T len{0};            // length of the step as a fraction of its segment
+  T len{0};  // length of the step as a fraction of its segment
   hdetail::endpoly<T> e1, e2;
   T b1a, b2a;          // ends at u = 0 (the knots of the previous step)
   int s1 = 0, s2 = 0;  // zone directions during the step (0: no zone)
@@ -156,8 +157,11 @@ template <class T> class history {
 
   // March from the current loads to (q, s) along a straight segment.
   void add_vertex(const T &qn, const T &sn) {
-    using std::abs; using std::ceil; using std::max; using std::min;
     using boost::math::isfinite;
+    using std::abs;
+    using std::ceil;
+    using std::max;
+    using std::min;
     if (!isfinite(qn) || !isfinite(sn)) throw error(status::not_finite, "history: a path vertex is not finite");
     if (!(abs(qn) < 1)) throw error(status::gross_sliding, "history: |Q| >= fP at a path vertex: gross sliding");
     const T dq = qn - q_, ds = sn - s_;
@@ -182,7 +186,8 @@ template <class T> class history {
       work_budget_ = 4000 * size_t(ceil(T(1) / h)) + 40000;  // residual evaluations per segment
       while (done < 1) {
         if (steps_.size() - seg_first > seg_budget)
-          throw error(status::no_convergence, "history: the march of a segment makes no progress (steps shrink without end)");
+          throw error(status::no_convergence,
+                      "history: the march of a segment makes no progress (steps shrink without end)");
         if ((m1_ == rec && b1_ >= 1 - 16 * eps<T>()) || (m2_ == rec && b2_ >= 1 - 16 * eps<T>())) {
           after_event(m1_ == rec && b1_ >= 1 - 16 * eps<T>() ? 3 : 4);
           decide(dq, ds);
@@ -211,7 +216,9 @@ template <class T> class history {
             if (end_driven_step(dq, ds, i, bi - db_max / 2, fmax, se)) {
               const T mv = max(abs(se.e1.bb - b1_), abs(se.e2.bb - b2_));
               if (mv <= db_max) {
-                st = se; frac = se.len; return true;
+                st = se;
+                frac = se.len;
+                return true;
               }
             }
           }
@@ -236,7 +243,12 @@ template <class T> class history {
               bool erased = false;
               for (int i = 1; i <= 2; ++i)
                 if ((i == 1 ? m1_ : m2_) == adv) erased = erase_at_limit(i, T(1e-5)) || erased;
-              if (erased) { ++near_erases; frac = min(cur, 1 - done); tries = -1; continue; }
+              if (erased) {
+                ++near_erases;
+                frac = min(cur, 1 - done);
+                tries = -1;
+                continue;
+              }
             }
             if (tries >= 1 && end_driven++ < 2 && by_end(frac)) break;
             frac /= 2;
@@ -244,7 +256,8 @@ template <class T> class history {
         }
         // events within the step
         int ev = event_in(st);
-        if ((ev == 7 || ev == 8) && abs(event_value(ev, nullptr, dq, ds, T(0))) <= 64 * eps<T>() * (abs(dq) + abs(ds))) {
+        if ((ev == 7 || ev == 8) &&
+            abs(event_value(ev, nullptr, dq, ds, T(0))) <= 64 * eps<T>() * (abs(dq) + abs(ds))) {
           after_event(ev);  // the zone opens at the start of the step (r_i was zero there)
           run_start_ = steps_.size();
           continue;
@@ -266,15 +279,28 @@ template <class T> class history {
               continue;
             }
             const T fm = event_value(ev, &sm, dq, ds, mid);
-            if ((fm > 0) == (fl > 0)) { lo = mid; fl = fm; } else { hi = mid; fh = fm; best = sm; best_frac = mid; }
-            if (hi - lo <= 8 * eps<T>() * frac || abs(fm) <= 8 * eps<T>()) { best = sm; best_frac = mid; break; }
+            if ((fm > 0) == (fl > 0)) {
+              lo = mid;
+              fl = fm;
+            } else {
+              hi = mid;
+              fh = fm;
+              best = sm;
+              best_frac = mid;
+            }
+            if (hi - lo <= 8 * eps<T>() * frac || abs(fm) <= 8 * eps<T>()) {
+              best = sm;
+              best_frac = mid;
+              break;
+            }
           }
           frac = best_frac;
           st = best;
           if (event_value(ev, &st, dq, ds, frac) != 0) apply_event_limit(ev, st);
           commit(st, dq, ds, frac);
           done += frac;
-          E1 += st.E1; E2 += st.E2;
+          E1 += st.E1;
+          E2 += st.E2;
           after_event(ev);
           decide(dq, ds);
           run_start_ = steps_.size();
@@ -285,15 +311,22 @@ template <class T> class history {
         }
         commit(st, dq, ds, frac);
         done += frac;
-        E1 += st.E1; E2 += st.E2;
+        E1 += st.E1;
+        E2 += st.E2;
         cur = min(2 * frac, hrun);
       }
     }
     history_vertex<T> v;
-    v.q = qn; v.s = sn; q_ = qn; s_ = sn;
-    v.b1 = b1_; v.b2 = b2_;
-    v.dir1 = s1_; v.dir2 = s2_;
-    v.energy1 = E1; v.energy2 = E2;
+    v.q = qn;
+    v.s = sn;
+    q_ = qn;
+    s_ = sn;
+    v.b1 = b1_;
+    v.b2 = b2_;
+    v.dir1 = s1_;
+    v.dir2 = s2_;
+    v.energy1 = E1;
+    v.energy2 = E2;
     v.step_end = steps_.size();
     v.interior_merges = interior_merges_;
     vertices_.push_back(v);
@@ -353,27 +386,39 @@ template <class T> class history {
     T len{0};
     T j[4];
   };
-  mutable jac_cache jac_;  // march state only (const evaluations never touch it)
-  int noop_erase_ = 0;     // limit events located short of the limit in this segment
+  mutable jac_cache jac_;       // march state only (const evaluations never touch it)
+  int noop_erase_ = 0;          // limit events located short of the limit in this segment
   size_t interior_merges_ = 0;  // interior slip patches merged with an edge zone (approximation)
-  mutable int open_sign_ = 0;  // direction of the zone that event 7/8 opens
+  mutable int open_sign_ = 0;   // direction of the zone that event 7/8 opens
   mutable size_t work_ = 0, work_budget_ = size_t(-1);  // residual evaluations in the current segment
 
   static int sgn(const T &v) { return (v > 0) - (v < 0); }
-  static T r(int i, const T &dq, const T &ds, const T &e) { return i == 1 ? dq / 2 - ds * e / 4 : dq / 2 + ds * e / 4; }
+  static T r(int i, const T &dq, const T &ds, const T &e) {
+    return i == 1 ? dq / 2 - ds * e / 4 : dq / 2 + ds * e / 4;
+  }
 
   // A zero-load step that moves the ends outwards at once (part of a zone sticks).
   void jump(const T &b1n, const T &b2n) {
     if (steps_.size() >= size_t(opt_.max_steps))
       throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
     history_step<T> st;
-    st.q0 = q_; st.s0 = s_; st.dq = 0; st.ds = 0;
-    st.b1a = b1_; st.b2a = b2_;
-    st.e1.bb = b1n; st.e1.g[0] = b1n - b1_; st.e1.deg = 0;
-    st.e2.bb = b2n; st.e2.g[0] = b2n - b2_; st.e2.deg = 0;
-    st.s1 = s1_; st.s2 = s2_;
+    st.q0 = q_;
+    st.s0 = s_;
+    st.dq = 0;
+    st.ds = 0;
+    st.b1a = b1_;
+    st.b2a = b2_;
+    st.e1.bb = b1n;
+    st.e1.g[0] = b1n - b1_;
+    st.e1.deg = 0;
+    st.e2.bb = b2n;
+    st.e2.g[0] = b2n - b2_;
+    st.e2.deg = 0;
+    st.s1 = s1_;
+    st.s2 = s2_;
     steps_.push_back(st);
-    b1_ = b1n; b2_ = b2n;
+    b1_ = b1n;
+    b2_ = b2n;
     run_start_ = steps_.size();
   }
 
@@ -388,12 +433,19 @@ template <class T> class history {
         const T bi = i == 1 ? b1_ : b2_;
         const T ri = r(i, dq, ds, e);
         if (si == 0) {
-          if (ri != 0) { si = sgn(ri); mi = adv; changed = true; run_start_ = steps_.size(); }
-          else mi = edge;
+          if (ri != 0) {
+            si = sgn(ri);
+            mi = adv;
+            changed = true;
+            run_start_ = steps_.size();
+          } else mi = edge;
           continue;
         }
         if (T(si) * ri > 0) {
-          if (mi != adv) { mi = adv; run_start_ = steps_.size(); }
+          if (mi != adv) {
+            mi = adv;
+            run_start_ = steps_.size();
+          }
           continue;
         }
         // recede with r_i = 0 if the stick zone can grow to e*, else the zone sticks whole
@@ -408,13 +460,15 @@ template <class T> class history {
         if (can) {
           const T bn = 2 * es - bo;
           if (bn > bi) {
-            if (i == 1) jump(bn, b2_); else jump(b1_, bn);
+            if (i == 1) jump(bn, b2_);
+            else jump(b1_, bn);
           }
           mi = rec;
           estar_ = es;
           run_start_ = steps_.size();
         } else {
-          if (i == 1) jump(T(1), b2_); else jump(b1_, T(1));
+          if (i == 1) jump(T(1), b2_);
+          else jump(b1_, T(1));
           si = 0;
           mi = edge;
           changed = true;
@@ -432,10 +486,14 @@ template <class T> class history {
   // Build the trial step to fraction `frac` of the segment with given end values.
   history_step<T> make_step(const T &dq, const T &ds, const T &frac, const T &b1n, const T &b2n) const {
     history_step<T> st;
-    st.q0 = q_; st.s0 = s_;
-    st.dq = dq * frac; st.ds = ds * frac;
-    st.b1a = b1_; st.b2a = b2_;
-    st.s1 = s1_; st.s2 = s2_;
+    st.q0 = q_;
+    st.s0 = s_;
+    st.dq = dq * frac;
+    st.ds = ds * frac;
+    st.b1a = b1_;
+    st.b2a = b2_;
+    st.s1 = s1_;
+    st.s2 = s2_;
     st.len = frac;
     // knots of the run: the starts of its previous steps (up to degree - 1 of them)
     std::vector<T> k1, k2, ku;
@@ -463,8 +521,12 @@ template <class T> class history {
       ku.push_back(-back / frac);
       back -= p.len;
     }
-    k1.push_back(b1_); k2.push_back(b2_); ku.push_back(T(0));
-    k1.push_back(b1n); k2.push_back(b2n); ku.push_back(T(1));
+    k1.push_back(b1_);
+    k2.push_back(b2_);
+    ku.push_back(T(0));
+    k1.push_back(b1n);
+    k2.push_back(b2n);
+    ku.push_back(T(1));
     st.e1 = hdetail::interpolate(k1, ku);
     st.e2 = hdetail::interpolate(k2, ku);
     if (m1_ == rec) st.e1 = mirror_end(st.e2, b1n);
@@ -504,7 +566,8 @@ template <class T> class history {
         else total += T(st.s2) * pm_->p(x);
         return total;
       }
-      if (first) first = false; else --k;
+      if (first) first = false;
+      else --k;
     }
     return total;  // stuck since the start: q was 0
   }
@@ -517,10 +580,12 @@ template <class T> class history {
     T lo = 0, hi = 1;  // outside at lo, inside at hi
     for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
       const T mid = (lo + hi) / 2;
-      if (inside(mid)) hi = mid; else lo = mid;
+      if (inside(mid)) hi = mid;
+      else lo = mid;
     }
     // 200 halvings reach 4 eps for T up to ~60 digits; beyond, say so
-    if (!(hi - lo <= 4 * eps<T>())) throw error(status::no_convergence, "history: stick-zone entry bisection ran out");
+    if (!(hi - lo <= 4 * eps<T>()))
+      throw error(status::no_convergence, "history: stick-zone entry bisection ran out");
     return hi;
   }
 
@@ -541,10 +606,11 @@ template <class T> class history {
 
   // Gauss-Legendre on [ua, ub] of f = g / sqrt(L1 L2), with u = u* -+ v^2 at a
   // nearly vanishing factor (root u* at or just outside the interval).
-  template <class F, class G1, class G2>
-  T integrate_rsing(const F &f, const G1 &L1, const G2 &L2, const history_step<T> &st, const T &ua, const T &ub,
-                    int depth) const {
-    using std::abs; using std::sqrt;
+  template <class F, class G1, class G2> T integrate_rsing(const F &f, const G1 &L1, const G2 &L2,
+                                                           const history_step<T> &st, const T &ua, const T &ub,
+                                                           int depth) const {
+    using std::abs;
+    using std::sqrt;
     const T l1a = L1(ua), l1b = L1(ub), l2a = L2(ua), l2b = L2(ub);
     auto ratio = [](const T &a, const T &b) {
       const T lo = std::min(a, b), hi = std::max(a, b);
@@ -586,7 +652,10 @@ template <class T> class history {
         const T stp = Lv(us) / d;  // L' has the sign that makes L grow into the interval
         const T nu = us - stp;
         if ((end > 0 && !(nu >= ue)) || (end < 0 && !(nu <= ue))) break;
-        if (abs(nu - us) <= 4 * eps<T>() * (1 + abs(us))) { us = nu; break; }
+        if (abs(nu - us) <= 4 * eps<T>() * (1 + abs(us))) {
+          us = nu;
+          break;
+        }
         us = nu;
       }
     }
@@ -632,7 +701,8 @@ template <class T> class history {
       if (!(ghi > 0)) return false;  // the end does not reach bt within frac_max
       std::uintmax_t it = 40;
       auto tol = [](const T &a, const T &b) { return abs(b - a) <= 4 * eps<T>() * abs(b); };
-      auto r = boost::math::tools::toms748_solve([&](const T &w) { return G(w, nullptr); }, lo, hi, glo, ghi, tol, it);
+      auto r = boost::math::tools::toms748_solve([&](const T &w) { return G(w, nullptr); }, lo, hi, glo, ghi, tol,
+                                                 it);
       if (it >= 40) return false;
       const T w = r.second;  // the side past the root: s_i F >= 0
       G(w, &out);
@@ -663,7 +733,10 @@ template <class T> class history {
   // One step to fraction `frac` of the segment. pin = 1 or 2 holds that advancing
   // end at pin_b instead of solving for it (see end_driven_step).
   history_step<T> take_step(const T &dq, const T &ds, const T &frac, int pin = 0, const T &pin_b = T(0)) const {
-    using std::abs; using std::max; using std::min; using std::sqrt;
+    using std::abs;
+    using std::max;
+    using std::min;
+    using std::sqrt;
     const bool a1 = m1_ == adv && pin != 1, a2 = m2_ == adv && pin != 2;
     auto ends = [&](const T &z1, const T &z2, T &b1n, T &b2n) {
       b1n = pin == 1 ? pin_b : a1 ? z1 : (m1_ == edge ? b1_ : T(0));
@@ -696,7 +769,8 @@ template <class T> class history {
     if (n == 0) return make_step(dq, ds, frac, b1n, b2n);
     auto resid = [&](const T &y1, const T &y2, T &f1, T &f2, bool strict = true) -> bool {
       if (++work_ > work_budget_)
-        throw error(status::no_convergence, "history: the march of a segment makes no progress (residual evaluations without end)");
+        throw error(status::no_convergence,
+                    "history: the march of a segment makes no progress (residual evaluations without end)");
       T c1, c2;
       ends(y1, y2, c1, c2);
       if (!strict && c1 + c2 > 0 && c1 < 1 + T(1e-3) && c2 < 1 + T(1e-3)) {
@@ -733,7 +807,12 @@ template <class T> class history {
     const bool reuse = jac_.valid && jac_.run == run_start_ && jac_.len == frac && jac_.a1 == a1 && jac_.a2 == a2;
     T j11 = 1, j12 = 0, j21 = 0, j22 = 1;
     bool fresh = !reuse;
-    if (reuse) { j11 = jac_.j[0]; j12 = jac_.j[1]; j21 = jac_.j[2]; j22 = jac_.j[3]; }
+    if (reuse) {
+      j11 = jac_.j[0];
+      j12 = jac_.j[1];
+      j21 = jac_.j[2];
+      j22 = jac_.j[3];
+    }
     T prev_fn = -1;
     int stall = 0;
     for (int it = 0; it < opt_.max_newton; ++it) {
@@ -755,8 +834,15 @@ template <class T> class history {
         j12 = a1 ? (f1 - h1) / hz : T(0);
       }
       if (fresh) {
-        jac_.valid = true; jac_.run = run_start_; jac_.len = frac; jac_.a1 = a1; jac_.a2 = a2;
-        jac_.j[0] = j11; jac_.j[1] = j12; jac_.j[2] = j21; jac_.j[3] = j22;
+        jac_.valid = true;
+        jac_.run = run_start_;
+        jac_.len = frac;
+        jac_.a1 = a1;
+        jac_.a2 = a2;
+        jac_.j[0] = j11;
+        jac_.j[1] = j12;
+        jac_.j[2] = j21;
+        jac_.j[3] = j22;
       }
       const bool was_fresh = fresh;
       fresh = false;
@@ -783,7 +869,9 @@ template <class T> class history {
         lam /= 2;
       }
 #ifdef HS_HISTORY_DEBUG
-      fprintf(stderr, "it %d z %.17g %.17g f %.3e %.3e d %.3e %.3e J %.3e %.3e %.3e %.3e ok %d\n", it, double(z1), double(z2), double(f1), double(f2), double(d1), double(d2), double(j11), double(j12), double(j21), double(j22), int(ok));
+      fprintf(stderr, "it %d z %.17g %.17g f %.3e %.3e d %.3e %.3e J %.3e %.3e %.3e %.3e ok %d\n", it, double(z1),
+              double(z2), double(f1), double(f2), double(d1), double(d2), double(j11), double(j12), double(j21),
+              double(j22), int(ok));
 #endif
       if (!ok && !was_fresh) {  // the old Jacobian failed: retry with a new one
         fresh = true;
@@ -800,9 +888,20 @@ template <class T> class history {
       // a residual that changes sign with little decrease has a kink at the root
       // (the new end at an earlier end position, where the traction has a square-root
       // cusp): the slope across the bracket replaces the one-sided slope (secant)
-      if (a1 && n1 != z1 && sgn(nf1) * sgn(f1) < 0 && abs(nf1) > abs(f1) / 8) { j11 = (f1 - nf1) / (z1 - n1); fresh = false; prev_fn = -1; }
-      if (a2 && n2 != z2 && sgn(nf2) * sgn(f2) < 0 && abs(nf2) > abs(f2) / 8) { j22 = (f2 - nf2) / (z2 - n2); fresh = false; prev_fn = -1; }
-      z1 = n1; z2 = n2; f1 = nf1; f2 = nf2;
+      if (a1 && n1 != z1 && sgn(nf1) * sgn(f1) < 0 && abs(nf1) > abs(f1) / 8) {
+        j11 = (f1 - nf1) / (z1 - n1);
+        fresh = false;
+        prev_fn = -1;
+      }
+      if (a2 && n2 != z2 && sgn(nf2) * sgn(f2) < 0 && abs(nf2) > abs(f2) / 8) {
+        j22 = (f2 - nf2) / (z2 - n2);
+        fresh = false;
+        prev_fn = -1;
+      }
+      z1 = n1;
+      z2 = n2;
+      f1 = nf1;
+      f2 = nf2;
       // at the rounding floor: |F_i| within a few ulps of z_i times dF_i/dz_i
       const bool c1 = !a1 || abs(f1) <= 64 * eps<T>() * (1 + abs(j11 * z1));
       const bool c2 = !a2 || abs(f2) <= 64 * eps<T>() * (1 + abs(j22 * z2));
@@ -852,7 +951,10 @@ template <class T> class history {
     if (noop_erase_ < 3 && m2_ == adv && limit_margin(2, &st) > limit_tol()) return 6;
     return 0;
   }
-  static T limit_tol() { using std::sqrt; return sqrt(eps<T>()) * 64; }
+  static T limit_tol() {
+    using std::sqrt;
+    return sqrt(eps<T>()) * 64;
+  }
   // v(x) = s_i q(x)/p(x) - 1 at a stuck point (<= 0 where the stick condition holds)
   T limit_ratio(int i, const T &x, const history_step<T> *st) const {
     const int si = i == 1 ? s1_ : s2_;
@@ -907,14 +1009,22 @@ template <class T> class history {
       for (int k = 1; k <= M; ++k) {
         const T d = L * T(k * k) / T(M * M) * T(0.75);
         const T v = limit_ratio(i, xat(d), nullptr);
-        if (v >= below) { d_in = d; continue; }
+        if (v >= below) {
+          d_in = d;
+          continue;
+        }
         if (d_in == 0 && at_end) {
           at_end = false;
           // look further in for the patch
           bool patch = false;
           for (int j = k + 1; j <= M; ++j) {
             const T dj = L * T(j * j) / T(M * M) * T(0.75);
-            if (limit_ratio(i, xat(dj), nullptr) >= below) { patch = true; d_in = dj; k = j; break; }
+            if (limit_ratio(i, xat(dj), nullptr) >= below) {
+              patch = true;
+              d_in = dj;
+              k = j;
+              break;
+            }
           }
           if (!patch) break;
           ++interior_merges_;
@@ -931,11 +1041,13 @@ template <class T> class history {
     }
     for (int it = 0; it < 200 && d_out - d_in > 4 * eps<T>() * (1 + L); ++it) {
       const T m = (d_in + d_out) / 2;
-      if (limit_ratio(i, xat(m), nullptr) >= below) d_in = m; else d_out = m;
+      if (limit_ratio(i, xat(m), nullptr) >= below) d_in = m;
+      else d_out = m;
     }
     if (!(d_out - d_in <= 4 * eps<T>() * (1 + L)))
       throw error(status::no_convergence, "history: friction-limit bisection ran out");
-    if (i == 1) jump(b1 - d_in, b2_); else jump(b1_, b2 - d_in);
+    if (i == 1) jump(b1 - d_in, b2_);
+    else jump(b1_, b2 - d_in);
     return true;
   }
   T event_value(int ev, const history_step<T> *st, const T &dq, const T &ds, const T &) const {
@@ -957,17 +1069,33 @@ template <class T> class history {
     if (ev == 4 && st.e2.bb > 1) st.e2.bb = 1;
   }
   void after_event(int ev) {
-    if (ev == 3 && b1_ >= 1 - 16 * eps<T>()) { s1_ = 0; m1_ = edge; b1_ = 1; }
-    if (ev == 4 && b2_ >= 1 - 16 * eps<T>()) { s2_ = 0; m2_ = edge; b2_ = 1; }
+    if (ev == 3 && b1_ >= 1 - 16 * eps<T>()) {
+      s1_ = 0;
+      m1_ = edge;
+      b1_ = 1;
+    }
+    if (ev == 4 && b2_ >= 1 - 16 * eps<T>()) {
+      s2_ = 0;
+      m2_ = edge;
+      b2_ = 1;
+    }
     if (ev == 5) erase_at_limit(1);
     if (ev == 6) erase_at_limit(2);
-    if (ev == 7 && m1_ == edge) { s1_ = open_sign_; m1_ = adv; }
-    if (ev == 8 && m2_ == edge) { s2_ = open_sign_; m2_ = adv; }
+    if (ev == 7 && m1_ == edge) {
+      s1_ = open_sign_;
+      m1_ = adv;
+    }
+    if (ev == 8 && m2_ == edge) {
+      s2_ = open_sign_;
+      m2_ = adv;
+    }
   }
 
   // ---- commit: energies ----------------------------------------------------
   void commit(history_step<T> &st, const T &dq, const T &ds, const T &frac) {
-    (void)dq; (void)ds; (void)frac;
+    (void)dq;
+    (void)ds;
+    (void)frac;
     if (steps_.size() >= size_t(opt_.max_steps))
       throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
     step_energy(st);
@@ -988,7 +1116,9 @@ template <class T> class history {
 
   // dissipation over the step: int_0^1 du int_zone s_i p hdot dx
   void step_energy(history_step<T> &st) const {
-    using std::cos; using std::sin; using std::sqrt;
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
     st.E1 = st.E2 = 0;
     if (st.dq == 0 && st.ds == 0) return;
     const auto ru = gauss_legendre<T>(opt_.order);
@@ -1004,7 +1134,10 @@ template <class T> class history {
   // int_lo^hi p(x) hdot(x) dx over a slip zone: x = lo + d (1 - cos th)/2 takes
   // both square-root ends; geometric panels in th near the stick end when e << d.
   T zone_rate(int z, const T &A, const T &B, const T &c, const T &e, const T &lo, const T &hi) const {
-    using std::acos; using std::cos; using std::sin; using std::sqrt;
+    using std::acos;
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
     const T d = hi - lo;
     if (!(d > 0)) return T(0);
     const T pi_ = pi<T>();
@@ -1059,7 +1192,8 @@ template <class T> class history {
         const bool plo = g(lo) > 0;
         for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
           const T m = (lo + hi) / 2;
-          if ((g(m) > 0) == plo) lo = m; else hi = m;
+          if ((g(m) > 0) == plo) lo = m;
+          else hi = m;
         }
         if (!(hi - lo <= 4 * eps<T>())) throw error(status::no_convergence, "history: crossing bisection ran out");
         return (lo + hi) / 2;
@@ -1068,7 +1202,10 @@ template <class T> class history {
       const bool in0 = g0 > 0, in1 = g1 > 0;
       if (!in0 && in1) ua = cross(T(0), T(1));
       else if (in0 && !in1) ub = cross(T(0), T(1));
-      else if (!in0 && !in1) { ua = cross(T(0), T(0.5)); ub = cross(T(0.5), T(1)); }
+      else if (!in0 && !in1) {
+        ua = cross(T(0), T(0.5));
+        ub = cross(T(0.5), T(1));
+      }
       auto rate = [&](const T &u) {
         const T b1 = st.b1(u), b2 = st.b2(u);
         return hdot(z, A, B, (b1 - b2) / 2, (b1 + b2) / 2, x);
@@ -1093,14 +1230,13 @@ template <class T> class history {
   }
 };
 
-
 enum class ramp_order { sigma_first = 0, together = 1, q_first = 2 };
 
 template <class T> struct cycle_result {
   int cycles = 0;
-  int cycles_to_steady = -1;  // first cycle that the next repeats; -1: not reached
-  bool shakedown = false;     // the last cycle dissipates nothing
-  T energy1{0}, energy2{0};   // over the last cycle
+  int cycles_to_steady = -1;                        // first cycle that the next repeats; -1: not reached
+  bool shakedown = false;                           // the last cycle dissipates nothing
+  T energy1{0}, energy2{0};                         // over the last cycle
   size_t last_cycle_first = 0, last_cycle_end = 0;  // vertex range [first - 1, end) of the last cycle
 };
 
@@ -1109,15 +1245,19 @@ template <class T> struct cycle_result {
 // that traces a straight line (in phase, or one amplitude zero) is marched
 // through its turning points exactly; otherwise by `segments` chords.
 // H: history<T> or refined_history<T> (add_vertex, vertices, tag_last_vertex, q, s).
-template <class T, class H>
-cycle_result<T> add_cycles(H &h, const T &qm, const T &qa, const T &sm, const T &sa, const T &phase_deg,
-                           int cycles, ramp_order order, int segments, const T &steady_rtol) {
-  using std::abs; using std::fmod; using std::max; using std::sin;
+template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const T &qa, const T &sm, const T &sa,
+                                                       const T &phase_deg, int cycles, ramp_order order, int segments,
+                                                       const T &steady_rtol) {
   using boost::math::isfinite;
+  using std::abs;
+  using std::fmod;
+  using std::max;
+  using std::sin;
   if (!isfinite(qm) || !isfinite(qa) || !isfinite(sm) || !isfinite(sa) || !isfinite(phase_deg))
     throw error(status::not_finite, "cycles: a parameter is not finite");
   if (cycles < 1 || cycles > 100000) throw error(status::bad_option, "cycles: need 1 <= cycles <= 100000");
-  if (segments < 4 || segments > 100000) throw error(status::bad_option, "cycles: segments per cycle out of 4..100000");
+  if (segments < 4 || segments > 100000)
+    throw error(status::bad_option, "cycles: segments per cycle out of 4..100000");
   if (!(abs(qm) + abs(qa) < 1)) throw error(status::gross_sliding, "cycles: |Qm| + |Qa| >= fP: gross sliding");
   const T pi_ = pi<T>();
   const T ph = phase_deg * pi_ / 180;
@@ -1130,9 +1270,13 @@ cycle_result<T> add_cycles(H &h, const T &qm, const T &qa, const T &sm, const T 
   auto go = [&](const T &q, const T &s) {
     if (q != h.q() || s != h.s()) h.add_vertex(q, s);
   };
-  if (order == ramp_order::sigma_first) { go(h.q(), s0); go(q0, s0); }
-  else if (order == ramp_order::q_first) { go(q0, h.s()); go(q0, s0); }
-  else go(q0, s0);
+  if (order == ramp_order::sigma_first) {
+    go(h.q(), s0);
+    go(q0, s0);
+  } else if (order == ramp_order::q_first) {
+    go(q0, h.s());
+    go(q0, s0);
+  } else go(q0, s0);
   // straight-line cycle: the phase is a multiple of 180 degrees or one amplitude is zero
   const T pm = fmod(abs(phase_deg), T(180));
   const bool line = qa == 0 || sa == 0 || pm == 0;
@@ -1169,7 +1313,10 @@ cycle_result<T> add_cycles(H &h, const T &qm, const T &qa, const T &sm, const T 
                         abs(v.b1 - pb1) <= steady_rtol && abs(v.b2 - pb2) <= steady_rtol;
       if (same) res.cycles_to_steady = c - 1;
     }
-    pE1 = E1; pE2 = E2; pb1 = v.b1; pb2 = v.b2;
+    pE1 = E1;
+    pE2 = E2;
+    pb1 = v.b1;
+    pb2 = v.b2;
   }
   res.shakedown = !(res.energy1 > 0) && !(res.energy2 > 0);
   return res;
@@ -1190,7 +1337,8 @@ template <class T, class EOf> bool ramp_recedes(const T &q, const T &s, const EO
   T lo = 0, hi = 1;  // e(lo) > target >= e(hi)
   for (int it = 0; it < 200 && hi - lo > 2 * eps<T>(); ++it) {
     const T mid = (lo + hi) / 2;
-    if (e_of(mid * q, mid * s) > target) lo = mid; else hi = mid;
+    if (e_of(mid * q, mid * s) > target) lo = mid;
+    else hi = mid;
   }
   if (!(hi - lo <= 2 * eps<T>())) throw error(status::no_convergence, "history: load bisection ran out");
   at_q = hi * q;
@@ -1246,7 +1394,9 @@ template <class T> class refined_history {
     fine_.reset(new history<T>(pm_, opt_));
   }
   void add_vertex(const T &q, const T &s) {
-    using std::abs; using std::max; using std::min;
+    using std::abs;
+    using std::max;
+    using std::min;
     const history<T> &base = *fine_;
     auto march = [&](const T &step) {
       std::unique_ptr<history<T>> r(new history<T>(base));
@@ -1277,13 +1427,19 @@ template <class T> class refined_history {
     }
     for (;;) {
       const T hn = h / 2;
-      if (prev && hn < min_step_) { est = T(-1); break; }
+      if (prev && hn < min_step_) {
+        est = T(-1);
+        break;
+      }
       std::unique_ptr<history<T>> next;
       try {
         next = march(hn);
       } catch (const error &e) {
         if (e.code() != status::no_convergence) throw;
-        if (!prev && hn / 2 >= min_step_) { h = hn; continue; }  // neither converged yet: finer
+        if (!prev && hn / 2 >= min_step_) {
+          h = hn;
+          continue;
+        }  // neither converged yet: finer
         if (!prev) throw;
         refine_failed_ = true;  // keep the coarser march; its estimate stays above rtol
         est = T(-1);

@@ -13,14 +13,11 @@ namespace hs { namespace core {
 // the caller's own singularity test (x is then inf or NaN, as IEEE division
 // gives it). A Newton correction is -x for b = F: negating the quotient is
 // exact, so this is bitwise the -(...)/det the solvers wrote before.
-template <class T> struct solve2x2_result {
-  T det, x1, x2;
-};
+template <class T> struct solve2x2_result { T det, x1, x2; };
 
 // with the determinant already known (the same matrix applied to several b)
-template <class T>
-solve2x2_result<T> solve2x2(const T &a11, const T &a12, const T &a21, const T &a22, const T &det, const T &b1,
-                            const T &b2) {
+template <class T> solve2x2_result<T> solve2x2(const T &a11, const T &a12, const T &a21, const T &a22, const T &det,
+                                               const T &b1, const T &b2) {
   return {det, (b1 * a22 - b2 * a12) / det, (a11 * b2 - a21 * b1) / det};
 }
 
@@ -31,15 +28,11 @@ solve2x2_result<T> solve2x2(const T &a11, const T &a12, const T &a21, const T &a
 
 // Jacobian of two residuals in the step coordinates (x, y); y is a
 // logarithm (ln e, the stick-zone length), x the other unknown.
-template <class T> struct jacobian2 {
-  T a11, a12, a21, a22;
-};
+template <class T> struct jacobian2 { T a11, a12, a21, a22; };
 
 // Step sizes of an accepted Newton step: `conv` for the problem's own
 // convergence test, `noise` for the stalled-step test of the kernel.
-template <class T> struct newton_steps {
-  T conv, noise;
-};
+template <class T> struct newton_steps { T conv, noise; };
 
 struct newton_outcome {
   bool converged;
@@ -74,8 +67,7 @@ struct newton_outcome {
 //   bool converged(lam, conv_step, norm, floor)
 // st holds the start on entry and the last iterate on exit; r is the residual
 // at the start.
-template <class P>
-newton_outcome damped_newton(P &p, typename P::state &st, typename P::eval r, int max_iterations) {
+template <class P> newton_outcome damped_newton(P &p, typename P::state &st, typename P::eval r, int max_iterations) {
   using T = typename P::real;
   using std::abs;
   auto norm_of = [](const typename P::eval &f) { return T(abs(f.F1) + abs(f.F2)); };
@@ -94,7 +86,10 @@ newton_outcome damped_newton(P &p, typename P::state &st, typename P::eval r, in
     const T level0 = abs(dx) + abs(dy);
     if (p.shortcut(st, dx, dy, prev_step)) return {true, it};
     const T cap = 4;
-    if (abs(dy) > cap) { dx *= cap / abs(dy); dy = dy > 0 ? cap : -cap; }
+    if (abs(dy) > cap) {
+      dx *= cap / abs(dy);
+      dy = dy > 0 ? cap : -cap;
+    }
     p.cap_x(dx, dy);
     T lam = 1;
     typename P::state nst{};

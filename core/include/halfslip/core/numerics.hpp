@@ -56,10 +56,12 @@ template <class T> T sinh_minus_y(const T &y) {
 // Integral of sqrt(u^2 - w^2) du from u = w to u = w + delta (w > 0, delta >= 0),
 // accurate to a few ulps for all delta/w (no 1 - cosh cancellation).
 template <class T> T sqrt_quadratic_integral(const T &delta, const T &w) {
-  using std::asinh; using std::sqrt; using std::log;
+  using std::asinh;
+  using std::log;
+  using std::sqrt;
   if (!(delta > 0)) return T(0);
   const T S = sqrt(delta * (2 * w + delta));  // sqrt(U^2 - w^2), U = w + delta
-  if (!(w > 0)) return (w + delta) * S / 2;  // w = 0: integral of u du
+  if (!(w > 0)) return (w + delta) * S / 2;   // w = 0: integral of u du
   if (S <= w) {
     // u = w cosh(t): w^2/4 (sinh 2Theta - 2Theta), Theta = asinh(S/w) <= asinh(1)
     const T theta = asinh(S / w);
@@ -73,7 +75,8 @@ template <class T> T sqrt_quadratic_integral(const T &delta, const T &w) {
 // Pi_hat(1 - xi) = integral_xi^1 sqrt(1 - t^2) dt as a function of the distance
 // c = 1 - xi in [0, 2]; accurate for small c.
 template <class T> T pressure_tail(const T &c) {
-  using std::asin; using std::sqrt;
+  using std::asin;
+  using std::sqrt;
   if (!(c > 0)) return T(0);
   const T theta = 2 * asin(sqrt(c / 2));  // acos(1 - c)
   return y_minus_sin(2 * theta) / 4;
@@ -84,8 +87,7 @@ template <class T> T pressure_tail(const T &c) {
 // rtol is the termination tolerance; the convergence is quadratic so the
 // error is typically far below it.
 template <class T, class F>
-T integrate_ts(const F &f, const T &lo, const T &hi, const T &rtol, T *err = nullptr,
-               T *L1 = nullptr) {
+T integrate_ts(const F &f, const T &lo, const T &hi, const T &rtol, T *err = nullptr, T *L1 = nullptr) {
   if (!(hi > lo)) return T(0);
   // Abscissae closer than eps^4 to an end are dropped: with integrable
   // singularities no stronger than 1/sqrt, what they carry is below eps^2.

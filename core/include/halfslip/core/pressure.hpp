@@ -54,7 +54,8 @@ template <class T> class pressure_model {
   // distance to the nearer edge (phi is smooth up to the edges), accurate to
   // eps^(2/3): used only in Newton Jacobians, never in a residual.
   virtual T dphi(const T &x, const T &dm, const T &dp) const {
-    using std::cbrt; using std::min;
+    using std::cbrt;
+    using std::min;
     const T h = cbrt(eps<T>()) * min(min(dm, dp), T(1)) / 2;
     return (phi(x + h, dm + h, dp - h) - phi(x - h, dm - h, dp + h)) / (2 * h);
   }
@@ -78,7 +79,8 @@ template <class T> class pressure_model {
   // Richardson extrapolation from z = h, 2h, 4h (error O(h^3)) with h chosen
   // to balance that against rounding amplified by ~10.
   virtual T edge_phi(int side) const {
-    using std::cbrt; using std::min;
+    using std::cbrt;
+    using std::min;
     const T h = min(T(1) / 64, T(cbrt(eps<T>())) / 4);
     auto at = [&](const T &z) {
       const T x = side > 0 ? 1 - z : z - 1;
@@ -101,8 +103,7 @@ template <class T> class pressure_model {
 };
 
 // Integral of f(w) over [0, 1] by tanh-sinh split at given points (in w).
-template <class T, class F>
-T integrate_split(const F &f, std::vector<T> cuts, const T &tol) {
+template <class T, class F> T integrate_split(const F &f, std::vector<T> cuts, const T &tol) {
   return integrate_pieces<T>([&](const T &w, const T &) { return f(w); }, T(0), T(1), std::move(cuts), tol);
 }
 
@@ -168,9 +169,10 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
  public:
   // beta = b_f / a in [0, 1)
   explicit flat_rounded_pressure(const T &beta) : beta_(beta) {
-    using std::acos; using std::sqrt; using std::asin;
-    if (!(beta >= 0) || !(beta < 1))
-      throw error(status::bad_geometry, "flat punch: need 0 <= b_f/a < 1");
+    using std::acos;
+    using std::asin;
+    using std::sqrt;
+    if (!(beta >= 0) || !(beta < 1)) throw error(status::bad_geometry, "flat punch: need 0 <= b_f/a < 1");
     phi0_ = asin(beta);
     c0_ = sqrt((1 - beta) * (1 + beta));
     t0_ = beta / c0_;
@@ -239,10 +241,13 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
  private:
   // phi and (if d) phi' = d phi / dx (analytic).
   T eval(const T &x, const T &dm, const T &dp, T *d) const {
-    using std::abs; using std::log; using std::sqrt; using std::min;
+    using std::abs;
+    using std::log;
+    using std::min;
+    using std::sqrt;
     const T ax = abs(x);
-    const T dist = min(dm, dp);               // distance to the nearer edge
-    const T c = sqrt(dist * (2 - dist));      // sqrt(1 - x^2), cos(phi)
+    const T dist = min(dm, dp);           // distance to the nearer edge
+    const T c = sqrt(dist * (2 - dist));  // sqrt(1 - x^2), cos(phi)
     const T s0 = beta_;
     if (s0 == 0) {
       if (d) *d = 0;
@@ -256,7 +261,8 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
       const T z1 = t0_ * c / ax, z2 = c / c0_;
       const T h1 = atanh_ratio(z1), h2 = atanh_ratio(z2);
       if (d) {
-        const T dd = 2 * t0_ * (-t0_ * t0_ * k_ratio(z1, h1) / (ax * ax * ax) + ax * k_ratio(z2, h2) / (c0_ * c0_)) / g_;
+        const T dd = 2 * t0_ * (-t0_ * t0_ * k_ratio(z1, h1) / (ax * ax * ax) + ax * k_ratio(z2, h2) / (c0_ * c0_)) /
+                     g_;
         *d = x < 0 ? -dd : dd;
       }
       return (pf + 2 * t0_ * (h1 - h2)) / g_;
@@ -305,7 +311,8 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     T lo = 0, hi = 1, b = T(0.5);
     for (int it = 0; it < 400; ++it) {
       const T h = load_factor(b) / (b * b) - target;
-      if (h > 0) lo = b; else hi = b;
+      if (h > 0) lo = b;
+      else hi = b;
       // d/db [g/b^2] = g'/b^2 - 2 g / b^3
       const T dh = load_factor_derivative(b) / (b * b) - 2 * load_factor(b) / (b * b * b);
       T nb = b - h / dh;
@@ -339,7 +346,8 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
 template <class T> class power_law_pressure final : public pressure_model<T> {
  public:
   explicit power_law_pressure(const T &n) : n_(n) {
-    using std::floor; using std::abs;
+    using std::abs;
+    using std::floor;
     if (!(n > 1) || !(n < 1000)) throw error(status::bad_geometry, "power law: need 1 < n < 1000");
     m_ = (n - 1) / 2;
     const T hn = n / 2;
@@ -358,14 +366,20 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
   // directly (a few rounding errors, divided by n in a), or in logarithms
   // where a^n under- or overflows.
   static T half_width_from_load(const T &P, const T &Estar, const T &coef, const T &n) {
-    using std::exp; using std::lgamma; using std::log; using std::pow; using std::sqrt; using std::isnormal;
+    using std::exp;
+    using std::isnormal;
+    using std::lgamma;
+    using std::log;
+    using std::pow;
+    using std::sqrt;
     if (!(coef > 0)) throw error(status::bad_size, "power law: profile coefficient must be > 0");
     if (!(n > 1) || !(n < 1000)) throw error(status::bad_geometry, "power law: need 1 < n < 1000");
     const T ratio = exp(lgamma(n / 2 + 1) - lgamma((n + 1) / 2));
     const T an = 2 * P / (Estar * n * coef * sqrt(pi<T>())) * ratio;
     if (isnormal(an)) return pow(an, 1 / n);
     return exp((log(2 * P) + lgamma(n / 2 + 1) - lgamma((n + 1) / 2) - log(Estar) - log(n) - log(coef) -
-                T(0.5) * log(pi<T>())) / n);
+                T(0.5) * log(pi<T>())) /
+               n);
   }
   T phi(const T &x, const T &dm, const T &dp) const override {
     using std::min;
@@ -381,7 +395,11 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
   T edge_phi(int) const override { return n_ / 2; }  // F(+-1) = 2F1(..; 0) = 1
 
   T F(const T &x, const T &z) const {
-    using std::abs; using std::asinh; using std::cosh; using std::pow; using std::sinh;
+    using std::abs;
+    using std::asinh;
+    using std::cosh;
+    using std::pow;
+    using std::sinh;
     using std::sqrt;
     const T y = x * x;
     const T e = eps<T>();
@@ -417,7 +435,8 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     const T be = sqrt(z);
     // integrand decreasing from ((1+be)/2...)~1 to |x|^(n-1) at W = asinh(be/|x|);
     // beyond Tc it is below eps (times the remaining length, at most ~ln(1/eps))
-    using std::log; using std::min;
+    using std::log;
+    using std::min;
     const T Tc = -log(eps<T>()) / (n_ - 1) + 2;
     const T ax = abs(x);
     const T W = ax > 0 ? min(T(asinh(be / ax)), Tc) : Tc;
@@ -442,8 +461,7 @@ namespace detail {
 // The declared edge behaviour is alpha = 1/2; accepted in [1/4, 3/4].
 template <class T> void check_edge_exponent(const T &p1, const T &d1, const T &p2, const T &d2) {
   using std::log;
-  if (!(p1 > 0) || !(p2 > 0))
-    throw error(status::bad_geometry, "pressure must be positive inside the contact");
+  if (!(p1 > 0) || !(p2 > 0)) throw error(status::bad_geometry, "pressure must be positive inside the contact");
   const T alpha = log(p2 / p1) / log(d2 / d1);
   if (!(alpha >= T(0.25) && alpha <= T(0.75)))
     throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
@@ -462,7 +480,8 @@ template <class T> void check_edge_exponent(const T &p1, const T &d1, const T &p
 template <class T> class sampled_pressure final : public pressure_model<T> {
  public:
   sampled_pressure(const std::vector<T> &xs, const std::vector<T> &ps, const T &a) : a_(a) {
-    using std::sqrt; using std::abs;
+    using std::abs;
+    using std::sqrt;
     if (!(a > 0)) throw error(status::bad_size, "sampled pressure: a must be > 0");
     if (xs.size() != ps.size()) throw error(status::bad_geometry, "sampled pressure: size mismatch");
     T pmax = 0;
@@ -528,8 +547,8 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
   T dphi(const T &x, const T &, const T &) const override { return scale_ * interp(x, true); }
   std::vector<breakpoint<T>> breakpoints() const override { return bps_; }
   std::size_t knot_count() const { return x_.size(); }
-  T load() const { return P_; }      // P
-  T p0() const { return p0_; }       // 2P/(pi a)
+  T load() const { return P_; }  // P
+  T p0() const { return p0_; }   // 2P/(pi a)
   T half_width() const { return a_; }
 
  private:
@@ -560,9 +579,7 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
 template <class T> class callback_pressure final : public pressure_model<T> {
  public:
   using fn_type = std::function<T(const T &)>;
-  callback_pressure(fn_type fn, const T &a, std::vector<T> kinks = {}) : fn_(std::move(fn)), a_(a) {
-    init(kinks);
-  }
+  callback_pressure(fn_type fn, const T &a, std::vector<T> kinks = {}) : fn_(std::move(fn)), a_(a) { init(kinks); }
   callback_pressure(T (*fn)(const T &, void *), void *user, const T &a, std::vector<T> kinks = {})
       : fn_([fn, user](const T &x) { return fn(x, user); }), a_(a) {
     init(kinks);
@@ -579,7 +596,8 @@ template <class T> class callback_pressure final : public pressure_model<T> {
 
  private:
   void init(const std::vector<T> &kinks) {
-    using std::ldexp; using std::cos;
+    using std::cos;
+    using std::ldexp;
     if (!fn_) throw error(status::null_pointer, "pressure callback is null");
     if (!(a_ > 0)) throw error(status::bad_size, "callback pressure: a must be > 0");
     for (const T &k : kinks) {

@@ -55,14 +55,19 @@ namespace hs { namespace core {
 template <class T> struct error_estimate {
   T slip_zone{0};  // relative error of d1, d2
   T energy{0};     // relative error of E1, E2
-  T value() const { using std::max; return max(slip_zone, energy); }
+  T value() const {
+    using std::max;
+    return max(slip_zone, energy);
+  }
 };
 
 template <class T> T infinite() { return std::numeric_limits<T>::infinity(); }
 
 // Asymptotic model's estimate for the scene (units: the scene's a).
 template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T> &pm, const general_scene<T> &sc) {
-  using std::abs; using std::max; using std::min;
+  using std::abs;
+  using std::max;
+  using std::min;
   error_estimate<T> e;
   if (sc.q == 0 && sc.s == 0) return e;  // stuck: exact
   T D[2], d[2], w[2];
@@ -101,7 +106,8 @@ template <class T> T smallest_zone(const T &d1, const T &d2) {
 }
 
 template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &d2, const T &q, const T &s) {
-  using std::abs; using std::min;
+  using std::abs;
+  using std::min;
   error_estimate<T> e;
   const T dm = smallest_zone(d1, d2);
   if (!(dm > 0)) return e;  // stuck
@@ -122,7 +128,9 @@ error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, con
   // width ~ 2 sqrt(1 - q)), not when large sigma shrinks it onto the sliding
   // stick point, where d1, d2 are well conditioned (issue 13: at sigma/fp0 =
   // 50, width 7e-12 gave an estimate of 1.4e-3 for a result good to 1e-15)
-  using std::abs; using std::max; using std::sqrt;
+  using std::abs;
+  using std::max;
+  using std::sqrt;
   // (/4: margin for pressures whose shear-only stick zone is narrower than Hertz's)
   const T wc = max(width, T(sqrt(T(abs(1 - abs(q)))) / 4));
   e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / wc);
@@ -134,7 +142,8 @@ error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, con
 // for model selection (HS_MODEL_AUTO) the error the chosen model must meet,
 // in [2^-53, 0.5]; for one model, the quadrature's tolerance in [1e-15, 1e-2].
 template <class T> bool tolerance_in_range(const T &rtol, bool model_selection) {
-  using std::isfinite; using std::ldexp;
+  using std::isfinite;
+  using std::ldexp;
   if (!isfinite(rtol)) return false;
   if (rtol == 0) return true;
   if (model_selection) return rtol >= ldexp(T(1), -53) && rtol <= T(0.5);

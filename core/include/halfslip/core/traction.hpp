@@ -28,10 +28,11 @@ namespace hs { namespace core {
 
 // P: callable p(x) in the user frame. kinks: points of (-a, a) where p is not
 // smooth (split points of the quadrature). Returns q(x); 0 outside |x| < a.
-template <class T, class P>
-T monotonic_traction(const P &p, const T &a, const T &f, const T &b1, const T &b2, int dir1, int dir2,
-                     const T &x, const std::vector<T> &kinks = {}, T tol = T(0)) {
-  using std::atan; using std::sqrt;
+template <class T, class P> T monotonic_traction(const P &p, const T &a, const T &f, const T &b1, const T &b2,
+                                                 int dir1, int dir2, const T &x, const std::vector<T> &kinks = {},
+                                                 T tol = T(0)) {
+  using std::atan;
+  using std::sqrt;
   if (!(x > -a && x < a)) return T(0);
   const T d1 = a - b1, d2 = a - b2;
   if (d1 > 0 && x >= b1) return dir1 * f * p(x);

@@ -65,18 +65,16 @@
 #include <utility>
 #include <vector>
 
-namespace hs {
-namespace reference {
-namespace bem {
+namespace hs { namespace reference { namespace bem {
 
 // The state at the end of one path segment (one entry of the input path).
 struct vertex_state {
-  double Q = 0, sigma = 0;      // the vertex (normalized loads)
-  double b1 = 1, b2 = 1;        // stick zone (-b2, b1) at the vertex
-  int dir1 = 0, dir2 = 0;       // slip direction of zones 1, 2 at the vertex; 0 = that edge sticks
+  double Q = 0, sigma = 0;          // the vertex (normalized loads)
+  double b1 = 1, b2 = 1;            // stick zone (-b2, b1) at the vertex
+  int dir1 = 0, dir2 = 0;           // slip direction of zones 1, 2 at the vertex; 0 = that edge sticks
   double energy1 = 0, energy2 = 0;  // energy dissipated in zones 1, 2 over the segment ending here
-  int steps = 0;                // load increments used on the segment
-  int max_iterations = 0;       // largest active-set iteration count of an increment on the segment
+  int steps = 0;                    // load increments used on the segment
+  int max_iterations = 0;           // largest active-set iteration count of an increment on the segment
 };
 
 struct options {
@@ -96,16 +94,22 @@ inline double F(double u) { return u == 0.0 ? 0.0 : u * std::log(std::fabs(u)) -
 class marcher {
  public:
   marcher(const std::function<double(double)> &p, int n)
-      : n_(n), xe_(n + 1), xm_(n), w_(n), pbar_(n), G_(n, n), q_(Eigen::VectorXd::Zero(n)),
-        h_(Eigen::VectorXd::Zero(n)), stick_(n, 1), s_(n, 0) {
+      : n_(n),
+        xe_(n + 1),
+        xm_(n),
+        w_(n),
+        pbar_(n),
+        G_(n, n),
+        q_(Eigen::VectorXd::Zero(n)),
+        h_(Eigen::VectorXd::Zero(n)),
+        stick_(n, 1),
+        s_(n, 0) {
     if (n < 4) throw std::invalid_argument("bem: need at least 4 elements");
     for (int k = 0; k <= n; ++k) xe_[k] = -std::cos(pi * k / n);
     xe_[0] = -1.0;
     xe_[n] = 1.0;
-    static const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                                 0.8611363115940526};
-    static const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                                 0.3478548451374538};
+    static const double gx[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+    static const double gw[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
     for (int j = 0; j < n; ++j) {
       xm_[j] = 0.5 * (xe_[j] + xe_[j + 1]);
       w_[j] = xe_[j + 1] - xe_[j];
@@ -317,9 +321,8 @@ class marcher {
 // zones at that vertex and the energies dissipated on the segment ending there). Optionally returns the
 // final element-midpoint abscissae x, shear traction q and accumulated slip h.
 inline std::vector<vertex_state> run(const std::function<double(double)> &p,
-                                     const std::vector<std::pair<double, double>> &path,
-                                     const options &o = options(), std::vector<double> *q_out = nullptr,
-                                     std::vector<double> *h_out = nullptr,
+                                     const std::vector<std::pair<double, double>> &path, const options &o = options(),
+                                     std::vector<double> *q_out = nullptr, std::vector<double> *h_out = nullptr,
                                      std::vector<double> *x_out = nullptr) {
   detail::marcher m(p, o.nodes);
   std::vector<vertex_state> out;
@@ -343,8 +346,6 @@ inline std::vector<vertex_state> run(const std::function<double(double)> &p,
   return out;
 }
 
-}  // namespace bem
-}  // namespace reference
-}  // namespace hs
+}}}  // namespace hs::reference::bem
 
 #endif

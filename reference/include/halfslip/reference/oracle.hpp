@@ -45,8 +45,7 @@ template <class T, class G> T integrate_ends(const G &g, const T &lo, const T &h
 //   r_j = int_left q_c s^{j-1}/sqrt((s-b1)(s+b2)) - int_right (same).
 // Returned scaled by 1/p0 (dimensionless). sR, sL are the slip-traction signs
 // (+1 or -1) in the right zone (b1, 1) and the left zone (-1, -b2).
-template <class T>
-std::array<T, 2> side_residuals(const T &q, const T &s, const T &b1, const T &b2, int sR, int sL) {
+template <class T> std::array<T, 2> side_residuals(const T &q, const T &s, const T &b1, const T &b2, int sR, int sL) {
   using std::sqrt;
   const T pi = boost::math::constants::pi<T>();
   const T Qn = pi * q / 2;  // Q / (f p0 a)
@@ -55,7 +54,7 @@ std::array<T, 2> side_residuals(const T &q, const T &s, const T &b1, const T &b2
     // right zone: t = b1 + u, u in (0, 1 - b1)
     const T right = integrate_ends<T>(
         [&](const T &t, const T &u, const T &v) {  // u = t - b1, v = 1 - t
-          const T root1 = sqrt(v * (1 + t));        // sqrt(1 - t^2)
+          const T root1 = sqrt(v * (1 + t));       // sqrt(1 - t^2)
           const T qc = sR * root1 - (Qn / pi - s * t / 4) / root1;
           const T R = sqrt(u * (t + b2));
           return qc * (j == 1 ? T(1) : t) / R;
@@ -94,8 +93,7 @@ template <class T, class G> T cauchy_pv(const G &g, const T &lo, const T &hi, co
 // Dislocation density from eqs (4)/(5) (= (A.8)/(A.9)) with the raw q_c,
 // including q_st (whose contribution must vanish), in units of f p0 / E*
 // (f = p0 = E* = 1): B(x) for x in either slip zone.
-template <class T>
-T Bx_eq4(const T &q, const T &s, const T &b1, const T &b2, int sR, int sL, const T &x) {
+template <class T> T Bx_eq4(const T &q, const T &s, const T &b1, const T &b2, int sR, int sL, const T &x) {
   using std::sqrt;
   const T pi = boost::math::constants::pi<T>();
   const T Qn = pi * q / 2;
@@ -113,12 +111,11 @@ T Bx_eq4(const T &q, const T &s, const T &b1, const T &b2, int sR, int sL, const
   const T Rx = sqrt((x - b1) * (x + b2));
   if (x > b1) {
     const T IR = cauchy_pv<T>(gR, b1, T(1), x);
-    const T IL = integrate_ends<T>([&](const T &t, const T &u, const T &v) { return gL(t, u, v) / (t - x); },
-                                   T(-1), -b2);
+    const T IL = integrate_ends<T>([&](const T &t, const T &u, const T &v) { return gL(t, u, v) / (t - x); }, T(-1),
+                                   -b2);
     return -2 / pi * Rx * (IR - IL);
   }
-  const T IR = integrate_ends<T>([&](const T &t, const T &u, const T &v) { return gR(t, u, v) / (t - x); }, b1,
-                                 T(1));
+  const T IR = integrate_ends<T>([&](const T &t, const T &u, const T &v) { return gR(t, u, v) / (t - x); }, b1, T(1));
   const T IL = cauchy_pv<T>(gL, T(-1), -b2, x);
   return 2 / pi * Rx * (IR - IL);
 }
@@ -153,22 +150,16 @@ template <class T> T G_integral(const T &d1, const T &e, const T &dl) {
 template <class T, class G> T J_difference(int j, const T &b1, const T &b2, const G &g) {
   using std::sqrt;
   const T right = integrate_ends<T>(
-      [&](const T &t, const T &u, const T &v) {
-        return g(t, v, 1 + t) * (j == 1 ? T(1) : t) / sqrt(u * (t + b2));
-      },
+      [&](const T &t, const T &u, const T &v) { return g(t, v, 1 + t) * (j == 1 ? T(1) : t) / sqrt(u * (t + b2)); },
       b1, T(1));
   const T left = integrate_ends<T>(
-      [&](const T &t, const T &u, const T &v) {
-        return g(t, 1 - t, u) * (j == 1 ? T(1) : t) / sqrt((b1 - t) * v);
-      },
+      [&](const T &t, const T &u, const T &v) { return g(t, 1 - t, u) * (j == 1 ? T(1) : t) / sqrt((b1 - t) * v); },
       T(-1), -b2);
   return left - right;
 }
 
 // Plain quadrature of a function over [lo, hi] with end distances (for slip
 // and energy oracles).
-template <class T, class G> T integrate(const G &g, const T &lo, const T &hi) {
-  return integrate_ends<T>(g, lo, hi);
-}
+template <class T, class G> T integrate(const G &g, const T &lo, const T &hi) { return integrate_ends<T>(g, lo, hi); }
 
 }}  // namespace hs::reference
