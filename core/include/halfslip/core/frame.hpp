@@ -29,6 +29,22 @@ template <class Derived, class T, class Scene> struct canonical_solution {
   int iterations = 0;
   T rtol{0};
 
+  // The canonical loads q, s >= 0 of scene: (Q, sigma) -> (-Q, -sigma) flips every
+  // slip (negate), then sigma -> -sigma mirrors x -> -x (mirror); sets both flags.
+  void to_canonical(T &q, T &s) {
+    q = scene.q;
+    s = scene.s;
+    if (q < 0) {
+      negate = true;
+      q = -q;
+      s = -s;
+    }
+    if (s < 0) {
+      mirror = true;
+      s = -s;
+    }
+  }
+
   // ---- user frame ----
   int sign() const { return negate ? -1 : 1; }
   T b1() const { return scene.a * (mirror ? beta2 : beta1); }

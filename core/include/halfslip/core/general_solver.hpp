@@ -272,16 +272,8 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
   sol.scene = sc;
   sol.rtol = opt.rtol;
   sol.max_order = opt.max_order;
-  T q = sc.q, s = sc.s;
-  if (q < 0) {
-    sol.negate = true;
-    q = -q;
-    s = -s;
-  }
-  if (s < 0) {
-    sol.mirror = true;
-    s = -s;
-  }
+  T q, s;
+  sol.to_canonical(q, s);
   if (sol.mirror && !pm.symmetric()) {
     auto mp = std::make_shared<mirrored_pressure<T>>(pm);
     sol.owned = mp;

@@ -149,16 +149,8 @@ template <class T> hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const
   hertz_solution<T> sol;
   sol.scene = sc;
   sol.rtol = opt.rtol;
-  T q = sc.q, s = sc.s;
-  if (q < 0) {
-    sol.negate = true;
-    q = -q;
-    s = -s;
-  }
-  if (s < 0) {
-    sol.mirror = true;
-    s = -s;
-  }
+  T q, s;
+  sol.to_canonical(q, s);
   if (q == 0 && s == 0) {
     sol.reg = regime::stuck;
     return sol;  // beta = 1, delta = 0
