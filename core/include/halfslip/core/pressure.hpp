@@ -292,12 +292,14 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     const T z2 = z * z;
     if (z2 >= kthr_) return (1 / (1 - z2) - h) / z2;
     T sum = T(2) / 3, term = 1;
-    for (int j = 2; j < 10000; ++j) {
+    int j = 2;
+    for (; j < 10000; ++j) {
       term *= z2;
       const T t = term * T(2 * j) / T(2 * j + 1);
       sum += t;
       if (!(t > eps<T>() * sum / 4)) break;
     }
+    check_iterations(j, 10000, "flat punch: the series of k(z) did not converge");
     return sum;
   }
   static T atanh_ratio(const T &z) {
@@ -309,7 +311,8 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     using std::abs;
     if (!(target > 0)) throw error(status::bad_geometry, "flat punch: load must be positive");
     T lo = 0, hi = 1, b = T(0.5);
-    for (int it = 0; it < 400; ++it) {
+    int it = 0;
+    for (; it < 400; ++it) {
       const T h = load_factor(b) / (b * b) - target;
       if (h > 0) lo = b;
       else hi = b;
@@ -321,6 +324,7 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
       b = nb;
       if (step <= 2 * eps<T>() * b || hi - lo <= 2 * eps<T>() * b) break;
     }
+    check_iterations(it, 400, "flat punch: the half-width from the load did not converge");
     return b;
   }
   T beta_, phi0_, c0_, t0_, g_, kthr_;
@@ -405,13 +409,16 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     const T e = eps<T>();
     if (even_ || z <= T(0.5)) {
       // sum_j (1 - n/2)_j / (3/2)_j z^j
+      if (!(z == z)) return z;  // NaN: the test below would never hold
       T term = 1, sum = 1;
       const T b = 1 - n_ / 2;
-      for (int j = 0; j < 100000; ++j) {
+      int j = 0;
+      for (; j < 100000; ++j) {
         term *= (b + j) / (T(1.5) + j) * z;
         sum += term;
         if (abs(term) <= e * abs(sum) / 4) break;
       }
+      check_iterations(j, 100000, "power law: the series of F did not converge");
       return sum;
     }
     if (odd_) {
@@ -423,13 +430,16 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     }
     if (!near_int_) {
       // 2F1(1, 1/2 - m; 1 - m; y), y < 1/2
+      if (!(y == y)) return y;  // NaN: the test below would never hold
       T term = 1, sum = 1;
       const T b = T(0.5) - m_, c = 1 - m_;
-      for (int j = 0; j < 100000; ++j) {
+      int j = 0;
+      for (; j < 100000; ++j) {
         term *= (b + j) / (c + j) * y;
         sum += term;
         if (abs(term) <= e * abs(sum) / 4) break;
       }
+      check_iterations(j, 100000, "power law: the hypergeometric series of F did not converge");
       return sum / (2 * m_) + pow(abs(x), 2 * m_) * conn_ / sqrt(z);
     }
     const T be = sqrt(z);
