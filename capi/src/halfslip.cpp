@@ -211,6 +211,17 @@ template <class S> core::contact_state<double> state_of_solution(const S &s, dou
   return core::make_state<double>(s, bulk2);
 }
 
+// issue 15: the contact state of a solution (bulk2: stress the pad carries)
+core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
+  auto st = h.visit([&](const auto &s) { return state_of_solution(s, bulk2); });
+  // the panels do not depend on bulk2: one set per solution, made on first use
+  std::call_once(h.panels_once, [&] {
+    if (hs::core::needs_panels(st)) h.panels = hs::core::make_panels(st);
+  });
+  st.panels = h.panels;
+  return st;
+}
+
 // The one solve behind hs_solve and hs_solve_geometry: the Hertz geometry
 // (geometry NULL; the scene carries it) or another geometry.
 hs_solution *solve_scene(const hs_scene &scene, const hs_geometry *geometry, const hs_options *opts) {
@@ -479,17 +490,7 @@ int hs_eval_pressure(const hs_solution *sol, size_t n, const double *x, double *
   return eval_points(sol, n, x, out, [](const auto &s, double v) { return double(s.pressure(v)); });
 }
 
-// issue 15: the contact state of a solution (bulk2: stress the pad carries)
 namespace {
-core::contact_state<double> state_of(const hs_solution &h, double bulk2) {
-  auto st = h.visit([&](const auto &s) { return state_of_solution(s, bulk2); });
-  // the panels do not depend on bulk2: one set per solution, made on first use
-  std::call_once(h.panels_once, [&] {
-    if (hs::core::needs_panels(st)) h.panels = hs::core::make_panels(st);
-  });
-  st.panels = h.panels;
-  return st;
-}
 // The points (x, y) of a stress evaluation, each in its body; false: none (n = 0).
 bool check_body_points(int body, size_t n, const double *x, const double *y, const double *out) {
   if (n == 0) return false;
