@@ -96,6 +96,41 @@ void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int m
   h.error_estimate = core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q).value();
 }
 
+// The quadrature, or the asymptotic edge model where that is more accurate:
+// where the quadrature cannot resolve the slip zones (not_applicable: both
+// narrower than 256 eps a) or its estimate, which grows like eps/d for small
+// zones, is larger than the asymptotic one, which shrinks with them (issue 13:
+// the default model must not return a result the asymptotic model beats by
+// orders of magnitude, or a spurious one). True when the asymptotic model was taken.
+bool run_quadrature_or_asymptotic(hs_solution &h, const core::general_scene<double> &sc, int max_iterations,
+                                  double rt) {
+  if (sc.q == 0 && sc.s == 0) {
+    run_quadrature(h, sc, max_iterations, rt);  // stuck
+    return false;
+  }
+  try {
+    run_quadrature(h, sc, max_iterations, rt);
+  } catch (const core::error &e) {
+    if (e.code() != core::status::not_applicable) throw;
+    run_asymptotic(h, sc);
+    return true;
+  }
+  const double quad = h.error_estimate;
+  const double est = core::asymptotic_estimate(pressure_of(h), sc).value();
+  if (!(est < quad)) return false;
+  auto kept = std::move(h.solution);
+  try {
+    run_asymptotic(h, sc, est);
+    return true;
+  } catch (const core::error &e) {
+    if (e.code() != core::status::not_applicable) throw;
+    h.solution = std::move(kept);  // zones cover the contact: keep the quadrature
+    h.model_used = HS_MODEL_QUADRATURE;
+    h.error_estimate = quad;
+    return false;
+  }
+}
+
 void run_reference(hs_solution &h, const core::general_scene<double> &sc, const request &r,
                    const reference_input &ref) {
   require(ref.available, core::status::bad_geometry,
@@ -135,8 +170,8 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
     }
   } else {
     const double rt = core::quadrature_tolerance(tol, sc);
-    run_quadrature(h, sc, r.max_iterations, rt);
-    if (h.error_estimate > tol && rt > 0) run_quadrature(h, sc, r.max_iterations, 0);
+    if (!run_quadrature_or_asymptotic(h, sc, r.max_iterations, rt) && h.error_estimate > tol && rt > 0)
+      run_quadrature_or_asymptotic(h, sc, r.max_iterations, 0);
   }
   if (tol == 0 || h.error_estimate <= tol) return;
   if (ref.available) {
@@ -153,7 +188,7 @@ void solve_models(hs_solution &h, bool hertz, const core::general_scene<double> 
   switch (r.model) {
     case HS_MODEL_DEFAULT:
       if (hertz) run_closed_form(h, sc, r);
-      else run_quadrature(h, sc, r.max_iterations, r.rtol);
+      else run_quadrature_or_asymptotic(h, sc, r.max_iterations, r.rtol);
       return;
     case HS_MODEL_AUTO: run_auto(h, hertz, sc, r, ref); return;
     case HS_MODEL_ASYMPTOTIC: run_asymptotic(h, sc); return;

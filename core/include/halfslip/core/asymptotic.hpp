@@ -112,8 +112,9 @@ template <class T> class edge_solution {
   }
   T b1() const { return scene.a - d1(); }
   T b2() const { return scene.a - d2(); }
-  int dir1() const { return sgn(m1.KT); }
-  int dir2() const { return sgn(m2.KT); }
+  // an empty zone (d underflows to 0) has no direction (issue 13)
+  int dir1() const { return d1() > 0 ? sgn(m1.KT) : 0; }
+  int dir2() const { return d2() > 0 ? sgn(m2.KT) : 0; }
   // z: distance from the edge; 0 if x is in the stick zone
   int locate(const T &x, T &z) const {
     if (d1() > 0 && x >= b1()) {

@@ -45,6 +45,16 @@ template <class Derived, class T, class Scene> struct canonical_solution {
     }
   }
 
+  // An empty zone (delta = 0: a load so small that the zone underflows, or a
+  // state on the regime boundary) has no slip direction; with both empty the
+  // contact is stuck (issue 13: sigma/fp0 = 5e-324 reported same-sign with
+  // direction +1 for an empty zone 2). Called by the solvers before they return.
+  void settle_empty_zones() {
+    if (!(delta1 > 0)) dirR = 0;
+    if (!(delta2 > 0)) dirL = 0;
+    if (dirR == 0 && dirL == 0) reg = regime::stuck;
+  }
+
   // ---- user frame ----
   int sign() const { return negate ? -1 : 1; }
   T b1() const { return scene.a * (mirror ? beta2 : beta1); }

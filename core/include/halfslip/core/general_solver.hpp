@@ -304,6 +304,17 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     hs.q = q;
     hs.s = s;
     const auto h = solve_hertz(hs);
+    // Both slip zones below the resolution of the state (x1, ln e), in which the
+    // far zone is d2 = 2 - |x1| - e and so known only to ~eps: Newton cannot
+    // represent them, and a continuation in sigma found a spurious root instead
+    // (issue 13: flat punch, Q = 0, sigma/fp0 = 1e-30 gave d2/a = 1.38). The
+    // zones of any pressure are within a small factor of Hertz's at the same
+    // (q, s) (0.59 for b_f/a = 0.5), so the Hertz zones decide. The asymptotic
+    // edge model (core/asymptotic.hpp) is accurate there.
+    if (max(h.delta1, h.delta2) < 256 * eps<T>())
+      throw error(status::not_applicable,
+                  "general solver: both slip zones narrower than 256 eps a (loads too small for the quadrature "
+                  "model; the asymptotic edge model solves them)");
     st.x1 = h.reg == regime::opposite_sign ? -h.delta1 : h.delta1;
     st.e = h.width;
     // for a model with a known shear-only stick half-width c, scale the Hertz
@@ -382,9 +393,10 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     sol.dirR = -1;
   } else {
     sol.reg = regime::same_sign;
-    sol.dirR = sol.delta1 > 0 ? 1 : 0;
+    sol.dirR = 1;
   }
   sol.dirL = 1;
+  sol.settle_empty_zones();
   return sol;
 }
 

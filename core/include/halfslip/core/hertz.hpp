@@ -168,8 +168,9 @@ template <class T> hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const
     sol.delta2 = m + e;
     sol.width = 2 * root;
     sol.log_width = log(sol.width);
-    sol.dirR = sol.delta1 > 0 ? 1 : 0;
+    sol.dirR = 1;
     sol.dirL = 1;
+    sol.settle_empty_zones();
     return sol;
   }
   sol.reg = regime::opposite_sign;
@@ -183,6 +184,7 @@ template <class T> hertz_solution<T> solve_hertz(const hertz_scene<T> &sc, const
   sol.iterations = r.iterations;
   sol.dirR = -1;
   sol.dirL = 1;
+  sol.settle_empty_zones();
   return sol;
 }
 

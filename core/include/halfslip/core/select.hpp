@@ -46,6 +46,8 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/math/tools/precision.hpp>
+
 #include "asymptotic.hpp"
 #include "general.hpp"
 #include "hertz.hpp"
@@ -62,6 +64,21 @@ template <class T> struct error_estimate {
 };
 
 template <class T> T infinite() { return std::numeric_limits<T>::infinity(); }
+
+// Floors for lengths and energies near the bottom of T's range (issue 13): a
+// zone length d (units of a) is known at best to the spacing of the smallest
+// numbers, min_value * eps (the subnormal spacing in double), and a zone energy,
+// ~ d^3 in units of f^2 p0^2 a^2/E* (slip ~ d^(3/2) times traction ~ d^(1/2)
+// over a length d), reaches that spacing first. Relative error floors of d and
+// of E; infinite once d^3 underflows (at sigma/fp0 = 4e-320 the energies were 0
+// with an estimate of 2.5e-14).
+template <class T> T tiny_length_floor(const T &d) {
+  return 4 * boost::math::tools::min_value<T>() * eps<T>() / d;
+}
+template <class T> T tiny_energy_floor(const T &d) {
+  const T d3 = d * d * d;
+  return d3 > 0 ? 256 * boost::math::tools::min_value<T>() * eps<T>() / d3 : infinite<T>();
+}
 
 // Asymptotic model's estimate for the scene (units: the scene's a).
 template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T> &pm, const general_scene<T> &sc) {
@@ -88,12 +105,13 @@ template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T>
     w[i] = om;
   }
   const T Dm = max(D[0], D[1]);
+  if (!(d[0] > 0) && !(d[1] > 0)) return e;  // both zones empty (the loads underflow): stuck, as the model says
   for (int i = 0; i < 2; ++i) {
     const T ab = 2 * Dm * Dm + 32 * D[i] * w[i];
-    const T rd = d[i] > 0 ? ab / d[i] : infinite<T>();
+    const T rd = d[i] > 0 ? ab / d[i] + tiny_length_floor(d[i]) : infinite<T>();
     const T r2 = (1 + rd) * (1 + rd), re = r2 * r2 - 1;
     e.slip_zone = max(e.slip_zone, rd);
-    e.energy = max(e.energy, re);
+    e.energy = max(e.energy, d[i] > 0 ? re + tiny_energy_floor(d[i]) : re);
   }
   return e;
 }
@@ -114,8 +132,8 @@ template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &
   const T ep = eps<T>();
   // d_i = m -+ s/4 (m ~ q/2): rounding of the two terms, relative to d_i
   const T scale = min(T(1), T(abs(q) + abs(s) / 4));
-  e.slip_zone = 32 * ep + 16 * ep * scale / dm;
-  e.energy = 3 * e.slip_zone + 16 * ep;
+  e.slip_zone = 32 * ep + 16 * ep * scale / dm + tiny_length_floor(dm);
+  e.energy = 3 * e.slip_zone + 16 * ep + tiny_energy_floor(dm);
   return e;
 }
 
@@ -133,8 +151,8 @@ error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, con
   using std::sqrt;
   // (/4: margin for pressures whose shear-only stick zone is narrower than Hertz's)
   const T wc = max(width, T(sqrt(T(abs(1 - abs(q)))) / 4));
-  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / wc);
-  e.energy = 3 * e.slip_zone;
+  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / wc) + tiny_length_floor(dm);
+  e.energy = 3 * e.slip_zone + tiny_energy_floor(dm);
   return e;
 }
 
