@@ -362,3 +362,35 @@ TEST_CASE("issue 13: loads that underflow: empty zones have no direction, energi
   CHECK(rel(S.d1, d_exact) <= S.error_estimate);
   hs_solution_free(sol);
 }
+
+// ---- callback pressure negative in a narrow region -------------------------------------
+namespace {
+// Hertz minus a narrow dip: negative on |x - 0.3| < ~1.3e-3 a only (between the
+// old check's 64 Chebyshev points, which are ~0.05 a apart there)
+double dipped_pressure(double x, void *) {
+  const double u = (x - 0.3) / 1e-3;
+  return std::sqrt((1 - x) * (1 + x)) - 2 * std::exp(-u * u);
+}
+}  // namespace
+
+TEST_CASE("issue 13: a callback pressure negative in a narrow region inside the contact is rejected") {
+  CHECK(dipped_pressure(0.3, nullptr) < 0);
+  hs_scene sc;
+  hs_scene_default(&sc);
+  sc.Q_over_fP = 0.3;
+  sc.sigma_over_fp0 = 0.5;
+  hs_geometry g;
+  hs_geometry_default(&g);
+  g.kind = HS_GEOMETRY_CALLBACK;
+  g.pressure = &dipped_pressure;
+  for (int model : {HS_MODEL_DEFAULT, HS_MODEL_AUTO, HS_MODEL_QUADRATURE}) {
+    hs_options o;
+    hs_options_default(&o);
+    o.model = model;
+    hs_solution *sol = nullptr;
+    CAPTURE(model);
+    CHECK(hs_solve_geometry(&sc, &g, &o, &sol) == HS_ERR_BAD_GEOMETRY);
+    CHECK(sol == nullptr);
+    hs_solution_free(sol);
+  }
+}
