@@ -9,7 +9,9 @@
 //   power_law_pressure::F       (pressure.hpp: series for z <= 1/2;     int_0^1 (x^2 + z v^2)^((n-2)/2) dv
 //                                odd-n recurrence; connection formula;  by tanh-sinh at 50 digits
 //                                quadrature when m = (n-1)/2 is within
-//                                1/8 of an integer; polynomial, n even)
+//                                1/8 of an integer and of n 2^-m;
+//                                Euler-transformed series for z <= 1/2,
+//                                binomial sum for n even, issue 13)
 //   flat_rounded_pressure phi   (pressure.hpp: edge form for 2c <= c0,  Ciavarella-Hills-Monno bracket
 //   and dphi                     kink-safe form otherwise; k_ratio       at 50 digits (derivative: central
 //                                series for z^2 < cbrt(eps); phi = 1     difference at 50 digits)
@@ -210,7 +212,7 @@ TEST_CASE_TEMPLATE("switch: power-law F at z = 1 - x^2 = 1/2 (series below, othe
 TEST_CASE_TEMPLATE("switch: power-law F at the exponent switches (odd, near-integer m, even)", T, double,
                    long double) {
   // For z > 1/2 the method depends on n only: m = (n-1)/2 an integer: recurrence;
-  // |m - round(m)| < 1/8: quadrature; n even: polynomial (series); otherwise the
+  // |m - round(m)| < 1/8: quadrature; n even: binomial sum; otherwise the
   // connection formula. Switch points: n = 3 (odd), n = 2.75, 3.25, 1.25
   // (|m - round m| = 1/8, connection at the point, quadrature inside), n = 4 (even).
   double worst = 0;
@@ -230,6 +232,30 @@ TEST_CASE_TEMPLATE("switch: power-law F at the exponent switches (odd, near-inte
     }
   }
   MESSAGE("worst relative error in eps: " << worst);
+}
+
+TEST_CASE_TEMPLATE("switch: power-law F at large exponents, every form (issue 13)", T, double, long double) {
+  // Before issue 13 the series in z alternated (terms up to ~e^(n z/2)) and the even-n polynomial
+  // likewise: F was off by 1e-9 relative at n = 50 and by 1e13 at n = 200; the Gamma ratio of the
+  // connection formula was 0/0 (NaN) at n = 999.1. Now: Euler's transformation for z <= 1/2, the
+  // binomial sum for even n, and the connection formula with the Gammas by reflection, the quadrature
+  // only where m is within n 2^-m of an integer. n = 60.99 and 61.05 put m within 1/8 of 30 but far
+  // above n 2^-m (connection formula); 999.1 the reflected Gammas. Points either side of z = 1/2 and
+  // across the contact. Every form sums ~n/2 positive terms (or raises |x| to 2m): a bound of 2 n eps.
+  double worst = 0;
+  for (T n : {T(50), T(60.99), T(61.05), T(200), T(200.1), T(307.2), T(500), T(999), T(999.1)}) {
+    std::vector<T> zs = spots(T(0.5));
+    for (T x : {T(0), T(0.125), T(0.5), T(0.9), T(0.99)}) zs.push_back(1 - x * x);
+    for (const T &z : zs) {
+      const T x = std::sqrt(1 - z);
+      CAPTURE(double(n));
+      CAPTURE(double(z));
+      const double e = power_law_err(n, x, z);
+      CHECK(e <= 2 * double(n));
+      worst = std::max(worst, e / double(n));
+    }
+  }
+  MESSAGE("worst relative error in units of n eps: " << worst);
 }
 
 // ---------------------------------------------------------------------------

@@ -287,8 +287,10 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     return sol;
   }
 
-  const T tolq = max(opt.rtol, 64 * eps<T>());
-  const T tol_step = max(opt.rtol, 4 * eps<T>());
+  // the pressure's own accuracy sets the floor (power law: ~n eps, issue 13)
+  const T acc = max(T(4), P.accuracy_eps());
+  const T tolq = max(opt.rtol, 16 * acc * eps<T>());
+  const T tol_step = max(opt.rtol, acc * eps<T>());
   const T qtol = tolq * pi<T>() * (1 + s);
   // initial order from the tolerance: the smallest power of two >= 2/3 of
   // the digits asked for (the residual is then validated at twice the order)

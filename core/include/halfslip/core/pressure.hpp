@@ -26,6 +26,8 @@
 #include <vector>
 
 #include <boost/math/special_functions/gamma.hpp>
+#include <boost/math/special_functions/sin_pi.hpp>
+#include <boost/math/special_functions/cos_pi.hpp>
 
 #include "gauss.hpp"
 #include "numerics.hpp"
@@ -70,6 +72,10 @@ template <class T> class pressure_model {
   // (sigma = 0) at q = Q/fP in [0, 1), if known in closed form or cheaply
   // (a start for the solver); false otherwise.
   virtual bool shear_only_half_width(const T &, T &) const { return false; }
+  // Relative accuracy of phi in units of eps (the solver's convergence tests
+  // and residual tolerance scale with it): a few eps for the closed forms; the
+  // power law sums ~n/2 terms (or raises |x| to n - 1) and is good to ~n eps.
+  virtual T accuracy_eps() const { return T(4); }
   // p(-x) = p(x): the mirror x -> -x is then a symmetry of the problem.
   virtual bool symmetric() const { return false; }
   // phi at the edge x = side (+1 or -1): the edge coefficient of the
@@ -337,8 +343,10 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
 //            = 2F1(1, 1 - n/2; 3/2; 1 - x^2),
 // normalised so that int p_hat = pi/2 (P = (n/2) ... is not needed: the
 // dimensionless pressure depends on n only; P is proportional to a^n).
-// F is evaluated by
-//   1 - x^2 <= 1/2: the series of 2F1 in z = 1 - x^2 (ratio <= 1/2);
+// F is evaluated by (every form free of cancellation for large n, issue 13)
+//   z = 1 - x^2 <= 1/2: Euler's transformation (1-z)^((n-1)/2) 2F1(1/2, (n+1)/2; 3/2; z),
+//     a series of positive terms (the series of 2F1 in z alternates);
+//   n even, z > 1/2: the binomial sum sum_j C(k,j) z^j (1-z)^(k-j)/(2j+1), k = n/2 - 1;
 //   x^2 < 1/2, m = (n-1)/2 not within 1/8 of an integer: the connection
 //     formula  F = 2F1(1, 1/2-m; 1-m; x^2)/(2m)
 //                 + |x|^(2m) (sqrt(pi)/2) Gamma(-m)/Gamma(1/2-m) / sqrt(1-x^2);
@@ -358,10 +366,20 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     even_ = floor(hn) == hn;
     const T mr = floor(m_ + T(0.5));
     odd_ = (mr == m_);
-    near_int_ = !odd_ && abs(m_ - mr) < T(0.125);
+    // Near an integer m the connection formula's two parts, each ~ |x|^(2m)/delta
+    // (delta = |m - round(m)|), cancel down to ~ |x|^(2m) with |x|^2 < 1/2, so its
+    // error relative to F ~ 1/n is ~ eps n 2^-m/delta: quadrature only where that
+    // is not small (delta < 1/8 for small m, as before; delta < n 2^-m once m > ~6).
+    // The quadrature costs a tanh-sinh integral per value: with the old 1/8 for
+    // every m a power-law solve at n = 307.2 took 17 s (issue 13).
+    using std::ldexp;
+    near_int_ = !odd_ && abs(m_ - mr) < T(0.125) && abs(m_ - mr) < n * ldexp(T(1), -int(std::min(T(60), m_)));
     if (!even_ && !odd_ && !near_int_)
-      conn_ = boost::math::constants::root_pi<T>() / 2 * boost::math::tgamma(T(-m_)) /
-              boost::math::tgamma(T(T(0.5) - m_));
+      // (sqrt(pi)/2) Gamma(-m)/Gamma(1/2 - m) by reflection,
+      // = -(sqrt(pi)/2) cot(pi m) Gamma(m + 1/2)/Gamma(m + 1): the two Gammas
+      // of negative argument underflow to 0/0 from m ~ 170 (n = 999.1 gave NaN)
+      conn_ = -boost::math::constants::root_pi<T>() / 2 * boost::math::cos_pi(m_) / boost::math::sin_pi(m_) *
+              boost::math::tgamma_delta_ratio(T(m_ + T(0.5)), T(0.5));
   }
   // Contact half-width from the load per unit length P of the profile
   // g = coef |x|^n (E*: contact modulus; coef > 0 (bad_size) and 1 < n < 1000
@@ -396,7 +414,19 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     return {{T(0), true}};
   }
   bool symmetric() const override { return true; }
+  T accuracy_eps() const override { return n_ > 4 ? n_ : T(4); }
   T edge_phi(int) const override { return n_ / 2; }  // F(+-1) = 2F1(..; 0) = 1
+  // Ciavarella-Jager: the stick zone under shear alone is the contact under
+  // P(1 - q), and P ~ a^n, so c = (1 - q)^(1/n) (log1p: no cancellation for
+  // small q). The solver's start: at large n the Hertz start (d = q/2 instead
+  // of ~ -ln(1-q)/n) left Newton without a path (issue 13: n = 500, sigma = 0).
+  bool shear_only_half_width(const T &q, T &c) const override {
+    using std::exp;
+    using std::log1p;
+    if (!(q >= 0) || !(q < 1)) return false;
+    c = exp(log1p(-q) / n_);
+    return true;
+  }
 
   T F(const T &x, const T &z) const {
     using std::abs;
@@ -407,18 +437,38 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     using std::sqrt;
     const T y = x * x;
     const T e = eps<T>();
-    if (even_ || z <= T(0.5)) {
-      // sum_j (1 - n/2)_j / (3/2)_j z^j
-      if (!(z == z)) return z;  // NaN: the test below would never hold
+    if (!(z == z)) return z;  // NaN: the tests below would never hold
+    if (z <= T(0.5)) {
+      // Euler's transformation, F = (1 - z)^((n-1)/2) 2F1(1/2, (n+1)/2; 3/2; z)
+      // (DLMF 15.8.1): every term positive. The series in z itself,
+      // sum_j (1 - n/2)_j/(3/2)_j z^j, alternates with terms up to ~e^(n z/2)
+      // and lost everything to cancellation for large n (issue 13: F off by
+      // 1e-9 relative at n = 50, by 1e13 at n = 200). Terms grow up to
+      // j ~ (n+1) z/(2(1-z)) <= (n+1)/2, then fall at least like z^j.
       T term = 1, sum = 1;
-      const T b = 1 - n_ / 2;
+      const T b = (n_ + 1) / 2;
       int j = 0;
       for (; j < 100000; ++j) {
-        term *= (b + j) / (T(1.5) + j) * z;
+        term *= (T(0.5) + j) * (b + j) / ((T(1.5) + j) * (j + 1)) * z;
         sum += term;
-        if (abs(term) <= e * abs(sum) / 4) break;
+        if (term <= e * sum / 4 && T(j) > b * z) break;
       }
       check_iterations(j, 100000, "power law: the series of F did not converge");
+      using std::pow;
+      return pow(abs(x), n_ - 1) * sum;
+    }
+    if (even_) {
+      // n = 2k + 2 even, y = x^2 < 1/2: binomial expansion of the definition,
+      // F = int_0^1 (y + z v^2)^k dv = sum_j C(k, j) z^j y^(k-j)/(2j + 1),
+      // every term positive (the terminating series in z alternates: see above).
+      // From j = k down: w_k = z^k, w_(j-1) = w_j j/(k - j + 1) y/z.
+      const int k = int(n_ / 2) - 1;
+      T w = pow(z, T(k)), sum = w / (2 * k + 1);
+      for (int jj = k; jj > 0; --jj) {
+        w *= T(jj) / T(k - jj + 1) * y / z;
+        sum += w / (2 * jj - 1);
+        if (w <= e * sum / 4 && T(jj) < T(k) * z) break;
+      }
       return sum;
     }
     if (odd_) {
@@ -667,6 +717,7 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
   bool symmetric() const override { return b_.symmetric(); }
   T edge_phi(int side) const override { return b_.edge_phi(-side); }
   bool shear_only_half_width(const T &q, T &c) const override { return b_.shear_only_half_width(q, c); }
+  T accuracy_eps() const override { return b_.accuracy_eps(); }
   T tail(int side, const T &c) const override { return b_.tail(-side, c); }
 
  private:
