@@ -217,6 +217,35 @@ err=$("$cli" solve --fields /nonexistent/dir/f.csv 2>&1 >/dev/null); rc=$?
 [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && echo "$err" | grep -q "/nonexistent/dir/f.csv" && ok || ko "--fields unwritable: $err"
 err=$("$cli" solve --fields "$dir/h.csv" --nu 0.7 2>&1 >/dev/null); rc=$?
 [ $rc -ne 0 ] && echo "$err" | grep -q -- "--nu 0.7" && ok || ko "--nu 0.7 rejected, named: $err"
+
+# issue 15: stresses of a history state. Unloading 0.6 -> 0.2 (Hertz, sigma = 0): by Ciavarella-Jager the
+# state is S(0.6) - 2 S(0.2) + 2 S(0) of monotonic solutions (closed forms); the march is good to ~1e-8
+"$cli" history --path "0.6,0;0.2,0" --fields "$dir/hs.csv" --fields-at "$dir/pts.txt" >/dev/null &&
+for qq in 0.6 0.2 0; do "$cli" solve --Q-over-fP $qq --sigma-over-fp0 0 --fields "$dir/m$qq.csv" --fields-at "$dir/pts.txt" >/dev/null; done &&
+python3 -c '
+import csv, sys
+r = [list(csv.DictReader(open(f))) for f in sys.argv[1:]]
+assert len(r[0]) == len(r[1]) > 0
+for s, a, b, c in zip(*r):
+    for k in ("sxx", "syy", "sxy"):
+        ref = float(a[k]) - 2 * float(b[k]) + 2 * float(c[k])
+        assert abs(float(s[k]) - ref) < 1e-6, (s, k, ref)' "$dir/hs.csv" "$dir/m0.6.csv" "$dir/m0.2.csv" "$dir/m0.csv" && ok || ko "history --fields (Ciavarella-Jager)"
+"$cli" history --path "0.6,0;0.2,0" --fields "$dir/h1.csv" --fields-vertex 1 >/dev/null &&
+  "$cli" solve --Q-over-fP 0.6 --sigma-over-fp0 0 --fields "$dir/m1.csv" >/dev/null && python3 -c '
+import csv, sys
+a, b = [list(csv.DictReader(open(f))) for f in sys.argv[1:]]
+assert len(a) == len(b) == 6642
+assert max(abs(float(x[k]) - float(y[k])) for x, y in zip(a, b) for k in ("sxx", "syy", "sxy")) < 1e-6' "$dir/h1.csv" "$dir/m1.csv" && ok || ko "history --fields-vertex 1 = the monotonic solution"
+js=$("$cli" history --path "0.6,0;0.2,0" --surface-stress --json) && echo "$js" | python3 -c '
+import json, sys, math
+v = json.load(sys.stdin)["vertices"]
+assert abs(v[0]["surface_stress"]["body1"]["max"] - 2 * math.sqrt(0.6)) < 1e-6, v[0]
+assert "surface_stress" in v[1]' && ok || ko "history --surface-stress (peak 2 f p0 sqrt(Q/fP) at the first vertex)"
+"$cli" history --path "0.6,0" --json | grep -q surface_stress && ko "surface_stress without --surface-stress" || ok
+err=$("$cli" history --path "0.6,0" --fields "$dir/x.csv" --fields-vertex 2 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "--fields-vertex" && ok || ko "history --fields-vertex out of range: $err"
+err=$("$cli" history --path "0.6,0" --fields-vertex 1 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "needs --fields" && ok || ko "history --fields-vertex without --fields: $err"
 err=$("$cli" solve --pad-bulk nan 2>&1 >/dev/null); rc=$?
 [ $rc -ne 0 ] && echo "$err" | grep -q -- "--pad-bulk" && ok || ko "--pad-bulk nan rejected, named: $err"
 rm -rf "$dir"

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <map>
 #include <mutex>
@@ -92,6 +93,12 @@ const char *kUsage =
     "  --points N              q(x) and slip h(x) at N points across the contact (and the slip range)\n"
     "  --json                  one object: vertices (b1, b2, slip_dir1/2, energy1/2 per segment),\n"
     "                          cycles_to_steady, energy_per_cycle1/2\n"
+    "  --surface-stress        peak surface sigma_xx of both bodies at every vertex (JSON \"surface_stress\"\n"
+    "                          per vertex; text: a column per body; costs a panel cache per vertex)\n"
+    "  --fields FILE           stresses of both bodies in the state after a vertex, CSV as solve --fields\n"
+    "  --fields-vertex I       that vertex, 1 to N as in the table (default N, the last)\n"
+    "  --fields-at PTS         with --fields: the points of file PTS ('x y' per line) instead of the grid\n"
+    "  --pad-bulk S, --nu V    as for solve (the pad's bulk stress; Poisson's ratio for von Mises)\n"
     "\n"
     "usage: halfslip asymptotic-error --loading shear|bulk --b-over-a X [--json]\n"
     "  Energy dissipated in one slip zone: asymptotic edge model vs full Hertz solution\n"
@@ -938,7 +945,12 @@ const std::vector<std::string> kHistoryKeys = {"--geometry",
                                                "--max-step",
                                                "--points",
                                                "--steady-rtol",
-                                               "--rtol"};
+                                               "--rtol",
+                                               "--fields",
+                                               "--fields-vertex",
+                                               "--fields-at",
+                                               "--pad-bulk",
+                                               "--nu"};
 
 // "Q1,S1;Q2,S2;..." -> pairs
 std::vector<std::pair<double, double>> parse_path(const std::string &t) {
@@ -960,8 +972,11 @@ std::vector<std::pair<double, double>> parse_path(const std::string &t) {
 }
 
 int cmd_history(int argc, char **argv) {
-  const Args args = parse_args(argc, argv, 2, kHistoryKeys, {"--json"});
+  const Args args = parse_args(argc, argv, 2, kHistoryKeys, {"--json", "--surface-stress"});
   const bool json = args.count("--json") > 0;
+  const bool want_surface = args.count("--surface-stress") > 0;
+  for (const char *k : {"--fields-vertex", "--fields-at"})
+    if (args.count(k) && !args.count("--fields")) die(std::string(k) + " needs --fields FILE (the output)");
   hs_steady_cycle closed;
   bool have_closed = false;
   if (args.count("--path") == args.count("--cycle"))
@@ -1047,6 +1062,31 @@ int cmd_history(int argc, char **argv) {
   std::vector<double> qv(xs.size()), hv(xs.size()), dh(xs.size());
   if (cyc && !xs.empty()) check(hs_history_slip_range(h, xs.size(), xs.data(), dh.data()), "slip range");
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
+  // issue 15: stresses of the states (hs_history_state: a solution handle per vertex)
+  const double pad_bulk = args.count("--pad-bulk") ? parse_number("--pad-bulk", args.at("--pad-bulk").c_str()) : 0.0;
+  const double nu = args.count("--nu") ? parse_number("--nu", args.at("--nu").c_str()) : 0.3;
+  std::vector<std::array<double, 10>> surf(want_surface ? nv : 0);
+  for (size_t i = 0; i < surf.size(); ++i) {
+    hs_solution *st = nullptr;
+    check(hs_history_state(h, i, &st), "history state");
+    for (int b = 0; b < 2; ++b) {
+      const int r = hs_surface_stress_extremes(st, b + 1, pad_bulk, 0.0, surf[i].data() + 5 * b);
+      if (r != HS_OK) hs_solution_free(st);
+      check(r, "surface stress (--pad-bulk " + g10(pad_bulk) + ")");
+    }
+    hs_solution_free(st);
+  }
+  if (args.count("--fields")) {
+    if (nv == 0) die("--fields: the history has no vertex");
+    const size_t iv = args.count("--fields-vertex")
+                          ? size_t(parse_int("--fields-vertex", args.at("--fields-vertex"), 1, int(nv)))
+                          : nv;
+    hs_solution *st = nullptr;
+    check(hs_history_state(h, iv - 1, &st), "history state");
+    write_fields(st, scene.a, pad_bulk, nu, args.at("--fields"),
+                 args.count("--fields-at") ? args.at("--fields-at") : "");
+    hs_solution_free(st);
+  }
   if (json) {
     // whole-path figures: the smallest step and the largest (per-segment) estimate
     double smin = nv ? vs[0].step : ho.max_step, emax = 0;
@@ -1068,6 +1108,15 @@ int cmd_history(int argc, char **argv) {
           num(v.b2).c_str(), v.slip_dir1, v.slip_dir2, num(v.energy1).c_str(), num(v.energy2).c_str(), v.cycle,
           v.steps);
       std::printf(", \"step\": %s, \"error_estimate\": %s", num(v.step).c_str(), num(v.error_estimate).c_str());
+      if (want_surface) {
+        std::printf(", \"surface_stress\": {");
+        for (int b = 0; b < 2; ++b)
+          std::printf("%s\"body%d\": {\"max\": %s, \"x_max\": %s, \"min\": %s, \"x_min\": %s, \"bulk\": %s}",
+                      b ? ", " : "", b + 1, num(surf[i][5 * b]).c_str(), num(surf[i][5 * b + 1]).c_str(),
+                      num(surf[i][5 * b + 2]).c_str(), num(surf[i][5 * b + 3]).c_str(),
+                      num(surf[i][5 * b + 4]).c_str());
+        std::printf("}");
+      }
       if (!xs.empty()) {
         check(hs_history_eval(h, i, HS_FIELD_TRACTION, xs.size(), xs.data(), qv.data()), "traction");
         check(hs_history_eval(h, i, HS_FIELD_SLIP, xs.size(), xs.data(), hv.data()), "slip");
@@ -1117,13 +1166,17 @@ int cmd_history(int argc, char **argv) {
           "  load steps %.6g to %.6g after refinement per segment, estimated error %.2g (rtol %.2g per segment)\n",
           smin, smax, emax, ho.rtol);
     }
-    std::printf("%6s %5s %13s %13s %12s %12s %5s %5s %13s %13s %8s\n", "vertex", "cycle", "Q/fP", "sigma/fp0", "b1/a",
+    std::printf("%6s %5s %13s %13s %12s %12s %5s %5s %13s %13s %8s", "vertex", "cycle", "Q/fP", "sigma/fp0", "b1/a",
                 "b2/a", "dir1", "dir2", "energy1", "energy2", "steps");
+    if (want_surface) std::printf(" %13s %13s", "max sxx(1)", "max sxx(2)");
+    std::printf("\n");
     for (size_t i = 0; i < nv; ++i) {
       const auto &v = vs[i];
-      std::printf("%6zu %5d %13.6g %13.6g %12.8f %12.8f %+5d %+5d %13.6g %13.6g %8ld\n", i + 1, v.cycle, v.Q_over_fP,
+      std::printf("%6zu %5d %13.6g %13.6g %12.8f %12.8f %+5d %+5d %13.6g %13.6g %8ld", i + 1, v.cycle, v.Q_over_fP,
                   v.sigma_over_fp0, v.b1 / scene.a, v.b2 / scene.a, v.slip_dir1, v.slip_dir2, v.energy1, v.energy2,
                   v.steps);
+      if (want_surface) std::printf(" %13.6g %13.6g", surf[i][0], surf[i][5]);
+      std::printf("\n");
     }
     if (cyc) {
       std::printf("cycles: %d; steady from cycle %s%s\n", cs.cycles,

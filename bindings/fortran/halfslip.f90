@@ -260,7 +260,7 @@ module halfslip
   public :: hs_solution_ramp, hs_solution_steady_cycle
   public :: hs_history_options_default, hs_history_new, hs_history_free, hs_history_add_vertices
   public :: hs_history_add_cycles, hs_history_vertex_count, hs_history_vertex_get, hs_history_eval
-  public :: hs_history_cycle_summary, hs_history_slip_range
+  public :: hs_history_cycle_summary, hs_history_slip_range, hs_history_state
   public :: hs_associated
 
   interface hs_associated
@@ -614,6 +614,14 @@ module halfslip
       real(c_double), intent(inout) :: out(*)
       integer(c_int) :: st
     end function c_hs_history_eval
+
+    function c_hs_history_state(h, vertex, out) bind(c, name="hs_history_state") result(st)
+      import :: c_int, c_ptr, c_size_t
+      type(c_ptr), value :: h
+      integer(c_size_t), value :: vertex
+      type(c_ptr), intent(inout) :: out
+      integer(c_int) :: st
+    end function c_hs_history_state
 
     function c_hs_history_cycle_summary(h, out) bind(c, name="hs_history_cycle_summary") result(st)
       import :: c_int, c_ptr, hs_cycle_summary
@@ -1178,6 +1186,27 @@ contains
     call check(c_hs_history_eval(hist%ptr, int(vertex, c_size_t), int(field, c_int), int(max(n, 0), c_size_t), &
                                  x, out), 'hs_history_eval', ierr)
   end subroutine hs_history_eval
+
+  ! Issue 15: the state after vertex `vertex` (0-based) as a new, read-only
+  ! solution handle (free it with hs_solution_free). The stress, traction,
+  ! slip, pressure and summary functions apply; hs_solution_energy, hs_eval_Bx
+  ! and hs_eval_work give HS_ERR_NOT_APPLICABLE. It outlives the history.
+  subroutine hs_history_state(hist, vertex, sol, ierr)
+    type(hs_history_t), intent(in) :: hist
+    integer, intent(in) :: vertex
+    type(hs_solution_t), intent(inout) :: sol
+    integer, intent(out), optional :: ierr
+    type(c_ptr) :: h
+    integer(c_int) :: st
+    h = c_null_ptr
+    if (vertex < 0) then
+      st = HS_ERR_BAD_OPTION
+    else
+      st = c_hs_history_state(hist%ptr, int(vertex, c_size_t), h)
+    end if
+    if (st == HS_OK) sol%ptr = h
+    call check(st, 'hs_history_state', ierr)
+  end subroutine hs_history_state
 
   ! Summary of the periodic loading (HS_ERR_NOT_APPLICABLE without one).
   subroutine hs_history_cycle_summary(hist, summary, ierr)

@@ -18,6 +18,7 @@
 #include "halfslip/reference/backend.hpp"
 #include "solution.hpp"
 #include "halfslip/core/fields.hpp"
+#include "halfslip/core/history_fields.hpp"
 
 namespace core = hs::core;
 
@@ -207,6 +208,9 @@ core::contact_state<double> state_of_solution(const core::hertz_solution<double>
 core::contact_state<double> state_of_solution(const core::general_solution<double> &s, double bulk2) {
   return core::general_state_of(s, bulk2);
 }
+core::contact_state<double> state_of_solution(const hs::capi::history_state &s, double bulk2) {
+  return core::history_contact_state<double>(s.hist, s.nsteps(), s.scene.a, s.scene.p0, s.scene.f, bulk2);
+}
 template <class S> core::contact_state<double> state_of_solution(const S &s, double bulk2) {
   return core::make_state<double>(s, bulk2);
 }
@@ -285,7 +289,8 @@ const char *hs_strerror(int status) {
     case HS_ERR_OVERFLOW: return "a result is not representable in double precision (overflow)";
     case HS_ERR_BAD_NUMBER: return "a decimal number string could not be parsed";
     case HS_ERR_NOT_APPLICABLE:
-      return "the requested model does not apply to this scene (e.g. asymptotic slip zones that cover the contact)";
+      return "the requested model or function does not apply (e.g. asymptotic slip zones that cover the contact; "
+             "energies, work or B_x of a load-history state)";
     case HS_ERR_TOLERANCE:
       return "no model meets the requested tolerance in double precision (use the reference backend, hs_ref_solve)";
     default: return "unknown halfslip status code";

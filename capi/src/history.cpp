@@ -166,6 +166,20 @@ int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, con
   });
 }
 
+int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
+  return guard([&] {
+    require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
+    const auto &vs = h->h->fine().vertices();
+    require(vertex < vs.size(), core::status::bad_option, "vertex index out of range");
+    const auto &v = vs[vertex];
+    auto r = std::make_unique<hs_solution>();
+    r->solution.emplace<hs::capi::history_state>(h->h->fine().prefix(v.step_end), h->scene, v);
+    r->model_used = 0;
+    r->error_estimate = v.step > 0 ? v.error_estimate : h->h->error_estimate();
+    *out = r.release();
+  });
+}
+
 int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out) {
   return guard([&] {
     require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
@@ -223,6 +237,8 @@ double half_width_at(const hs_solution &sol, double q, double s) {
 int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
   return guard([&] {
     require(sol != nullptr && recedes != nullptr && at != nullptr, core::status::null_pointer, "NULL");
+    require(!std::holds_alternative<hs::capi::history_state>(sol->solution), core::status::not_applicable,
+            "a load-history state is not a monotonic solution");
     const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
     const double s = sol->visit([](const auto &v) { return double(v.scene.s); });
     double where = std::numeric_limits<double>::quiet_NaN();
@@ -236,6 +252,8 @@ int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
 int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out) {
   return guard([&] {
     require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL");
+    require(!std::holds_alternative<hs::capi::history_state>(sol->solution), core::status::not_applicable,
+            "a load-history state is not a monotonic solution");
     require(out->struct_size == sizeof *out, core::status::struct_size, "steady cycle struct_size");
     const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
     const double s = sol->visit([](const auto &v) { return double(v.scene.s); });

@@ -13,6 +13,7 @@
 #include "halfslip/core/field_panels.hpp"
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
+#include "halfslip/core/history.hpp"
 #include "halfslip/core/select.hpp"
 #include "halfslip/reference/backend.hpp"
 
@@ -75,6 +76,64 @@ class reference_double {
   double b1_ = 0, b2_ = 0, d1_ = 0, d2_ = 0;
 };
 
+// The state at a vertex of a load history (hs_history_state, issue 15): a
+// read-only solution handle. It shares a copy of the steps up to the vertex
+// (history::prefix), so it outlives the history and does not change when the
+// history grows. Physical units; the functions that have no meaning for a
+// state (monotonic energies, work density W = f p |h|, B_x) report
+// HS_ERR_NOT_APPLICABLE.
+class history_state {
+ public:
+  history_state(std::shared_ptr<const core::history<double>> h, const core::general_scene<double> &sc,
+                const core::history_vertex<double> &v)
+      : scene(sc), hist(std::move(h)) {
+    scene.q = v.q;
+    scene.s = v.s;
+    b1_ = sc.a * v.b1;
+    b2_ = sc.a * v.b2;
+    dir1_ = v.b1 < 1 ? v.dir1 : 0;
+    dir2_ = v.b2 < 1 ? v.dir2 : 0;
+    // regime of a state: stuck without slip zones, opposite sign when the two
+    // zones slip in opposite directions, otherwise same sign
+    reg = (dir1_ == 0 && dir2_ == 0) ? core::regime::stuck
+          : (dir1_ * dir2_ < 0)      ? core::regime::opposite_sign
+                                     : core::regime::same_sign;
+  }
+  core::general_scene<double> scene;  // a, p0, f, E*; q, s: the vertex's loads
+  core::regime reg = core::regime::stuck;
+  int iterations = 0;
+  std::shared_ptr<const core::history<double>> hist;  // the steps up to the vertex
+  int dir1() const { return dir1_; }
+  int dir2() const { return dir2_; }
+  double b1() const { return b1_; }
+  double b2() const { return b2_; }
+  double d1() const { return scene.a - b1_; }
+  double d2() const { return scene.a - b2_; }
+  std::size_t nsteps() const { return hist->step_count(); }
+  [[noreturn]] static void not_applicable(const char *what) { throw core::error(core::status::not_applicable, what); }
+  double energy(int) const {
+    not_applicable(
+        "a load-history state has no monotonic zone energies (hs_history_vertex_get: energies per segment)");
+  }
+  double Bx(double) const { not_applicable("B_x is not evaluated for a load-history state (slip: hs_eval_slip)"); }
+  double work(double) const { not_applicable("the work density f p |h| is that of monotonic loading only"); }
+  double slip(double x) const {
+    return scene.f * scene.p0 * scene.a / scene.Estar * hist->slip(x / scene.a, nsteps());
+  }
+  double pressure(double x) const {
+    const double xi = x / scene.a;
+    return xi > -1 && xi < 1 ? scene.p0 * hist->pressure().p(xi) : 0.0;
+  }
+  double traction(double x) const {
+    const double xi = x / scene.a;
+    return xi > -1 && xi < 1 ? scene.f * scene.p0 * hist->traction(xi, nsteps()) : 0.0;
+  }
+
+ private:
+  int dir1_ = 0, dir2_ = 0;
+  double b1_ = 0, b2_ = 0;
+};
+
 // The exact decimal expansion of a double (so that the reference sees the
 // very number the caller passed).
 std::string exact_decimal(double v);
@@ -87,7 +146,7 @@ struct hs_solution {
   std::shared_ptr<const hs::core::pressure_model<double>> model;
   // the solution of the model that ran (monostate only while it runs)
   std::variant<std::monostate, hs::core::hertz_solution<double>, hs::core::general_solution<double>,
-               hs::core::edge_solution<double>, hs::capi::reference_double>
+               hs::core::edge_solution<double>, hs::capi::reference_double, hs::capi::history_state>
       solution;
   int model_used = 0;  // HS_MODEL_*
   double error_estimate = 0;

@@ -593,6 +593,8 @@ contains
     type(hs_solution_t) :: sol
     real(c_double) :: x(2), q(2), h(2), E(2), c, at
     real(c_double) :: qs(2), ss(2)
+    type(hs_solution_t) :: st, st2, m6, m2, m0
+    real(c_double) :: px(4), py(4), s(3, 4), s6(3, 4), s2(3, 4), s0(3, 4), q2(2)
     logical :: recedes
     integer :: ierr, n
 
@@ -629,6 +631,34 @@ contains
     call expect_near(q(2), -sqrt(1 - 0.95_c_double**2), 1e-7_c_double, 'history: traction in the slip zone')
     call hs_history_eval(hist, 1, HS_FIELD_SLIP, 2, x, h, ierr)
     call expect(ierr == HS_OK .and. h(1) == 0 .and. h(2) > 0, 'history: locked-in slip')
+    ! issue 15: the state as a solution handle. By Ciavarella-Jager its stresses are
+    ! S(0.6) - 2 S(0.2) + 2 S(0) of monotonic solutions (closed forms); the march is good
+    ! to ~1e-8 f p0 away from the stick ends (tolerance 2e-7)
+    call hs_history_state(hist, 1, st, ierr)
+    call expect_code(ierr, HS_OK, 'history state')
+    call hs_solve(scene_qs(0.6_c_double, 0.0_c_double), m6)
+    call hs_solve(scene_qs(0.2_c_double, 0.0_c_double), m2)
+    call hs_solve(scene_qs(0.0_c_double, 0.0_c_double), m0)
+    px = [-1.3_c_double, -0.5_c_double, 0.3_c_double, 0.7_c_double]
+    py = [0.0_c_double, 0.2_c_double, 0.05_c_double, 0.0_c_double]
+    call hs_eval_stress(st, 1, 4, px, py, s, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'history state: stress')
+    call hs_eval_stress(m6, 1, 4, px, py, s6)
+    call hs_eval_stress(m2, 1, 4, px, py, s2)
+    call hs_eval_stress(m0, 1, 4, px, py, s0)
+    call expect(maxval(abs(s - (s6 - 2 * s2 + 2 * s0))) < 2e-7_c_double, 'history state: Ciavarella-Jager stresses')
+    call hs_eval_traction(st, 2, x, q2, ierr)
+    call hs_history_eval(hist, 1, HS_FIELD_TRACTION, 2, x, q, ierr)
+    call expect(all(q2 == q), 'history state: traction = hs_history_eval')
+    call hs_solution_energy(st, E, ierr)
+    call expect_code(ierr, HS_ERR_NOT_APPLICABLE, 'history state: no monotonic energies')
+    call hs_history_state(hist, 2, st2, ierr)
+    call expect(ierr == HS_ERR_BAD_OPTION .and. .not. hs_associated(st2), 'history state: vertex out of range')
+    call hs_history_state(hist, -1, st2, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'history state: negative vertex')
+    call hs_solution_free(m6)
+    call hs_solution_free(m2)
+    call hs_solution_free(m0)
     ! errors: outputs untouched, the vertices before a failing one kept
     q = 42
     x(2) = 1.5_c_double
@@ -653,6 +683,9 @@ contains
     call expect_code(ierr, HS_ERR_NOT_APPLICABLE, 'history: slip range without cycles')
     call hs_history_free(hist)
     call expect(.not. hs_associated(hist), 'history free resets the handle')
+    call hs_eval_stress(st, 1, 4, px, py, s6, ierr=ierr)
+    call expect(ierr == HS_OK .and. all(s6 == s), 'history state outlives the history')
+    call hs_solution_free(st)
     call hs_history_free(hist)   ! null handle: no-op
     call hs_history_vertex_count(hist, n, ierr)
     call expect_code(ierr, HS_ERR_NULL_POINTER, 'history: null handle')

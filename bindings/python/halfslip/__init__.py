@@ -179,7 +179,7 @@ _STATUS_ARGS = {
     ERR_BAD_FRICTION: ("f",),
     ERR_GROSS_SLIDING: ("Q_over_fP", "Q", "P", "f"),
     ERR_BAD_GEOMETRY: ("geometry", "flat_over_a", "exponent", "n", "samples", "flat_width", "R", "A", "model"),
-    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry", "quantity", "nu", "body"),
+    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry", "quantity", "nu", "body", "vertex"),
     ERR_BAD_NUMBER: _ALL,
     ERR_TOLERANCE: ("rtol", "model"),
     ERR_NOT_APPLICABLE: ("model", "geometry", "rtol"),
@@ -869,6 +869,7 @@ class History(_Handle):
             _raise(st, "hs_history_new", callback)
         self._h = h
         self._callback = callback   # a pressure callback the C history calls
+        self.scene = scene          # the Scene (a, p0, f, E_star; its ratios unused)
 
     def _handle(self):
         if not self._h:
@@ -950,6 +951,28 @@ class History(_Handle):
     def slip(self, vertex, x):
         """Accumulated slip h(x), locked-in slip included, after vertex `vertex`."""
         return self._eval(vertex, FIELD_SLIP, x)
+
+    def state(self, vertex):
+        """The state after vertex `vertex` (negative: from the end) as a
+        read-only Solution (hs_history_state): traction, slip (accumulated,
+        locked-in slip included), pressure, surface_stress, stress,
+        stress_scalar, surface_stress_extremes and the summary (b1, b2,
+        slip_dir1/2, regime) apply, and so do the pictures of halfslip.plot;
+        energy(), Bx() and work() raise HalfslipError ERR_NOT_APPLICABLE. The
+        Solution holds a copy of the steps up to the vertex: it stays valid
+        when the history grows or is closed."""
+        h = self._handle()
+        i = int(vertex)
+        if i < 0:
+            i += self.vertex_count
+        if i < 0:
+            raise IndexError("halfslip: History.state: vertex %d out of range (%d vertices)"
+                             % (int(vertex), self.vertex_count))
+        s = _clib.SolutionP()
+        st = _lib.hs_history_state(h, i, byref(s))
+        if st != 0:
+            _raise(st, "hs_history_state", self._callback, {"vertex": int(vertex)})
+        return Solution(s, callback=self._callback, scene=self.scene)
 
     def cycle_summary(self):
         """CycleSummary of the last add_cycles (HalfslipError ERR_NOT_APPLICABLE without one)."""

@@ -230,6 +230,7 @@ _SIGNATURES = {
     "hs_history_vertex_get": (c_int, [HistoryP, c_size_t, POINTER(HistoryVertex)]),
     "hs_history_eval": (c_int, [HistoryP, c_size_t, c_int, c_size_t, _DoubleP, _DoubleP]),
     "hs_history_cycle_summary": (c_int, [HistoryP, POINTER(CycleSummary)]),
+    "hs_history_state": (c_int, [HistoryP, c_size_t, POINTER(SolutionP)]),
     "hs_solution_steady_cycle": (c_int, [SolutionP, POINTER(SteadyCycle)]),
     "hs_history_slip_range": (c_int, [HistoryP, c_size_t, _DoubleP, _DoubleP]),
     "hs_ref_scene_default": (c_int, [POINTER(RefScene)]),

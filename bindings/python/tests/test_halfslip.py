@@ -593,6 +593,60 @@ class TestHistory(unittest.TestCase):
             self.assertEqual(len(h.slip(1, [])), 0)
             self.assertIn("2 vertices", repr(h))
 
+    def test_state_stresses(self):
+        # issue 15: the state after a vertex as a Solution. Unloading 0.6 -> 0.2 (sigma = 0): by
+        # Ciavarella-Jager the stresses are S(0.6) - 2 S(0.2) + 2 S(0) of monotonic solutions (closed
+        # forms); the march (rtol 1e-8) is good to ~1e-8 f p0 away from the stick ends
+        with halfslip.History(f=0.6, p0=2.0) as h:
+            h.add_vertices([0.6, 0.2], [0.0, 0.0])
+            st = h.state(-1)
+            self.assertIsInstance(st, halfslip.Solution)
+            self.assertEqual(st.regime, halfslip.REGIME_SAME_SIGN)
+            self.assertEqual((st.slip_dir1, st.slip_dir2), (-1, -1))
+            self.assertEqual(st.b1, h.vertex(1).b1)
+            self.assertEqual(st.traction(0.3), h.traction(1, 0.3))
+            self.assertEqual(st.slip(0.95), h.slip(1, 0.95))
+            with self.assertRaises(halfslip.HalfslipError) as cm:
+                h.state(2)
+            self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
+            self.assertIn("vertex=2", str(cm.exception))
+        # the state outlives the history
+        sols = [halfslip.solve(Q_over_fP=q, sigma_over_fp0=0.0, f=0.6, p0=2.0) for q in (0.6, 0.2, 0.0)]
+        fp0 = 1.2
+        for x, y in ((-1.2, 0.0), (-0.5, 0.0), (0.3, 0.0), (0.5, 0.3), (-0.9, 0.05), (0.0, 1.0)):
+            got = st.stress(x, y)
+            ref = [a - 2 * b + 2 * c for a, b, c in zip(*(s.stress(x, y) for s in sols))]
+            for g, r in zip(got, ref):
+                self.assertAlmostEqual(g, r, delta=2e-7 * fp0)
+        for name in ("energy",):
+            with self.assertRaises(halfslip.HalfslipError) as cm:
+                getattr(st, name)()
+            self.assertEqual(cm.exception.status, halfslip.ERR_NOT_APPLICABLE)
+        with self.assertRaises(halfslip.HalfslipError) as cm:
+            st.Bx(0.5)
+        self.assertEqual(cm.exception.status, halfslip.ERR_NOT_APPLICABLE)
+        ext = st.surface_stress_extremes()
+        self.assertTrue(ext["max"] > ext["min"])
+        st.close()
+        for s in sols:
+            s.close()
+
+    def test_state_plot(self):
+        # one picture of halfslip.plot on a history state (matplotlib optional)
+        try:
+            import matplotlib
+        except ImportError:
+            self.skipTest("matplotlib not installed")
+        matplotlib.use("Agg")
+        import halfslip.plot as hp
+        with halfslip.History() as h:
+            h.add_vertices([0.6, 0.2], [0.0, 0.0])
+            with h.state(1) as st:
+                ax = hp.surface_stress(st)
+                self.assertTrue(len(ax.lines) > 0)
+                ax = hp.stress_contour(st)
+                self.assertIsNotNone(ax)
+
     def test_symmetric_cycle_energy(self):
         # between +(0.5, 0.4) and -(0.5, 0.4): each zone dissipates 4 times its
         # monotonic energy at (0.5, 0.4) per cycle

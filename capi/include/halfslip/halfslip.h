@@ -450,6 +450,21 @@ HS_EXPORT int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *ou
 /* Slip range max h - min h over the vertices of the last cycle, at n points. */
 HS_EXPORT int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double *out);
 
+/* Issue 15 (unreleased): the state after vertex i of the history as a new,
+ * read-only solution handle (free it with hs_solution_free). It holds a copy of
+ * the steps up to the vertex: it stays valid after the history is freed or
+ * grows. These functions apply to it: hs_solution_summary (stick zone and slip
+ * directions of the vertex; regime STUCK without slip zones, OPPOSITE_SIGN when
+ * the two zones slip in opposite directions, otherwise SAME_SIGN; error_estimate
+ * the vertex's; model, iterations and quadrature_order 0), hs_eval_traction,
+ * hs_eval_slip (accumulated slip, locked-in slip included), hs_eval_pressure,
+ * hs_eval_surface_stress, hs_eval_stress, hs_eval_stress_scalar and
+ * hs_surface_stress_extremes. hs_solution_energy, hs_eval_Bx, hs_eval_work,
+ * hs_solution_ramp and hs_solution_steady_cycle return HS_ERR_NOT_APPLICABLE
+ * (monotonic-loading quantities). Errors: NULL_POINTER, BAD_OPTION (vertex out
+ * of range), OUT_OF_MEMORY; *out untouched on error. */
+HS_EXPORT int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out);
+
 /* Whether a proportional ramp from zero to the solution's (Q, sigma) would make a
  * slip zone recede on the way (the monotonic solution then is not the state such a
  * ramp reaches; docs/history.md), and the Q/fP where that first happens (NaN if not). */

@@ -168,6 +168,37 @@ template <class T> class traction_panels {
     return sum;
   }
 
+  // Re F0[q](x) at a breakpoint x (a half-piece end, or +-a): the principal
+  // value by subtraction of qx = q(x),
+  //   int (q(s) - qx)/(s - x) ds + qx log((a - x)/(a + x)).
+  // On the half-pieces that end at x, s - x = h t^2 exactly and
+  // (q - qx)/(s - x) ds = 2 (q - qx)/t dt is smooth in t (q - qx ~ t there);
+  // every other half-piece is at least half its piece's length from x, or
+  // graded towards its end so that x lies beyond its smallest panels: the
+  // cached nodes do. qx is not used at |x| = a (p and q vanish there).
+  T re_f0_q_break(const T &x, const T &qx) const {
+    using std::abs;
+    using std::log;
+    const bool edge = abs(x) >= a_;
+    const T qs = edge ? T(0) : qx;
+    T sum = 0;
+    for (const half_piece &hp : halves_) {
+      const bool adjacent = hp.end == x;
+      for (std::size_t i = hp.first; i < hp.first + hp.count; ++i) {
+        const panel &pn = panels_[i];
+        const T mid = (pn.ta + pn.tb) / 2, hl = (pn.tb - pn.ta) / 2;
+        for (int k = 0; k < n; ++k) {
+          const T t = mid + hl * xr_[k];
+          const T w = wr_[k] * hl * 2 * abs(pn.h) * t;
+          const T d = adjacent ? pn.h * t * t : pn.s[k] - x;
+          sum += w * (pn.q[k] - qs) / d;
+        }
+      }
+    }
+    if (qs != 0) sum += qs * log((a_ - x) / (a_ + x));
+    return sum;
+  }
+
  private:
   template <class D>
   panel make_panel(const D &dens, const T &end, const T &h, const T &m, const T &t0, const T &t1, int half) {

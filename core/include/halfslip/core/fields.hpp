@@ -154,6 +154,10 @@ template <class T> struct contact_state {
   bool hilbert_fast = false;
   T stick_lo{0}, stick_hi{0};
   std::vector<T> kinks;  // breakpoints where p is log-singular (graded panels)
+  // q is analytic inside the stick zone (stick_lo, stick_hi) (monotonic
+  // solutions): make_panels may take it from a Chebyshev series there. Not so
+  // for a load-history state, whose stick zone holds memory points.
+  bool q_analytic_on_stick = true;
   // optional: p and q cached on graded panels (make_panels), shared between
   // states of the same solution; used instead of quadrature from scratch
   std::shared_ptr<const traction_panels<T>> panels;
@@ -237,7 +241,8 @@ template <class T> T surface_sxx(const contact_state<T> &st, int body, const T &
     const bool breakpoint = abs(x) == st.a || std::find(st.breaks.begin(), st.breaks.end(), x) != st.breaks.end();
     const bool stick = x > st.stick_lo && x < st.stick_hi;
     if (!(on && st.hilbert_q && (breakpoint || stick))) {
-      H = -2 * st.panels->re_f0_q(x) / pi<T>();  // (2/pi) PV int q/(x - t)
+      // (2/pi) PV int q/(x - t); at a breakpoint by subtraction of q(x)
+      H = -2 * (breakpoint && on ? st.panels->re_f0_q_break(x, st.q(x)) : st.panels->re_f0_q(x)) / pi<T>();
       return (on ? -st.p(x) : T(0)) + sg * H + bulk;
     }
   }
@@ -453,7 +458,7 @@ template <class T> class stick_series {
 // converges, elsewhere from the state. Not needed where the state has closed forms.
 template <class T> std::shared_ptr<const traction_panels<T>> make_panels(const contact_state<T> &st) {
   std::unique_ptr<stick_series<T>> ser;
-  if (st.stick_hi > st.stick_lo) {
+  if (st.q_analytic_on_stick && st.stick_hi > st.stick_lo) {
     ser = std::make_unique<stick_series<T>>(st.q, st.stick_lo, st.stick_hi);
     if (!ser->ok()) ser.reset();
   }

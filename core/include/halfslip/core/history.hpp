@@ -138,6 +138,7 @@ template <class T> struct history_step {
   T b1a, b2a;          // ends at u = 0 (the knots of the previous step)
   int s1 = 0, s2 = 0;  // zone directions during the step (0: no zone)
   T E1{0}, E2{0};      // energy dissipated in each zone during the step
+  bool run_start = false;  // the first step of a run (a segment, or after an event or a jump)
   T b1(const T &u) const { return e1.val(u); }
   T b2(const T &u) const { return e2.val(u); }
   T b1b() const { return e1.bb; }
@@ -364,6 +365,74 @@ template <class T> class history {
     return h;
   }
   size_t step_count() const { return steps_.size(); }
+  // A history that holds the first nsteps steps only, shared by a state's
+  // handle: the traction, slip and memory points after those steps need the
+  // steps and the pressure only (not the march's working state).
+  std::shared_ptr<const history> prefix(size_t nsteps) const {
+    if (nsteps > steps_.size()) throw error(status::bad_option, "history: step count beyond the march");
+    auto r = std::make_shared<history>(pm_, opt_);
+    r->steps_.assign(steps_.begin(), steps_.begin() + std::ptrdiff_t(nsteps));
+    loads_after(nsteps, r->q_, r->s_);
+    return r;
+  }
+  // Loads after nsteps steps.
+  void loads_after(size_t nsteps, T &q, T &s) const {
+    q = s = T(0);
+    if (nsteps == 0) return;
+    const history_step<T> &st = steps_[nsteps - 1];
+    q = st.q0 + st.dq;
+    s = st.s0 + st.ds;
+  }
+  // The points of the stick zone after nsteps steps (and its ends) where that
+  // state's traction may be non-smooth (issue 15: the breakpoints of the field
+  // panels). A stuck point carries the traction it had when it last entered
+  // the stick zone plus the stuck-interval rates since then, which behave like
+  // 1/sqrt(distance) at the ends of each interval: q is non-smooth where an end
+  // stopped, started, jumped or turned and the point has stayed stuck since
+  // (Masing's memory points; for unloading, the ends of the loading). Within
+  // a run the ends are smooth in time apart from the knots of their cubic
+  // interpolation, whose kinks are at the level of the march's own error.
+  // Candidates: the end positions at the start of every run, both sides of every
+  // jump (a zero-load step), and the current ends; one is kept if no end has
+  // crossed it since (it is inside or at the end of every later stick zone).
+  std::vector<T> memory_points(size_t nsteps) const {
+    using std::max;
+    using std::min;
+    std::vector<T> out;
+    if (nsteps == 0) return out;
+    if (nsteps > steps_.size()) throw error(status::bad_option, "history: step count beyond the march");
+    // the innermost position of each end over steps k..n-1 (m1: smallest b1, m2: smallest b2)
+    std::vector<T> m1(nsteps + 1), m2(nsteps + 1);
+    m1[nsteps] = steps_[nsteps - 1].b1b();
+    m2[nsteps] = steps_[nsteps - 1].b2b();
+    for (size_t k = nsteps; k-- > 0;) {
+      const history_step<T> &st = steps_[k];
+      m1[k] = min(m1[k + 1], min(st.b1a, st.b1b()));
+      m2[k] = min(m2[k + 1], min(st.b2a, st.b2b()));
+    }
+    const T tol = 64 * eps<T>();
+    auto keep = [&](const T &x, size_t from) {  // x stuck over steps from..n-1
+      if (x <= -1 || x >= 1) return;
+      if (x <= m1[from] + tol && x >= -m2[from] - tol) out.push_back(x);
+    };
+    for (size_t k = 0; k < nsteps; ++k) {
+      const history_step<T> &st = steps_[k];
+      const bool jump = st.dq == 0 && st.ds == 0;
+      if (st.run_start || jump || k == 0) {
+        keep(st.b1a, k);
+        keep(-st.b2a, k);
+      }
+      if (jump) {
+        keep(st.b1b(), k + 1);
+        keep(-st.b2b(), k + 1);
+      }
+    }
+    keep(steps_[nsteps - 1].b1b(), nsteps);
+    keep(-steps_[nsteps - 1].b2b(), nsteps);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
   // Interior slip patches (the friction limit reached inside the stick zone, away
   // from the ends) are merged at once with the nearer edge zone, the band between
   // included: an approximation, counted here (0: every state is exact to the march).
@@ -1099,6 +1168,7 @@ template <class T> class history {
     if (steps_.size() >= size_t(opt_.max_steps))
       throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
     step_energy(st);
+    st.run_start = steps_.size() == run_start_;
     steps_.push_back(st);
     b1_ = st.e1.bb;
     b2_ = st.e2.bb;
