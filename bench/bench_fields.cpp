@@ -13,6 +13,10 @@
 //   traction.hpp at every node, panels graded around each point; for Hertz same sign the
 //   closed forms in long double) on every 10th grid column, divided by the peak |stress| on
 //   the grid; and the cost of the first call (panels built).
+// Also the states of two load histories (hs_history_state, issue 15): Hertz unloading
+// 0 -> 0.6 -> 0.2, and 3 cycles of Q and sigma 90 degrees out of phase; their accuracy
+// is checked in tests/test_history_fields.cpp (Ciavarella-Jager superposition, quadrature
+// from scratch split at every step end).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -198,6 +202,86 @@ void accuracy(const char *path) {
   std::fclose(f);
 }
 
+// ---- states of load histories (hs_history_state): the same evaluators ----------------
+// unloading: Hertz, sigma = 0, Q/fP 0 -> 0.6 -> 0.2; out_of_phase: Hertz, Q/fP = 0.3 sin wt,
+// sigma/fp0 = 1.0 sin(wt + 90 deg), 3 cycles. The state after the last vertex.
+struct history_def {
+  const char *name;
+  bool cycles;
+};
+const history_def kHistories[] = {{"history_unloading", false}, {"history_out_of_phase", true}};
+
+hs_solution *history_state(const history_def &d) {
+  hs_scene sc;
+  hs_scene_default(&sc);
+  hs_history *h = nullptr;
+  int st = hs_history_new(&sc, nullptr, nullptr, &h);
+  if (st == HS_OK) {
+    if (d.cycles) {
+      st = hs_history_add_cycles(h, 0.0, 0.3, 0.0, 1.0, 90.0, 3);
+    } else {
+      const double q[2] = {0.6, 0.2}, s[2] = {0.0, 0.0};
+      st = hs_history_add_vertices(h, 2, q, s);
+    }
+  }
+  size_t n = 0;
+  if (st == HS_OK) st = hs_history_vertex_count(h, &n);
+  hs_solution *sol = nullptr;
+  if (st == HS_OK) st = hs_history_state(h, n - 1, &sol);
+  hs_history_free(h);
+  if (st != HS_OK) {
+    std::fprintf(stderr, "bench_fields: history %s: %s\n", d.name, hs_strerror(st));
+    std::exit(1);
+  }
+  return sol;
+}
+
+void BM_history_surface(benchmark::State &state, history_def d) {
+  hs_solution *sol = history_state(d);
+  std::vector<double> out(pts().sx.size());
+  hs_eval_surface_stress(sol, 1, 0.0, 1, pts().sx.data(), out.data());
+  for (auto _ : state) {
+    hs_eval_surface_stress(sol, 1, 0.0, out.size(), pts().sx.data(), out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  hs_solution_free(sol);
+}
+
+void BM_history_grid(benchmark::State &state, history_def d) {
+  hs_solution *sol = history_state(d);
+  std::vector<double> out(3 * pts().gx.size());
+  hs_eval_stress(sol, 1, 0.0, 1, pts().gx.data(), pts().gy.data(), out.data());
+  for (auto _ : state) {
+    hs_eval_stress(sol, 1, 0.0, pts().gx.size(), pts().gx.data(), pts().gy.data(), out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  hs_solution_free(sol);
+}
+
+// the state's handle and its first field call (panel cache over the state's steps); the march not timed
+void BM_history_first_call(benchmark::State &state, history_def d) {
+  hs_scene sc;
+  hs_scene_default(&sc);
+  hs_history *h = nullptr;
+  hs_history_new(&sc, nullptr, nullptr, &h);
+  if (d.cycles) {
+    hs_history_add_cycles(h, 0.0, 0.3, 0.0, 1.0, 90.0, 3);
+  } else {
+    const double q[2] = {0.6, 0.2}, s[2] = {0.0, 0.0};
+    hs_history_add_vertices(h, 2, q, s);
+  }
+  size_t n = 0;
+  hs_history_vertex_count(h, &n);
+  double x = 0.3, y = 0.2, out[3];
+  for (auto _ : state) {
+    hs_solution *sol = nullptr;
+    hs_history_state(h, n - 1, &sol);
+    hs_eval_stress(sol, 1, 0.0, 1, &x, &y, out);
+    hs_solution_free(sol);
+  }
+  hs_history_free(h);
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -212,6 +296,15 @@ int main(int argc, char **argv) {
     benchmark::RegisterBenchmark((std::string("grid_200x100/") + d.name).c_str(), BM_grid, d)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("first_call/") + d.name).c_str(), BM_first_call, d)
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(5);
+  }
+  for (const history_def &d : kHistories) {
+    benchmark::RegisterBenchmark((std::string("surface_1000/") + d.name).c_str(), BM_history_surface, d)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((std::string("grid_200x100/") + d.name).c_str(), BM_history_grid, d)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((std::string("first_call/") + d.name).c_str(), BM_history_first_call, d)
         ->Unit(benchmark::kMillisecond)
         ->Iterations(5);
   }
