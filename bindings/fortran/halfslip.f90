@@ -88,6 +88,7 @@ module halfslip
   integer(c_int), parameter, public :: HS_REF_EVAL_SLIP     = 2
   integer(c_int), parameter, public :: HS_REF_EVAL_WORK     = 3
   integer(c_int), parameter, public :: HS_REF_EVAL_PRESSURE = 4
+  integer(c_int), parameter, public :: HS_REF_EVAL_TRACTION = 5
 
   ! load histories (since 0.4)
   integer(c_int), parameter, public :: HS_RAMP_SIGMA_FIRST = 0

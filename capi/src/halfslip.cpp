@@ -718,8 +718,20 @@ int hs_ref_eval(const hs_ref_solution *sol, int what, const char *x, char *buf, 
                 int *certified) {
   return guard([&] {
     require(sol != nullptr && x != nullptr, core::status::null_pointer, "NULL argument");
-    require(what >= HS_REF_EVAL_BX && what <= HS_REF_EVAL_PRESSURE, core::status::bad_option, "unknown evaluation");
+    require(what >= HS_REF_EVAL_BX && what <= HS_REF_EVAL_TRACTION, core::status::bad_option, "unknown evaluation");
     put_text(sol->sol.eval(hs::reference::point_eval(what), x), buf, size, needed, certified);
+  });
+}
+
+int hs_ref_eval_stress(const hs_ref_solution *sol, int body, const char *bulk2, int component, const char *x,
+                       const char *y, char *buf, size_t size, size_t *needed, int *certified) {
+  return guard([&] {
+    require(sol != nullptr && x != nullptr && y != nullptr, core::status::null_pointer, "NULL argument");
+    require(body == 1 || body == 2, core::status::bad_option, "body must be 1 or 2");
+    require(component >= HS_STRESS_XX && component <= HS_STRESS_XY, core::status::bad_option,
+            "component must be HS_STRESS_XX, HS_STRESS_YY or HS_STRESS_XY");
+    put_text(sol->sol.stress(body, bulk2 ? bulk2 : "0", hs::reference::stress_component(component), x, y), buf, size,
+             needed, certified);
   });
 }
 

@@ -116,4 +116,10 @@ certified solution::eval(point_eval what, const std::string &x) const {
   return certify(work_->eval(what, x, digits_), check_->eval(what, x, int(check_->digits10())));
 }
 
+certified solution::stress(int body, const std::string &bulk2, stress_component c, const std::string &x,
+                           const std::string &y) const {
+  release_mpfr_thread_caches on_exit;
+  return certify(work_->stress(body, bulk2, c, x, y, digits_), check_->stress(body, bulk2, c, x, y, int(check_->digits10())));
+}
+
 }}  // namespace hs::reference

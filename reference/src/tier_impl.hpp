@@ -7,8 +7,11 @@
 #include <cstdlib>
 #include <iomanip>
 #include <memory>
+#include <mutex>
 #include <sstream>
 
+#include "halfslip/core/field_hp.hpp"
+#include "halfslip/core/fields.hpp"
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/pressure.hpp"
@@ -47,6 +50,28 @@ template <class T> T parse_decimal(const std::string &s, const char *what) {
   }
   if (!digits || i != n || n > 4096) throw core::error(core::status::bad_number, what);
   return T(s);
+}
+
+// parse_decimal, and whether the rounding lowered the magnitude of the exact
+// decimal (|exact| > |value|): MPFR's ternary value of the correctly rounded
+// conversion (the same number as T(s), which also rounds to nearest).
+template <class T> T parse_decimal_exact(const std::string &s, const char *what, bool &rounded_inwards) {
+  T v = parse_decimal<T>(s, what);
+  T w;
+  char *end = nullptr;
+  const int tern = mpfr_strtofr(w.backend().data(), s.c_str(), &end, 10, MPFR_RNDN);
+  if (end == nullptr || *end != 0 || w != v) throw core::error(core::status::bad_number, what);
+  // tern > 0: w > exact; for w >= 0 that lowers nothing, for w < 0 it lowers |exact| to |w|
+  rounded_inwards = w > 0 ? tern > 0 ? false : tern < 0 : w < 0 ? tern > 0 : false;
+  return v;
+}
+
+// |x| <= a for the exact decimal x (a as represented at the working
+// precision): the rounding of x decides only when |x| rounds to a.
+template <class T> bool within(const T &x, bool rounded_inwards, const T &a) {
+  using std::abs;
+  if (abs(x) < a) return true;
+  return abs(x) == a && !rounded_inwards;
 }
 
 template <class T> std::string to_text(const T &v, int sig) {
@@ -157,20 +182,113 @@ template <unsigned D> class tier_solution_impl final : public tier_solution {
     });
   }
   std::string eval(point_eval what, const std::string &xs, int sig) const override {
-    const T x = parse_decimal<T>(xs, "evaluation point is not a decimal number");
+    bool inwards = false;
+    const T x = parse_decimal_exact<T>(xs, "evaluation point x is not a decimal number", inwards);
     return visit([&](const auto &s) -> std::string {
-      if (!(abs(x) <= s.scene.a)) throw core::error(core::status::point_outside, "evaluation point outside |x| <= a");
+      // exact: a decimal x just beyond a that rounds to a is outside
+      if (!within(x, inwards, s.scene.a))
+        throw core::error(core::status::point_outside, "evaluation point x outside |x| <= a");
       switch (what) {
         case point_eval::Bx: return to_text(s.Bx(x), sig);
         case point_eval::slip: return to_text(s.slip(x), sig);
         case point_eval::work: return to_text(s.work(x), sig);
         case point_eval::pressure: return to_text(s.pressure(x), sig);
+        case point_eval::traction: return to_text(traction_at(s, x), sig);
       }
       throw core::error(core::status::bad_option, "unknown evaluation");
     });
   }
 
+  std::string stress(int body, const std::string &bulk2s, stress_component c, const std::string &xs,
+                     const std::string &ys, int sig) const override {
+    if (body != 1 && body != 2)
+      throw core::error(core::status::bad_option, "body must be 1 or 2");
+    if (c != stress_component::xx && c != stress_component::yy && c != stress_component::xy)
+      throw core::error(core::status::bad_option, "stress component must be HS_STRESS_XX, _YY or _XY");
+    const T x = parse_decimal<T>(xs, "stress point x is not a decimal number");
+    const T y = parse_decimal<T>(ys, "stress point y is not a decimal number");
+    const T bulk2 = parse_decimal<T>(bulk2s, "bulk stress bulk2 is not a decimal number");
+    if (body == 1 ? y < 0 : y > 0)
+      throw core::error(core::status::bad_option, "stress point y outside the body (body 1: y >= 0, body 2: y <= 0)");
+    using std::abs;
+    return visit([&](const auto &s) -> std::string {
+      const core::contact_state<T> st = field_state(s, bulk2);
+      const core::stress_tensor<T> t = core::stress_at(st, body, x, T(abs(y)));
+      return to_text(c == stress_component::xx ? t.xx : c == stress_component::yy ? t.yy : t.xy, sig);
+    });
+  }
+
+  // The contact state of a solution at this precision: the Hertz closed forms
+  // where they exist, else q from the cached stick-zone series and the Cauchy
+  // integrals by cauchy_graded (field_hp.hpp).
+  template <class S> core::contact_state<T> field_state(const S &s, const T &bulk2) const {
+    core::contact_state<T> st;
+    if constexpr (std::is_same<S, core::hertz_solution<T>>::value) st = core::hertz_state<T>(s, bulk2);
+    else st = core::general_state_of<T>(s, bulk2);
+    const fields_cache &fc = fields(s);
+    st.q = [this, &s, &fc](const T &v) { return fast_traction(s, fc, v); };
+    const std::vector<T> pts = st.points(), kinks = st.kinks;
+    st.numeric = [this, &s, &fc, pts, kinks](const std::complex<T> &z, core::cauchy_pair<T> &P,
+                                             core::cauchy_pair<T> &Q) {
+      core::cauchy_graded<T>(
+          [&](const T &v, T &pv, T &qv) {
+            pv = s.pressure(v);
+            qv = fast_traction(s, fc, v);
+          },
+          pts, z, P, Q, kinks, general_max_order(D));
+    };
+    return st;
+  }
+
  private:
+  // What the fields share between calls: a tanh-sinh integrator (its node
+  // tables cost ten integrals) and q on the stick zone as a Chebyshev series
+  // (stick_series, ~500 evaluations of q at 80 digits), built once per tier
+  // on the first field request (std::call_once: the solution stays shareable).
+  struct fields_cache {
+    mutable boost::math::quadrature::tanh_sinh<T> ts = core::make_tanh_sinh<T>();
+    std::unique_ptr<core::stick_series<T>> ser;
+  };
+  static std::vector<T> kinks_of(const core::hertz_solution<T> &) { return {}; }
+  template <class S> static std::vector<T> kinks_of(const S &s) { return s.user_kinks(); }
+  // closed forms where they exist (Hertz same sign, stuck), else traction.hpp
+  // at the tanh-sinh tolerance root-eps of T (quadratic convergence: the
+  // error is about eps; the series' coefficients level off at 1e-79 at 80 digits)
+  template <class S> T direct_traction(const S &s, const fields_cache &fc, const T &x) const {
+    if constexpr (std::is_same<S, core::hertz_solution<T>>::value)
+      if (s.reg != core::regime::opposite_sign) return s.traction(x);
+    return core::monotonic_traction<T>([&](const T &v) { return s.pressure(v); }, s.scene.a, s.scene.f, s.b1(),
+                                       s.b2(), s.dir1(), s.dir2(), x, kinks_of(s), T(0), &fc.ts);
+  }
+  template <class S> T traction_at(const S &s, const T &x) const {
+    return direct_traction(s, fields(s), x);
+  }
+  template <class S> T fast_traction(const S &s, const fields_cache &fc, const T &x) const {
+    if (fc.ser && fc.ser->inside(x)) return (*fc.ser)(x);
+    return direct_traction(s, fc, x);
+  }
+  template <class S> const fields_cache &fields(const S &s) const {
+    std::call_once(fields_once_, [&] {
+      auto fc = std::make_unique<fields_cache>();
+      const bool generic =
+          !std::is_same<S, core::hertz_solution<T>>::value || s.reg == core::regime::opposite_sign;
+      if (generic && s.b1() + s.b2() > 0) {
+        // the degree the series needs grows with the digits (512 at 80 for
+        // Hertz opposite sign and the flat punch): allow 16 D, as the solver
+        int max_degree = 256;
+        while (max_degree < 16 * int(D)) max_degree *= 2;
+        const fields_cache &f = *fc;
+        fc->ser = std::make_unique<core::stick_series<T>>([&](const T &v) { return direct_traction(s, f, v); },
+                                                          -s.b2(), s.b1(), max_degree);
+        if (!fc->ser->ok()) fc->ser.reset();  // q directly at every node (slow, still exact)
+      }
+      fields_ = std::move(fc);
+    });
+    return *fields_;
+  }
+  mutable std::once_flag fields_once_;
+  mutable std::unique_ptr<fields_cache> fields_;
+
   template <class F> auto visit(F &&f) const {
     if constexpr (has_general) {
       if (general_) return f(*general_);

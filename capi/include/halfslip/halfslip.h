@@ -368,10 +368,24 @@ HS_EXPORT int hs_ref_value(const hs_ref_solution *sol, int quantity, char *buf, 
 #define HS_REF_EVAL_SLIP     2
 #define HS_REF_EVAL_WORK     3
 #define HS_REF_EVAL_PRESSURE 4
+#define HS_REF_EVAL_TRACTION 5  /* shear traction q(x) on body 1 (added after 0.4.0) */
 
-/* Point evaluation at the decimal point x (|x| <= a), as hs_ref_value. */
+/* Point evaluation at the decimal point x (|x| <= a), as hs_ref_value. The
+ * range check is exact: a decimal x beyond a that rounds to a at the working
+ * precision gives HS_ERR_POINT_OUTSIDE. */
 HS_EXPORT int hs_ref_eval(const hs_ref_solution *sol, int what, const char *x, char *buf, size_t size,
                           size_t *needed, int *certified);
+
+/* A stress component (HS_STRESS_XX, HS_STRESS_YY or HS_STRESS_XY) at the decimal
+ * point (x, y) of body 1 (y >= 0) or body 2 (y <= 0), as hs_eval_stress; y = 0 is
+ * the surface (on and off the contact). bulk2: decimal bulk stress of body 2
+ * (NULL: "0"); body 1 carries sigma + bulk2. Output as hs_ref_value, certified
+ * by the work and check tiers. Bad strings: HS_ERR_BAD_NUMBER; body not 1 or 2,
+ * another component, or y on the other body's side: HS_ERR_BAD_OPTION.
+ * Added after 0.4.0 (docs/fields.md). */
+HS_EXPORT int hs_ref_eval_stress(const hs_ref_solution *sol, int body, const char *bulk2, int component,
+                                 const char *x, const char *y, char *buf, size_t size, size_t *needed,
+                                 int *certified);
 
 
 /* ---- load histories (since 0.4; docs/history.md) ------------------------------

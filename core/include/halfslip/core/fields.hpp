@@ -104,7 +104,10 @@ template <class T, class G> void cauchy_numeric(const G &dens, const std::vector
       std::vector<T> cuts{T(0), T(1)};
       // a log-singular kink of p at this end: panels graded towards it (t^2 log t)
       if (std::find(kinks.begin(), kinks.end(), end) != kinks.end())
-        for (int k = 1; k <= 12; ++k) cuts.push_back(std::ldexp(T(1), -k));
+        for (int k = 1; k <= 12; ++k) {
+          using std::ldexp;  // ADL for multiprecision T
+          cuts.push_back(ldexp(T(1), -k));
+        }
       if (delta < T(0.5)) {
         const T dmin = std::max(delta, T(64) * eps<T>());
         cuts.push_back(t0);
@@ -161,6 +164,9 @@ template <class T> struct contact_state {
   // optional: p and q cached on graded panels (make_panels), shared between
   // states of the same solution; used instead of quadrature from scratch
   std::shared_ptr<const traction_panels<T>> panels;
+  // optional: the Cauchy integrals by another quadrature (the reference
+  // backend's, field_hp.hpp), used instead of cauchy_numeric when set
+  std::function<void(const std::complex<T> &, cauchy_pair<T> &, cauchy_pair<T> &)> numeric;
 
   std::vector<T> points() const {
     std::vector<T> v{-a, a};
@@ -178,6 +184,10 @@ template <class T> struct contact_state {
     Q = {};
     if (panels) {
       panels->cauchy(zeta, P, Q);
+      return;
+    }
+    if (numeric) {
+      numeric(zeta, P, Q);
       return;
     }
     cauchy_numeric<T>(
@@ -399,10 +409,13 @@ template <class T> class stick_series {
       for (int j = 0; j <= N; ++j) gn[j] = (j % 2 == 0 && !g.empty()) ? g[j / 2] : q(x_of(cos(pi<T>() * j / N)));
       g.swap(gn);
       c_.assign(N + 1, T(0));
+      // cos(pi m/N) for m < 2N, the same numbers as computed in the sum (a
+      // multiprecision cos costs microseconds: N^2 of them would dominate)
+      std::vector<T> cs(2 * N);
+      for (int m = 0; m < 2 * N; ++m) cs[m] = cos(pi<T>() * T(m) / N);
       for (int k = 0; k <= N; ++k) {
         T sum = 0;
-        for (int j = 0; j <= N; ++j)
-          sum += (j == 0 || j == N ? T(0.5) : T(1)) * g[j] * cos(pi<T>() * T(j * k % (2 * N)) / N);
+        for (int j = 0; j <= N; ++j) sum += (j == 0 || j == N ? T(0.5) : T(1)) * g[j] * cs[j * k % (2 * N)];
         c_[k] = sum * 2 / N * (k == 0 || k == N ? T(0.5) : T(1));
       }
       T big = 0, tail = 0;

@@ -28,9 +28,12 @@ namespace hs { namespace core {
 
 // P: callable p(x) in the user frame. kinks: points of (-a, a) where p is not
 // smooth (split points of the quadrature). Returns q(x); 0 outside |x| < a.
+// tol: the tanh-sinh termination tolerance (0: root epsilon of T); ts: an
+// integrator to reuse (make_tanh_sinh), nullptr: a new one per zone integral.
 template <class T, class P> T monotonic_traction(const P &p, const T &a, const T &f, const T &b1, const T &b2,
                                                  int dir1, int dir2, const T &x, const std::vector<T> &kinks = {},
-                                                 T tol = T(0)) {
+                                                 T tol = T(0),
+                                                 boost::math::quadrature::tanh_sinh<T> *ts = nullptr) {
   using std::atan;
   using std::sqrt;
   if (!(x > -a && x < a)) return T(0);
@@ -77,7 +80,7 @@ template <class T, class P> T monotonic_traction(const P &p, const T &a, const T
             const T ue = (uc > 0 && hi == T(1)) ? uc : T(-1);
             return 2 * sd * (g(u, ue) - g0) / (ep + d * u * u);
           },
-          lo, hi, tol);
+          lo, hi, tol, nullptr, nullptr, ts);
     }
     return sum;
   };

@@ -38,7 +38,9 @@ struct text_scene {
 };
 
 enum class quantity : int { b1 = 1, b2 = 2, d1 = 3, d2 = 4, energy1 = 5, energy2 = 6, a = 7, p0 = 8 };
-enum class point_eval : int { Bx = 1, slip = 2, work = 3, pressure = 4 };
+enum class point_eval : int { Bx = 1, slip = 2, work = 3, pressure = 4, traction = 5 };
+// Stress components (the values of HS_STRESS_XX, _YY, _XY).
+enum class stress_component : int { xx = 1, yy = 2, xy = 3 };
 
 // One solve at one fixed precision tier (type-erased).
 class tier_solution {
@@ -54,6 +56,10 @@ class tier_solution {
   // Value printed in scientific notation with `sig` significant digits.
   virtual std::string value(quantity q, int sig) const = 0;
   virtual std::string eval(point_eval what, const std::string &x, int sig) const = 0;
+  // Stress component at (x, y) in body 1 (y >= 0) or body 2 (y <= 0); body 2
+  // carries the bulk stress bulk2, body 1 sigma + bulk2 (docs/fields.md).
+  virtual std::string stress(int body, const std::string &bulk2, stress_component c, const std::string &x,
+                             const std::string &y, int sig) const = 0;
 };
 
 // Precision ladder (decimal digits) and the largest certifiable request.
@@ -95,6 +101,8 @@ class solution {
   int quadrature_order() const { return work_->quadrature_order(); }
   certified value(quantity q) const;
   certified eval(point_eval what, const std::string &x) const;
+  certified stress(int body, const std::string &bulk2, stress_component c, const std::string &x,
+                   const std::string &y) const;
 
  private:
   certified certify(const std::string &work, const std::string &check) const;
