@@ -211,6 +211,57 @@ err=$("$cli" solve --fields "$dir/q.csv" --fields-at "$dir/bad.txt" 2>&1 >/dev/n
 [ $rc -ne 0 ] && echo "$err" | grep -q "line 2: y 'abc' is not a number" && ok || ko "--fields-at bad line: $err"
 err=$("$cli" solve --fields-at "$dir/pts.txt" 2>&1 >/dev/null); rc=$?
 [ $rc -ne 0 ] && echo "$err" | grep -q -- "--fields-at needs --fields" && ok || ko "--fields-at without --fields: $err"
+# --digits N --fields-at PTS: certified stresses from the reference backend (hs_ref_eval_stress).
+# Hertz same sign at 30 digits against the double path's closed forms (--fields CSV, 17 digits):
+# the double path is good to ~1e-12 of the peak f p0 = 1 at y = 1e-6 a and ~1e-13 elsewhere
+# (docs/fields.md), the bound used here; the reference claims all 30 digits at each point
+printf 'x y body\n0.3 0.5\n-0.6, -0.2\n1.3 0\n0.3 0 2\n0.95 1e-6\n-0.2 -0.7\n' > "$dir/rp.txt"
+"$cli" solve --Q-over-fP 0.6 --sigma-over-fp0 0.3 --fields "$dir/rd.csv" --fields-at "$dir/rp.txt" >/dev/null &&
+"$cli" solve --digits 30 --Q-over-fP 0.6 --sigma-over-fp0 0.3 --no-energy --fields-at "$dir/rp.txt" --json > "$dir/r.json" && python3 -c '
+import csv, json, sys
+d = json.load(open(sys.argv[2]))
+assert d["regime"] == "same-sign" and d["pad_bulk"] == "0", d
+rows = list(csv.DictReader(open(sys.argv[1])))
+f = d["fields"]
+assert [(p["x"], p["y"], p["body"]) for p in f] == [("0.3", "0.5", 1), ("-0.6", "-0.2", 2), ("1.3", "0", 1), ("0.3", "0", 2), ("0.95", "1e-6", 1), ("-0.2", "-0.7", 2)], f
+for p, r in zip(f, rows):
+    assert int(r["body"]) == p["body"], (p, r)
+    for c in ("sxx", "syy", "sxy"):
+        assert p[c + "_digits"] == 30 and len(p[c].split("e")[0].replace("-", "").replace(".", "")) == 30, p
+        tol = 1e-12 if abs(float(p["y"])) < 1e-4 else 1e-13
+        assert abs(float(p[c]) - float(r[c])) <= tol, (c, p, r)' "$dir/rd.csv" "$dir/r.json" && ok || ko "solve --digits --fields-at: Hertz same sign at 30 digits against the double path"
+out=$("$cli" solve --digits 30 --Q-over-fP 0.6 --sigma-over-fp0 0.3 --no-energy --fields-at "$dir/rp.txt") && echo "$out" | grep -q "x = 0.3, y = 0, body 2" && [ "$(echo "$out" | grep -c "\[30 digits certified\]")" -eq $((6 + 18)) ] && ok || ko "solve --digits --fields-at: the report"
+# --pad-bulk is the exact decimal: 0.1 shifts sxx of both bodies by 0.1 to 30 digits (the double
+# nearest 0.1 would be off by 5.6e-18), and nothing else
+"$cli" solve --digits 30 --Q-over-fP 0.6 --sigma-over-fp0 0.3 --no-energy --fields-at "$dir/rp.txt" --pad-bulk 0.1 --json > "$dir/rb.json" && python3 -c '
+import json, sys
+from decimal import Decimal
+a, b = (json.load(open(f))["fields"] for f in sys.argv[1:3])
+for p, q in zip(a, b):
+    # each value is rounded to 30 digits (values below 1.3: 1e-30 each)
+    assert abs(Decimal(q["sxx"]) - Decimal(p["sxx"]) - Decimal("0.1")) <= Decimal("4e-30"), (p, q)
+    assert q["syy"] == p["syy"] and q["sxy"] == p["sxy"], (p, q)
+assert json.load(open(sys.argv[2]))["pad_bulk"] == "0.1"' "$dir/r.json" "$dir/rb.json" && ok || ko "solve --digits --pad-bulk exact decimal"
+# bad input: a bad point line, y on the wrong side of the body named, a bad body, --pad-bulk, and the
+# options the reference path does not take
+printf '0.3 0.5\n0.1 abc\n' > "$dir/rbad.txt"
+err=$("$cli" solve --digits 20 --fields-at "$dir/rbad.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q "rbad.txt: line 2: y 'abc' is not a number" && ok || ko "--digits --fields-at bad line: $err"
+printf '0.3 0.5\n# the pad\n0.3 0.5 2\n' > "$dir/rside.txt"
+err=$("$cli" solve --digits 20 --fields-at "$dir/rside.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q "line 3: y = 0.5 is not in body 2 (the pad, y <= 0)" && ok || ko "--digits --fields-at y on the wrong side: $err"
+err=$("$cli" solve --fields "$dir/q.csv" --fields-at "$dir/rside.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q "line 3: y = 0.5 is not in body 2 (the pad, y <= 0)" && ok || ko "--fields-at y on the wrong side (double): $err"
+printf '0.3 0.5 3\n' > "$dir/rbody.txt"
+err=$("$cli" solve --digits 20 --fields-at "$dir/rbody.txt" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q "line 1: body '3' is not 1 (specimen) or 2 (pad)" && ok || ko "--fields-at bad body: $err"
+err=$("$cli" solve --digits 20 --fields-at "$dir/rp.txt" --pad-bulk 0.1x 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "bad value for --pad-bulk: '0.1x'" && ok || ko "--digits --pad-bulk bad: $err"
+for bad in "--fields $dir/x.csv" "--pad-bulk 1" "--nu 0.3 --fields-at $dir/rp.txt" "--points 5"; do
+  err=$("$cli" solve --digits 20 $bad 2>&1 >/dev/null); rc=$?
+  opt=$(echo "$bad" | cut -d' ' -f1)
+  if [ $rc -ne 0 ] && [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] && echo "$err" | grep -q -- "$opt"; then ok; else ko "--digits $bad (rc=$rc): $err"; fi
+done
 # the flat punch grid (6,642 points) is quick now (it took 1.7 s before the cached panels)
 "$cli" solve --geometry flat-rounded --Q-over-fP 0.4 --sigma-over-fp0 2 --fields "$dir/g.csv" >/dev/null && [ "$(wc -l < "$dir/g.csv")" -eq 6643 ] && ok || ko "--fields flat punch"
 err=$("$cli" solve --fields /nonexistent/dir/f.csv 2>&1 >/dev/null); rc=$?

@@ -55,7 +55,11 @@ const char *kUsage =
     "  --nu V                  Poisson's ratio for von Mises in --fields (default 0.3)\n"
     "  --fields-at PTS         with --fields: the points of file PTS instead of the grid, one\n"
     "                          'x y' per line (whitespace or a comma; '#' comments; a header line);\n"
-    "                          y >= 0 is body 1 (specimen), y < 0 body 2 (pad)\n"
+    "                          y >= 0 is body 1 (specimen), y < 0 body 2 (pad); an optional third\n"
+    "                          column 'x y body' (1 or 2) names the body (the pad's surface: y = 0, 2).\n"
+    "                          With --digits (no --fields): sxx, syy, sxy at each point to N digits\n"
+    "                          with their certified digits, in the report and the JSON (\"fields\");\n"
+    "                          --pad-bulk is then read as an exact decimal\n"
     "  --no-energy             skip the zone energies (the slow part with --digits; null in JSON)\n"
     "  --digits N              reference backend (MPFR): every output to N significant digits\n"
     "                          with its certified digit count; inputs are read as exact decimals\n"
@@ -505,8 +509,118 @@ const char *ref_geometry_name(int kind) {
   return kind == HS_GEOMETRY_FLAT_ROUNDED ? "flat-rounded" : kind == HS_GEOMETRY_POWER_LAW ? "power-law" : "hertz";
 }
 
+// --fields-at FILE: points 'x y' per line (whitespace or one comma, '#' comments,
+// blank lines, a header line first), optionally a third column body (1 or 2;
+// default 1 for y >= 0, 2 for y < 0); errors name the file and the line. The
+// exact texts of x and y and the line numbers are kept for the reference backend.
+struct field_points {
+  std::string path;
+  std::vector<double> x, y;
+  std::vector<std::string> tx, ty;
+  std::vector<int> body, line;
+};
+
+// A decimal text that is negative and not a zero ("-1e-400" is, "-0" is not;
+// strtod rounds the former to -0)
+bool negative_text(const std::string &t, double v) {
+  if (v != 0) return v < 0;
+  if (t.empty() || t[0] != '-') return false;
+  for (const char c : t) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') return true;
+  }
+  return false;
+}
+
+field_points read_points(const std::string &path) {
+  field_points fp;
+  fp.path = path;
+  const std::string all = read_whole_file(path, "--fields-at");
+  size_t pos = 0;
+  int ln = 0;
+  bool header_allowed = true;
+  while (pos < all.size()) {
+    size_t nl = all.find('\n', pos);
+    if (nl == std::string::npos) nl = all.size();
+    std::string t = all.substr(pos, nl - pos);
+    pos = nl + 1;
+    ++ln;
+    if (!content_of_line(t)) continue;
+    const std::vector<std::string> fl = split_fields(t);
+    const std::string where = "--fields-at " + path + ": line " + std::to_string(ln) + ": ";
+    double x = 0, y = 0;
+    if (header_allowed && !is_number(fl[0], x)) {
+      header_allowed = false;
+      continue;
+    }
+    header_allowed = false;
+    if (fl.size() != 2 && fl.size() != 3)
+      die(where + std::to_string(fl.size()) + " columns, expected 2 (x y) or 3 (x y body)");
+    if (!is_number(fl[0], x)) die(where + "x '" + fl[0] + "' is not a number");
+    if (!is_number(fl[1], y)) die(where + "y '" + fl[1] + "' is not a number");
+    if (!std::isfinite(x) || !std::isfinite(y)) die(where + "the point is not finite");
+    int body = negative_text(fl[1], y) ? 2 : 1;
+    if (fl.size() == 3) {
+      if (fl[2] != "1" && fl[2] != "2") die(where + "body '" + fl[2] + "' is not 1 (specimen) or 2 (pad)");
+      body = fl[2][0] - '0';
+    }
+    fp.x.push_back(x);
+    fp.y.push_back(y);
+    fp.tx.push_back(fl[0]);
+    fp.ty.push_back(fl[1]);
+    fp.body.push_back(body);
+    fp.line.push_back(ln);
+  }
+  if (fp.x.empty()) die("--fields-at " + path + ": no points");
+  return fp;
+}
+
+// A status of the library at the i-th point of --fields-at, naming the line and the value
+[[noreturn]] void point_error(const field_points &fp, size_t i, int st) {
+  const std::string where = "--fields-at " + fp.path + ": line " + std::to_string(fp.line[i]) + ": ";
+  if (st == HS_ERR_BAD_OPTION)  // the library's check of the body's side
+    die(where + "y = " + fp.ty[i] + " is not in body " + std::to_string(fp.body[i]) +
+        (fp.body[i] == 1 ? " (the specimen, y >= 0)" : " (the pad, y <= 0)") + ": " + hs_strerror(st));
+  die(where + "x = " + fp.tx[i] + ", y = " + fp.ty[i] + ": " + hs_strerror(st));
+}
+
+// One certified decimal string and its certified digits
+struct certified_text {
+  std::string text;
+  int digits = 0;
+};
+
+// --digits with --fields-at PTS: sigma_xx, sigma_yy, sigma_xy at each point of the file,
+// from hs_ref_eval_stress (the exact decimal texts of the file and of --pad-bulk)
+std::vector<std::array<certified_text, 3>> reference_fields(const hs_ref_solution *sol, const field_points &fp,
+                                                           const std::string &pad_bulk, int digits) {
+  std::vector<std::array<certified_text, 3>> out(fp.x.size());
+  std::vector<char> buf(size_t(digits) + 64);
+  for (size_t i = 0; i < fp.x.size(); ++i)
+    for (int c = HS_STRESS_XX; c <= HS_STRESS_XY; ++c) {
+      int cd = 0;
+      size_t needed = 0;
+      int st = hs_ref_eval_stress(sol, fp.body[i], pad_bulk.c_str(), c, fp.tx[i].c_str(), fp.ty[i].c_str(),
+                                  buf.data(), buf.size(), &needed, &cd);
+      if (st == HS_ERR_BUFFER_TOO_SMALL) {
+        buf.resize(needed);
+        st = hs_ref_eval_stress(sol, fp.body[i], pad_bulk.c_str(), c, fp.tx[i].c_str(), fp.ty[i].c_str(),
+                                buf.data(), buf.size(), &needed, &cd);
+      }
+      if (st != HS_OK) point_error(fp, i, st);
+      out[i][size_t(c - 1)] = {buf.data(), cd};
+    }
+  return out;
+}
+
 int solve_reference(const Args &args, int digits) {
-  if (args.count("--points")) die("--points is not available with --digits (use the C ABI's hs_ref_eval)");
+  if (args.count("--points"))
+    die("--points is not available with --digits (the C ABI's hs_ref_eval, Python's ReferenceSolution.traction)");
+  if (args.count("--fields"))
+    die("--fields FILE is not available with --digits: give the points with --fields-at PTS (the certified "
+        "stresses are in the report and the JSON)");
+  if (args.count("--nu")) die("--nu is not available with --digits (the reference backend gives sxx, syy, sxy)");
+  if (args.count("--pad-bulk") && !args.count("--fields-at")) die("--pad-bulk with --digits needs --fields-at PTS");
   const bool json = args.count("--json") > 0;
   const int kind = ref_geometry_kind(args, "--digits");
   if (kind != HS_GEOMETRY_HERTZ && (is_dimensional(args) || args.count("--flat-width")))
@@ -545,6 +659,11 @@ int solve_reference(const Args &args, int digits) {
     sc.Q_over_fP = in["Q_over_fP"].c_str();
     sc.sigma_over_fp0 = in["sigma_over_fp0"].c_str();
   }
+  // --fields-at: read (and check) the points before the solve; the pad's bulk stress as given
+  const bool fields = args.count("--fields-at") > 0;
+  field_points fp;
+  if (fields) fp = read_points(args.at("--fields-at"));
+  const std::string pad_bulk = decimal_arg(args, "--pad-bulk", "0");
   hs_ref_solution *sol = nullptr;
   check_input(hs_ref_solve(&sc, digits, &sol), args, "reference solve");  // the C library checks the ranges
   hs_ref_summary sm;
@@ -567,7 +686,10 @@ int solve_reference(const Args &args, int digits) {
     check(hs_ref_value(sol, it.id, buf.data(), buf.size(), nullptr, &cd), it.key);
     vals.emplace_back(buf.data(), cd);
   }
+  std::vector<std::array<certified_text, 3>> stress;
+  if (fields) stress = reference_fields(sol, fp, pad_bulk, digits);
   hs_ref_solution_free(sol);
+  static const char *const comp[3] = {"sxx", "syy", "sxy"};
   if (json) {
     std::printf(
         "{\"geometry\": \"%s\", \"regime\": \"%s\", \"digits\": %d, \"working_digits\": %d, "
@@ -584,6 +706,18 @@ int solve_reference(const Args &args, int digits) {
     for (size_t i = 0; i < vals.size(); ++i)
       std::printf(", \"%s\": %s, \"%s_digits\": %d", items[i].key, json_str(vals[i].first).c_str(), items[i].key,
                   vals[i].second);
+    if (fields) {
+      std::printf(", \"pad_bulk\": %s, \"fields\": [", json_escape(pad_bulk).c_str());
+      for (size_t i = 0; i < stress.size(); ++i) {
+        std::printf("%s{\"x\": %s, \"y\": %s, \"body\": %d", i ? ", " : "", json_escape(fp.tx[i]).c_str(),
+                    json_escape(fp.ty[i]).c_str(), fp.body[i]);
+        for (int c = 0; c < 3; ++c)
+          std::printf(", \"%s\": %s, \"%s_digits\": %d", comp[c], json_str(stress[i][c].text).c_str(), comp[c],
+                      stress[i][c].digits);
+        std::printf("}");
+      }
+      std::printf("]");
+    }
     std::printf("}\n");
   } else {
     std::printf("halfslip %s reference backend: %s contact, %d significant digits\n", hs_version_string(),
@@ -596,6 +730,16 @@ int solve_reference(const Args &args, int digits) {
                 sm.slip_dir2);
     for (size_t i = 0; i < vals.size(); ++i)
       std::printf("  %-8s = %s   [%d digits certified]\n", items[i].key, vals[i].first.c_str(), vals[i].second);
+    if (fields) {
+      std::printf("stresses at the points of %s (body 1: specimen, y >= 0; body 2: pad, y <= 0; pad bulk %s):\n",
+                  fp.path.c_str(), pad_bulk.c_str());
+      for (size_t i = 0; i < stress.size(); ++i) {
+        std::printf("  x = %s, y = %s, body %d\n", fp.tx[i].c_str(), fp.ty[i].c_str(), fp.body[i]);
+        for (int c = 0; c < 3; ++c)
+          std::printf("    %-4s = %s   [%d digits certified]\n", comp[c], stress[i][c].text.c_str(),
+                      stress[i][c].digits);
+      }
+    }
   }
   return 0;
 }
@@ -604,38 +748,6 @@ int solve_reference(const Args &args, int digits) {
 const char *model_name(int m) {
   const char *name = hs_model_name(m);
   return name ? name : "unknown";
-}
-
-// --fields-at FILE: points 'x y' per line (whitespace or one comma, '#' comments,
-// blank lines, a header line first); errors name the file and the line
-void read_points(const std::string &path, std::vector<double> &px, std::vector<double> &py) {
-  const std::string all = read_whole_file(path, "--fields-at");
-  size_t pos = 0;
-  int ln = 0;
-  bool header_allowed = true;
-  while (pos < all.size()) {
-    size_t nl = all.find('\n', pos);
-    if (nl == std::string::npos) nl = all.size();
-    std::string t = all.substr(pos, nl - pos);
-    pos = nl + 1;
-    ++ln;
-    if (!content_of_line(t)) continue;
-    const std::vector<std::string> fl = split_fields(t);
-    const std::string where = "--fields-at " + path + ": line " + std::to_string(ln) + ": ";
-    double x = 0, y = 0;
-    if (header_allowed && !is_number(fl[0], x)) {
-      header_allowed = false;
-      continue;
-    }
-    header_allowed = false;
-    if (fl.size() != 2) die(where + std::to_string(fl.size()) + " columns, expected 2 (x y)");
-    if (!is_number(fl[0], x)) die(where + "x '" + fl[0] + "' is not a number");
-    if (!is_number(fl[1], y)) die(where + "y '" + fl[1] + "' is not a number");
-    if (!std::isfinite(x) || !std::isfinite(y)) die(where + "the point is not finite");
-    px.push_back(x);
-    py.push_back(y);
-  }
-  if (px.empty()) die("--fields-at " + path + ": no points");
 }
 
 // issue 15: --fields FILE, the stresses on a grid of both bodies (or at the points of
@@ -660,10 +772,16 @@ void write_fields(const hs_solution *sol, double a, double pad_bulk, double nu, 
     }
   };
   if (!points_path.empty()) {
-    std::vector<double> px, py;
-    read_points(points_path, px, py);
+    const field_points fp = read_points(points_path);
     // in file order, each point in its body
-    for (size_t i = 0; i < px.size(); ++i) rows(py[i] >= 0 ? 1 : 2, {px[i]}, {py[i]});
+    for (size_t i = 0; i < fp.x.size(); ++i) {
+      const int b = fp.body[i];
+      const double x = fp.x[i], y = fp.y[i];
+      double s[3];
+      const int st = hs_eval_stress(sol, b, pad_bulk, 1, &x, &y, s);
+      if (st != HS_OK) point_error(fp, i, st);
+      rows(b, {x}, {y});
+    }
   } else {
     const int nx = 81, ny = 41;
     std::vector<double> x(nx), y(nx);

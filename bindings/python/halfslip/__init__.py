@@ -24,6 +24,7 @@ raises ValueError naming the argument and its value.
 import array
 import collections
 import ctypes
+import decimal
 import enum
 import sys
 from ctypes import byref, c_double, c_int, c_size_t
@@ -179,7 +180,8 @@ _STATUS_ARGS = {
     ERR_BAD_FRICTION: ("f",),
     ERR_GROSS_SLIDING: ("Q_over_fP", "Q", "P", "f"),
     ERR_BAD_GEOMETRY: ("geometry", "flat_over_a", "exponent", "n", "samples", "flat_width", "R", "A", "model"),
-    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry", "quantity", "nu", "body", "vertex"),
+    ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry", "quantity", "nu", "body", "vertex",
+                     "component", "y"),
     ERR_BAD_NUMBER: _ALL,
     ERR_TOLERANCE: ("rtol", "model"),
     ERR_NOT_APPLICABLE: ("model", "geometry", "rtol"),
@@ -204,7 +206,7 @@ def _float(v, name, where):
 
 # quantity and evaluation selectors of hs_ref_value / hs_ref_eval
 _REF_QUANTITIES = {"b1": 1, "b2": 2, "d1": 3, "d2": 4, "energy1": 5, "energy2": 6, "a": 7, "p0": 8}
-_REF_EVALS = {"Bx": 1, "slip": 2, "work": 3, "pressure": 4}
+_REF_EVALS = {"Bx": 1, "slip": 2, "work": 3, "pressure": 4, "traction": 5}
 
 
 # ---- the library ----------------------------------------------------------------
@@ -1019,16 +1021,16 @@ def ref_max_digits(geometry=None):
     return _lib.hs_ref_max_digits_geometry(_geometry_kind(geometry, None, None, None, None))
 
 
-def _decimal(v, name="value"):
+def _decimal(v, name="value", where="solve_reference"):
     if v is None:
         return None
     if isinstance(v, bool) or not isinstance(v, (str, int, float)) and not hasattr(v, "as_tuple"):
-        raise ValueError("halfslip.solve_reference: %s=%r is not a decimal number (give a str, int, float "
-                         "or decimal.Decimal)" % (name, v))
+        raise ValueError("halfslip.%s: %s=%r is not a decimal number (give a str, int, float "
+                         "or decimal.Decimal)" % (where, name, v))
     try:
         return (v if isinstance(v, str) else str(v)).encode("ascii")
     except UnicodeEncodeError:
-        raise ValueError("halfslip.solve_reference: %s=%r is not a decimal number" % (name, v)) from None
+        raise ValueError("halfslip.%s: %s=%r is not a decimal number" % (where, name, v)) from None
 
 
 def solve_reference(digits, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=None, f=None, E_star=None,
@@ -1066,8 +1068,9 @@ def solve_reference(digits, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=N
     return ReferenceSolution(h)
 
 
-def _ref_text(fn, name, args):
-    """Call hs_ref_value / hs_ref_eval, growing the buffer on HS_ERR_BUFFER_TOO_SMALL."""
+def _ref_text(fn, name, args, values=None):
+    """Call hs_ref_value / hs_ref_eval / hs_ref_eval_stress, growing the buffer on
+    HS_ERR_BUFFER_TOO_SMALL; values: the arguments named in an error's message."""
     size = 64
     while True:
         buf = ctypes.create_string_buffer(size)
@@ -1076,14 +1079,15 @@ def _ref_text(fn, name, args):
         if st == ERR_BUFFER_TOO_SMALL and needed.value > size:
             size = needed.value
             continue
-        _check(st, name)
+        _check(st, name, values)
         return Certified(buf.value.decode("ascii"), certified.value)
 
 
 class ReferenceSolution(_Handle):
     """A reference (MPFR) solution. Values are Certified strings: b1, b2, d1,
-    d2, a, p0, energy(), and the point evaluations Bx(x), slip(x), work(x),
-    pressure(x) at a decimal point x (or a list of them)."""
+    d2, a, p0, energy(), the point evaluations Bx(x), slip(x), work(x),
+    pressure(x), traction(x) at a decimal point x (or a list of them), and the
+    stresses stress(x, y, body, pad_bulk) in either body."""
 
     def __init__(self, handle):
         self._h = handle
@@ -1140,7 +1144,8 @@ class ReferenceSolution(_Handle):
         h = self._handle()
         if isinstance(x, (str, bytes, int, float)):
             return _ref_text(_lib.hs_ref_eval, "hs_ref_eval",
-                             (h, _REF_EVALS[what], x if isinstance(x, bytes) else _decimal(x)))
+                             (h, _REF_EVALS[what], x if isinstance(x, bytes) else _decimal(x, "x", what)),
+                             {"x": x})
         return [self._eval(what, v) for v in x]
 
     def Bx(self, x):
@@ -1154,3 +1159,33 @@ class ReferenceSolution(_Handle):
 
     def pressure(self, x):
         return self._eval("pressure", x)
+
+    def traction(self, x):
+        """Shear traction q(x) on body 1 (positive in +x, integral Q) at the decimal
+        point x, |x| <= a (HS_REF_EVAL_TRACTION), or a list of them."""
+        return self._eval("traction", x)
+
+    def stress(self, x, y, body=None, pad_bulk="0"):
+        """(sigma_xx, sigma_yy, sigma_xy) as Certified strings at the decimal point
+        (x, y) of body 1 (specimen, y >= 0) or 2 (pad, y <= 0); y = 0 is the surface.
+        body defaults to 1 for y >= 0 and 2 for y < 0 (as Solution.stress; give
+        body=2 for the pad's surface). pad_bulk: the pad's bulk stress (a decimal;
+        the specimen carries sigma + pad_bulk). Lists x, y give a list of tuples."""
+        h = self._handle()
+        if not isinstance(x, (str, bytes, int, float)):
+            ys = list(y)
+            xs = list(x)
+            if len(xs) != len(ys):
+                raise ValueError("x and y differ in length")
+            return [self.stress(u, v, body, pad_bulk) for u, v in zip(xs, ys)]
+        cx = x if isinstance(x, bytes) else _decimal(x, "x", "ReferenceSolution.stress")
+        cy = y if isinstance(y, bytes) else _decimal(y, "y", "ReferenceSolution.stress")
+        cb = None if pad_bulk is None else _decimal(pad_bulk, "pad_bulk", "ReferenceSolution.stress")
+        if body is None:  # exact sign of the decimal (a bad string is reported by the C library)
+            try:
+                body = 2 if decimal.Decimal(cy.decode("ascii")) < 0 else 1
+            except (decimal.InvalidOperation, ValueError):
+                body = 1
+        values = {"x": x, "y": y, "body": body, "pad_bulk": pad_bulk}
+        return tuple(_ref_text(_lib.hs_ref_eval_stress, "hs_ref_eval_stress", (h, int(body), cb, c, cx, cy), values)
+                     for c in (STRESS_XX, STRESS_YY, STRESS_XY))

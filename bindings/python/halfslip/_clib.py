@@ -242,6 +242,8 @@ _SIGNATURES = {
     "hs_ref_value": (c_int, [RefSolutionP, c_int, _CharP, c_size_t, POINTER(c_size_t), POINTER(c_int)]),
     "hs_ref_eval": (c_int, [RefSolutionP, c_int, c_char_p, _CharP, c_size_t, POINTER(c_size_t),
                             POINTER(c_int)]),
+    "hs_ref_eval_stress": (c_int, [RefSolutionP, c_int, c_char_p, c_int, c_char_p, c_char_p, _CharP, c_size_t,
+                                   POINTER(c_size_t), POINTER(c_int)]),
 }
 
 
