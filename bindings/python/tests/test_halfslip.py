@@ -21,6 +21,7 @@ import subprocess
 import sys
 import tempfile
 import threading
+import decimal
 import unittest
 
 import halfslip
@@ -847,6 +848,66 @@ class TestReference(unittest.TestCase):
         self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
         with self.assertRaises(TypeError):
             halfslip.solve_reference(20, flat_over_a="0.5", exponent="3")
+
+    def test_traction_and_stress(self):
+        # Hertz same sign at 30 digits against the double path's closed forms: q to ~1e-13 of
+        # f p0 = 1 (closed forms, a few roundings); stresses to 1e-13 at depth and 1e-12 at
+        # y = 1e-6 a (the double path's accuracy, docs/fields.md); every digit certified
+        with halfslip.solve_reference(30, Q_over_fP="0.6", sigma_over_fp0="0.3") as r, \
+                halfslip.solve(Q_over_fP=0.6, sigma_over_fp0=0.3) as sol:
+            self.assertEqual(r.regime, halfslip.REGIME_SAME_SIGN)
+            for x in ("-0.9", "0", "0.5", "0.95"):
+                q = r.traction(x)
+                self.assertIsInstance(q, halfslip.Certified)
+                self.assertEqual(q.certified, 30, x)
+                self.assertAlmostEqual(float(q), sol.traction(float(x)), delta=1e-13, msg=x)
+            qs = r.traction(["-0.9", 0.5])
+            self.assertEqual([str(v) for v in qs], [r.traction("-0.9"), r.traction("0.5")])
+            for x, y, body in (("0.3", "0.5", None), ("-0.6", "-0.2", None), ("1.3", "0", None),
+                               ("0.3", "0", 2), ("0.95", "1e-6", 1), ("0.2", "-0", None)):
+                s = r.stress(x, y, body=body)
+                self.assertEqual(len(s), 3)
+                b = body or (2 if float(y) < 0 else 1)
+                d = sol.stress(float(x), float(y), body=b)
+                for c in range(3):
+                    self.assertEqual(s[c].certified, 30, (x, y, c))
+                    tol = 1e-12 if abs(float(y)) < 1e-4 else 1e-13
+                    self.assertAlmostEqual(float(s[c]), d[c], delta=tol, msg=(x, y, body, c))
+            # default body: y < 0 is the pad (its surface at y = 0 needs body=2; off the contact its
+            # sxx lacks the specimen's sigma)
+            self.assertEqual(r.stress("-0.6", "-0.2"), r.stress("-0.6", "-0.2", body=2))
+            self.assertNotEqual(r.stress("1.3", "0")[0], r.stress("1.3", "0", body=2)[0])
+            # the pad's bulk stress, an exact decimal: sxx of both bodies moves by 0.1 (the double
+            # nearest 0.1 would move it by 0.1 + 5.6e-18), syy and sxy stay
+            for x, y in (("0.3", "0.5"), ("-0.6", "-0.2")):
+                s0, s1 = r.stress(x, y), r.stress(x, y, pad_bulk="0.1")
+                self.assertLessEqual(abs(decimal.Decimal(s1[0]) - decimal.Decimal(s0[0]) - decimal.Decimal("0.1")),
+                                     decimal.Decimal("4e-30"))
+                self.assertEqual(s1[1:], s0[1:])
+            self.assertEqual(len(r.stress(["0.3", "0.1"], ["0.5", "0.2"])), 2)
+
+    def test_traction_and_stress_errors(self):
+        with halfslip.solve_reference(15, Q_over_fP="0.3", sigma_over_fp0="2") as r:
+            for call, status, words in ((lambda: r.traction("1.5"), halfslip.ERR_POINT_OUTSIDE, "x='1.5'"),
+                                        (lambda: r.traction("0.1x"), halfslip.ERR_BAD_NUMBER, "x='0.1x'"),
+                                        (lambda: r.stress("0.3", "0.5", body=2), halfslip.ERR_BAD_OPTION,
+                                         "y='0.5'"),
+                                        (lambda: r.stress("0.3", "-0.5", body=1), halfslip.ERR_BAD_OPTION, "body=1"),
+                                        (lambda: r.stress("0.3", "0.5", body=3), halfslip.ERR_BAD_OPTION, "body=3"),
+                                        (lambda: r.stress("0.3", "abc"), halfslip.ERR_BAD_NUMBER, "y='abc'"),
+                                        (lambda: r.stress("0.3", "0.5", pad_bulk="nan"), halfslip.ERR_BAD_NUMBER,
+                                         "pad_bulk='nan'")):
+                with self.assertRaises(HalfslipError) as cm:
+                    call()
+                self.assertEqual(cm.exception.status, status, words)
+                self.assertIn(words, str(cm.exception))
+            with self.assertRaises(ValueError) as cm:
+                r.stress("0.3", [1])
+            self.assertIn("y=[1]", str(cm.exception))
+            with self.assertRaises(ValueError):
+                r.stress(["0.3", "0.1"], ["0.5"])
+        with self.assertRaises(ValueError):
+            r.traction("0.1")  # closed
 
     def test_errors(self):
         with self.assertRaises(HalfslipError) as cm:
