@@ -257,7 +257,7 @@ module halfslip
   public :: hs_eval_stress_scalar
   public :: hs_ref_max_digits, hs_ref_max_digits_geometry, hs_ref_solve, hs_ref_solution_free
   public :: hs_ref_solution_summary
-  public :: hs_ref_value, hs_ref_eval
+  public :: hs_ref_value, hs_ref_eval, hs_ref_eval_stress
   public :: hs_solution_ramp, hs_solution_steady_cycle
   public :: hs_history_options_default, hs_history_new, hs_history_free, hs_history_add_vertices
   public :: hs_history_add_cycles, hs_history_vertex_count, hs_history_vertex_get, hs_history_eval
@@ -536,6 +536,19 @@ module halfslip
       integer(c_int), intent(inout) :: certified
       integer(c_int) :: st
     end function c_hs_ref_eval
+
+    function c_hs_ref_eval_stress(sol, body, bulk2, component, x, y, buf, size, needed, certified) &
+        bind(c, name="hs_ref_eval_stress") result(st)
+      import :: c_int, c_ptr, c_size_t, c_char
+      type(c_ptr), value :: sol
+      integer(c_int), value :: body, component
+      character(kind=c_char), intent(in) :: bulk2(*), x(*), y(*)
+      character(kind=c_char), intent(inout) :: buf(*)
+      integer(c_size_t), value :: size
+      integer(c_size_t), intent(inout) :: needed
+      integer(c_int), intent(inout) :: certified
+      integer(c_int) :: st
+    end function c_hs_ref_eval_stress
 
     function c_hs_solution_ramp(sol, recedes, at_Q_over_fP) bind(c, name="hs_solution_ramp") result(st)
       import :: c_int, c_ptr, c_double
@@ -1349,5 +1362,43 @@ contains
     end if
     call check(st, 'hs_ref_eval', ierr)
   end subroutine hs_ref_eval
+
+  ! A stress component (HS_STRESS_XX, _YY or _XY) at the decimal point (x, y) of body 1
+  ! (specimen, y >= 0) or 2 (pad, y <= 0); y = 0 is the surface. pad_bulk: the pad's
+  ! decimal bulk stress (optional, default "0"; the specimen carries sigma + pad_bulk).
+  subroutine hs_ref_eval_stress(sol, body, component, x, y, value, certified, ierr, pad_bulk)
+    type(hs_ref_solution_t), intent(in) :: sol
+    integer, intent(in) :: body, component
+    character(len=*), intent(in) :: x, y
+    character(len=:), allocatable, intent(inout) :: value
+    integer, intent(out), optional :: certified
+    integer, intent(out), optional :: ierr
+    character(len=*), intent(in), optional :: pad_bulk
+    character(kind=c_char), allocatable :: buf(:), cx(:), cy(:), cb(:)
+    integer(c_size_t) :: needed
+    integer(c_int) :: st, cd
+    call to_c(x, cx)
+    call to_c(y, cy)
+    if (present(pad_bulk)) then
+      call to_c(pad_bulk, cb)
+    else
+      call to_c('0', cb)
+    end if
+    allocate (buf(64))
+    cd = 0
+    do
+      needed = 0
+      st = c_hs_ref_eval_stress(sol%ptr, int(body, c_int), cb, int(component, c_int), cx, cy, buf, &
+                                size(buf, kind=c_size_t), needed, cd)
+      if (st /= HS_ERR_BUFFER_TOO_SMALL .or. needed <= size(buf, kind=c_size_t)) exit
+      deallocate (buf)
+      allocate (buf(needed))
+    end do
+    if (st == HS_OK) then
+      value = buf_to_f(buf, int(needed) - 1)
+      if (present(certified)) certified = int(cd)
+    end if
+    call check(st, 'hs_ref_eval_stress', ierr)
+  end subroutine hs_ref_eval_stress
 
 end module halfslip

@@ -494,6 +494,41 @@ contains
     call expect_code(ierr, HS_ERR_BAD_NUMBER, 'reference bad number')
     call hs_ref_value(rsol, 99, v, cd, ierr)
     call expect_code(ierr, HS_ERR_BAD_OPTION, 'reference unknown quantity')
+    ! traction and stresses (issue 15) against the double path: 1e-12 of f p0 = 1, its accuracy
+    ! away from the surface layer (docs/fields.md)
+    block
+      type(hs_solution_t) :: dsol
+      real(c_double) :: xq(1), qd(1), xs(1), ys(1), sd(3, 1), val
+      integer :: c
+      call hs_solve(scene_qs(0.3_c_double, 2.0_c_double), dsol, ierr=ierr)
+      call expect_code(ierr, HS_OK, 'double solve for the reference fields')
+      xq(1) = -0.25_c_double
+      call hs_eval_traction(dsol, 1, xq, qd, ierr)
+      call hs_ref_eval(rsol, HS_REF_EVAL_TRACTION, '-0.25', v, cd, ierr)
+      call expect_code(ierr, HS_OK, 'reference traction')
+      read (v, *) val
+      call expect(cd == 30, 'reference traction certified to 30 digits')
+      call expect_near(val, qd(1), 1e-12_c_double, 'reference traction = double')
+      xs(1) = 0.3_c_double
+      ys(1) = -0.5_c_double
+      call hs_eval_stress(dsol, 2, 1, xs, ys, sd, 0.5_c_double, ierr)
+      do c = HS_STRESS_XX, HS_STRESS_XY
+        call hs_ref_eval_stress(rsol, 2, c, '0.3', '-0.5', v, cd, ierr, pad_bulk='0.5')
+        call expect_code(ierr, HS_OK, 'reference stress in the pad')
+        read (v, *) val
+        call expect(cd == 30, 'reference stress certified to 30 digits')
+        call expect_near(val, sd(c, 1), 1e-12_c_double, 'reference stress = double')
+      end do
+      call hs_solution_free(dsol)
+    end block
+    v = 'unchanged'
+    call hs_ref_eval_stress(rsol, 1, HS_STRESS_XX, '0.3', '-0.5', v, cd, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'reference stress: y on the pad side for body 1')
+    call expect(v == 'unchanged', 'reference stress untouched on error')
+    call hs_ref_eval_stress(rsol, 1, HS_STRESS_XX, '0.3', '0.5', v, cd, ierr, pad_bulk='0.5x')
+    call expect_code(ierr, HS_ERR_BAD_NUMBER, 'reference stress: bad pad_bulk')
+    call hs_ref_eval_stress(rsol, 1, HS_STRESS_VON_MISES, '0.3', '0.5', v, cd, ierr)
+    call expect_code(ierr, HS_ERR_BAD_OPTION, 'reference stress: not a component')
     call hs_ref_solution_free(rsol)
     call expect(.not. hs_associated(rsol), 'reference free resets the handle')
 
