@@ -185,8 +185,8 @@ void against_double(int geometry, const std::vector<double> &xs, const std::vect
         CAPTURE(x);
         CAPTURE(y);
         CAPTURE(c);
-        REQUIRE(hs_ref_eval_stress(s.rs, body, "0.5", c, exact(x).c_str(), exact(y).c_str(), buf, sizeof buf,
-                                   nullptr, &cd) == HS_OK);
+        REQUIRE(hs_ref_eval_stress(s.rs, body, "0.5", c, exact(x).c_str(), exact(y).c_str(), buf, sizeof buf, nullptr,
+                                   &cd) == HS_OK);
         CHECK(cd >= 14);  // 1e-6 a from the surface costs ~6 of the 20 digits
         CHECK(std::abs(to_double(buf) - v[c - 1]) <= (std::abs(y) < 1e-4 ? 2e-11 : 1e-12));
       }

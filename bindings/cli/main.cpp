@@ -593,7 +593,7 @@ struct certified_text {
 // --digits with --fields-at PTS: sigma_xx, sigma_yy, sigma_xy at each point of the file,
 // from hs_ref_eval_stress (the exact decimal texts of the file and of --pad-bulk)
 std::vector<std::array<certified_text, 3>> reference_fields(const hs_ref_solution *sol, const field_points &fp,
-                                                           const std::string &pad_bulk, int digits) {
+                                                            const std::string &pad_bulk, int digits) {
   std::vector<std::array<certified_text, 3>> out(fp.x.size());
   std::vector<char> buf(size_t(digits) + 64);
   for (size_t i = 0; i < fp.x.size(); ++i)
@@ -604,8 +604,8 @@ std::vector<std::array<certified_text, 3>> reference_fields(const hs_ref_solutio
                                   buf.data(), buf.size(), &needed, &cd);
       if (st == HS_ERR_BUFFER_TOO_SMALL) {
         buf.resize(needed);
-        st = hs_ref_eval_stress(sol, fp.body[i], pad_bulk.c_str(), c, fp.tx[i].c_str(), fp.ty[i].c_str(),
-                                buf.data(), buf.size(), &needed, &cd);
+        st = hs_ref_eval_stress(sol, fp.body[i], pad_bulk.c_str(), c, fp.tx[i].c_str(), fp.ty[i].c_str(), buf.data(),
+                                buf.size(), &needed, &cd);
       }
       if (st != HS_OK) point_error(fp, i, st);
       out[i][size_t(c - 1)] = {buf.data(), cd};
