@@ -32,7 +32,7 @@ foreach(l IN LISTS CMAKE_CXX_IMPLICIT_LINK_LIBRARIES)
     list(APPEND HS_CXX_RUNTIME_LIBS ${l})
   endif()
 endforeach()
-set(HS_STATIC_DEPS mpfr gmp ${HS_CXX_RUNTIME_LIBS})
+set(HS_STATIC_DEPS mpfr gmp pthread ${HS_CXX_RUNTIME_LIBS})  # pthread: hs_solve_batch
 
 # The static library's link interface: MPFR and GMP as the imported target
 # PkgConfig::HS_MP (re-created by halfslipConfig.cmake), halfslip_reference for

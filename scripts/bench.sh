@@ -8,6 +8,7 @@
 #     charts docs/figures/speed_accuracy.svg, docs/figures/stability.svg (docs/benchmarks.md)
 #   bench/results/fields.csv, fields_accuracy.csv  stresses (issue 15; Google Benchmark)
 #   bench/results/samples.csv    sampled pressure: time and accuracy against the sample count (issue 13)
+#   bench/results/opposite.csv   opposite-sign slip/energies old vs new, hs_solve_batch vs a loop (issue 16)
 # The charts are drawn by halfslip.plot (matplotlib): Debian's /usr/bin/python3 with
 # python3-matplotlib (HS_PYTHON overrides it).
 set -euo pipefail
@@ -37,4 +38,11 @@ if [ -x "$HS_BUILD/bench/bench_fields" ]; then
   "$HS_BUILD/bench/bench_fields" "$HS_ROOT/bench/results/fields_accuracy.csv" --benchmark_repetitions=5 \
     --benchmark_report_aggregates_only=true --benchmark_out="$HS_ROOT/bench/results/fields.csv" \
     --benchmark_out_format=csv
+fi
+# issue 16: opposite-sign slip and energies (fixed Gauss rules vs the old tanh-sinh path) and
+# hs_solve_batch against one hs_solve per scene, same run (Google Benchmark)
+if [ -x "$HS_BUILD/bench/bench_opposite" ]; then
+  "$HS_BUILD/bench/bench_opposite" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+    --benchmark_out="$HS_ROOT/bench/results/opposite.csv" --benchmark_out_format=csv \
+    | tee "$HS_ROOT/bench/results/opposite.txt"
 fi

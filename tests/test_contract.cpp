@@ -393,3 +393,86 @@ TEST_CASE("hs_solution_steady_cycle: Ciavarella-Jager closed form vs the marched
   CHECK(rec == 1);
   hs_solution_free(sol);
 }
+
+// Issue 16: hs_solve_batch gives, bitwise, what one hs_solve + summary (+
+// energy) per scene gives, for any thread count, with per-scene statuses.
+TEST_CASE("hs_solve_batch: bitwise equal to one call per scene, per-scene status, argument checks") {
+  std::vector<hs_scene> scenes;
+  for (int i = 0; i < 97; ++i) {
+    hs_scene sc;
+    hs_scene_default(&sc);
+    const double q = -0.95 + 1.9 * ((i * 37) % 97) / 96.0;
+    const double s = -6 + 12 * ((i * 53) % 97) / 96.0;  // same-sign and opposite-sign scenes, both signs
+    sc.Q_over_fP = q;
+    sc.sigma_over_fp0 = s;
+    scenes.push_back(sc);
+  }
+  // failing scenes among them: gross sliding, NaN, bad size, wrong struct_size
+  scenes[5].Q_over_fP = 1.0;
+  scenes[17].sigma_over_fp0 = std::nan("");
+  scenes[40].a = -1;
+  scenes[63].struct_size = 3;
+  for (int flags : {0, HS_BATCH_ENERGIES}) {
+    std::vector<hs_batch_result> expect(scenes.size());
+    for (size_t i = 0; i < scenes.size(); ++i) {
+      hs_batch_result &r = expect[i];
+      std::memset(&r, 0, sizeof r);
+      hs_solution *sol = nullptr;
+      r.status = hs_solve(&scenes[i], nullptr, &sol);
+      if (r.status != HS_OK) continue;
+      hs_summary su;
+      su.struct_size = sizeof su;
+      REQUIRE(hs_solution_summary(sol, &su) == HS_OK);
+      r.regime = su.regime;
+      r.slip_dir1 = su.slip_dir1;
+      r.slip_dir2 = su.slip_dir2;
+      r.model = su.model;
+      r.iterations = su.iterations;
+      r.b1 = su.b1;
+      r.b2 = su.b2;
+      r.d1 = su.d1;
+      r.d2 = su.d2;
+      r.error_estimate = su.error_estimate;
+      if (flags & HS_BATCH_ENERGIES) {
+        double e[2];
+        REQUIRE(hs_solution_energy(sol, e) == HS_OK);
+        r.energy1 = e[0];
+        r.energy2 = e[1];
+      }
+      hs_solution_free(sol);
+    }
+    CHECK(expect[5].status == HS_ERR_GROSS_SLIDING);
+    CHECK(expect[17].status == HS_ERR_NOT_FINITE);
+    CHECK(expect[40].status == HS_ERR_BAD_SIZE);
+    CHECK(expect[63].status == HS_ERR_STRUCT_SIZE);
+    for (int threads : {1, 2, 3, 0, 200}) {
+      CAPTURE(threads);
+      std::vector<hs_batch_result> got(scenes.size());
+      std::memset(got.data(), 0xab, got.size() * sizeof(hs_batch_result));  // no field left unwritten
+      REQUIRE(hs_solve_batch(scenes.size(), scenes.data(), nullptr, flags, threads, got.data(),
+                             sizeof(hs_batch_result)) == HS_OK);
+      for (size_t i = 0; i < scenes.size(); ++i) {
+        CAPTURE(i);
+        CHECK(std::memcmp(&got[i], &expect[i], sizeof(hs_batch_result)) == 0);
+      }
+    }
+  }
+  // argument checks: out untouched
+  hs_batch_result one;
+  std::memset(&one, 0x5a, sizeof one);
+  hs_batch_result keep = one;
+  CHECK(hs_solve_batch(1, scenes.data(), nullptr, 0, 1, &one, sizeof one - 8) == HS_ERR_STRUCT_SIZE);
+  CHECK(hs_solve_batch(1, scenes.data(), nullptr, 0, -1, &one, sizeof one) == HS_ERR_BAD_OPTION);
+  CHECK(hs_solve_batch(1, scenes.data(), nullptr, 4, 1, &one, sizeof one) == HS_ERR_BAD_OPTION);
+  CHECK(hs_solve_batch(1, nullptr, nullptr, 0, 1, &one, sizeof one) == HS_ERR_NULL_POINTER);
+  CHECK(hs_solve_batch(1, scenes.data(), nullptr, 0, 1, nullptr, sizeof one) == HS_ERR_NULL_POINTER);
+  hs_options o;
+  hs_options_default(&o);
+  o.max_iterations = 0;
+  CHECK(hs_solve_batch(1, scenes.data(), &o, 0, 1, &one, sizeof one) == HS_ERR_BAD_OPTION);
+  o.max_iterations = 100;
+  o.struct_size = 1;
+  CHECK(hs_solve_batch(1, scenes.data(), &o, 0, 1, &one, sizeof one) == HS_ERR_STRUCT_SIZE);
+  CHECK(std::memcmp(&one, &keep, sizeof one) == 0);
+  CHECK(hs_solve_batch(0, nullptr, nullptr, 0, 1, nullptr, sizeof one) == HS_OK);
+}

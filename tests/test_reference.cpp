@@ -559,3 +559,77 @@ TEST_CASE("reference C ABI: a flat-punch solution evaluates like the double one"
   hs_solution_free(d);
   hs_ref_solution_free(rs);
 }
+
+// Issue 16: the opposite-sign slip and zone energies by fixed Gauss rules in
+// tau (core/hertz_opposite_slip.hpp) against the reference backend (its
+// adaptive tanh-sinh at 40 digits, a different method), over a sweep of
+// tiny slip zones (d1/a down to 1e-8, near the regime boundary), zones that
+// nearly cover the contact (stick width e/a down to 1e-10) and large sigma
+// (stick width below the double range). The double solution is given the
+// reference's state rounded to double, so that what is judged is the
+// evaluation, not the solver: a length rounded by half an ulp moves h by at
+// most ~ |dh/d ln d| eps/2 ~ |h| eps/2 per length (h ~ d^(3/2) near the
+// stick edge) and ln e by eps |ln e|, whose effect d h / d ln e is bounded by
+// |h| / |ln e| (b grows like ln(1/e)); the rules' own error is below 1e-17.
+// Bound: 32 eps of |h| (rounding of ~50 terms of the Gauss sums, each a few
+// roundings) and of E.
+TEST_CASE("issue 16: opposite-sign slip and energies by fixed Gauss rules against the reference at 40 digits") {
+  struct scene {
+    double q, s;
+  };
+  std::vector<scene> scenes;
+  for (double q : {0.0, 0.3, 0.7, 0.95})
+    for (double ds : {1e-8, 1e-3, 0.3, 2.0, 20.0, 200.0}) scenes.push_back({q, boundary_s(q) + ds});
+  double worst_h = 0, worst_E = 0;
+  for (const auto &c : scenes) {
+    CAPTURE(c.q);
+    CAPTURE(c.s);
+    auto dsol = solve_double(c.q, c.s);
+    REQUIRE(dsol.reg == core::regime::opposite_sign);
+    const ref::solution rsol(text(c.q, c.s), 40);
+    const mp80 rb1(rsol.value(ref::quantity::b1).text), rb2(rsol.value(ref::quantity::b2).text);
+    const mp80 rd1(rsol.value(ref::quantity::d1).text), rd2(rsol.value(ref::quantity::d2).text);
+    // canonical frame of these scenes: q, s >= 0, no mirror
+    REQUIRE(!dsol.mirror);
+    REQUIRE(!dsol.negate);
+    dsol.delta1 = double(rd1);
+    dsol.delta2 = double(rd2);
+    dsol.beta1 = double(rb1);
+    dsol.beta2 = double(rb2);
+    // the width from the reference's betas while it is far above their
+    // 40-digit rounding; else (large sigma) the double solver's ln width,
+    // good to a few eps |ln e| and entering h only through b ~ ln(1/e), i.e.
+    // with a relative weight 1/|ln e|
+    const mp80 w = rb1 + rb2;
+    if (w > mp80(1e-20)) {
+      dsol.width = double(w);
+      dsol.log_width = double(log(w));
+    }
+    for (int z : {1, 2}) {
+      const double d = z == 1 ? dsol.d1() : dsol.d2();
+      const double xs = z == 1 ? dsol.b1() : -dsol.b2();
+      const double hend = std::abs(dsol.slip(z == 1 ? 1.0 : -1.0));
+      for (double t : {1e-6, 0.01, 0.5, 1.0}) {
+        const double x = z == 1 ? xs + t * d : xs - t * d;
+        const auto hr = rsol.eval(ref::point_eval::slip, exact(x));
+        const double h = dsol.slip(x);
+        CAPTURE(z);
+        CAPTURE(t);
+        // relative to |h| itself (not the zone's peak): the rules keep it. The
+        // point x = b1 + t d1 is itself rounded (|dx| <= eps |x|/2, and the
+        // rounded b1 sits within eps/2 of the reference's): dh = B dx, up to
+        // eps |B(x)| (B in these units is h'(x)), which dominates for tiny d
+        const double e = err_eps(h, hr.text, std::abs(to_double(hr.text)));
+        const double pos = std::abs(dsol.Bx(x)) / std::abs(to_double(hr.text));
+        CHECK(e <= 32 * (1 + pos));
+        worst_h = std::max(worst_h, e / (1 + pos));
+        CHECK(std::abs(h) <= hend * (1 + 1e-15));
+      }
+      const auto Er = rsol.value(z == 1 ? ref::quantity::energy1 : ref::quantity::energy2);
+      const double e = err_eps(dsol.energy(z), Er.text, to_double(Er.text));
+      CHECK(e <= 32);
+      worst_E = std::max(worst_E, e);
+    }
+  }
+  MESSAGE("issue 16 sweep: max error / (1 + position term) in eps of |h| " << worst_h << ", of E " << worst_E);
+}

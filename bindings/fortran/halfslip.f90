@@ -107,6 +107,9 @@ module halfslip
   integer(c_int), parameter, public :: HS_STRESS_MIN_PRINCIPAL = 6
   integer(c_int), parameter, public :: HS_STRESS_MAX_SHEAR     = 7
 
+  ! flags of hs_solve_batch (issue 16)
+  integer(c_int), parameter, public :: HS_BATCH_ENERGIES = 1
+
   ! ---- plain-data structs passed to C (layouts of halfslip.h) -------------------
   ! Fill them with hs_scene_default / hs_options_default, then set fields.
   type, bind(c), public :: hs_scene
@@ -122,6 +125,12 @@ module halfslip
     real(c_double)    :: rtol = 0
     integer(c_int)    :: model = 0              ! HS_MODEL_* (since 0.3)
   end type hs_options
+
+  ! One scene's result of hs_solve_batch (issue 16; no struct_size field).
+  type, bind(c), public :: hs_batch_result
+    integer(c_int) :: status = 0, regime = 0, slip_dir1 = 0, slip_dir2 = 0, model = 0, iterations = 0
+    real(c_double) :: b1 = 0, b2 = 0, d1 = 0, d2 = 0, error_estimate = 0, energy1 = 0, energy2 = 0
+  end type hs_batch_result
 
   ! Outputs: the wrappers set struct_size themselves.
   type, bind(c), public :: hs_summary
@@ -250,7 +259,7 @@ module halfslip
   public :: hs_model_name, hs_model_from_name
   public :: hs_scene_default, hs_scene_from_hertz_loads, hs_options_default
   public :: hs_scene_from_power_law_loads, hs_scene_from_flat_rounded_loads
-  public :: hs_solve, hs_solution_free, hs_solution_summary, hs_solution_energy
+  public :: hs_solve, hs_solution_free, hs_solution_summary, hs_solution_energy, hs_solve_batch
   public :: hs_geometry_default, hs_solve_geometry, hs_solve_samples, hs_solve_callback
   public :: hs_eval_Bx, hs_eval_slip, hs_eval_work, hs_eval_pressure
   public :: hs_eval_traction, hs_eval_surface_stress, hs_eval_stress, hs_surface_stress_extremes
@@ -377,6 +386,18 @@ module halfslip
       type(hs_summary), intent(inout) :: out
       integer(c_int) :: st
     end function c_hs_solution_summary
+
+    function c_hs_solve_batch(n, scenes, opts, flags, threads, out, result_size) &
+        bind(c, name="hs_solve_batch") result(st)
+      import :: c_int, c_ptr, c_size_t, hs_scene, hs_batch_result
+      integer(c_size_t), value :: n
+      type(hs_scene), intent(in) :: scenes(*)
+      type(c_ptr), value :: opts     ! const hs_options * (may be NULL)
+      integer(c_int), value :: flags, threads
+      type(hs_batch_result), intent(inout) :: out(*)
+      integer(c_size_t), value :: result_size
+      integer(c_int) :: st
+    end function c_hs_solve_batch
 
     function c_hs_solution_energy(sol, energy) bind(c, name="hs_solution_energy") result(st)
       import :: c_int, c_ptr, c_double
@@ -856,6 +877,33 @@ contains
     if (st == HS_OK) sol%ptr = h
     call check(st, 'hs_solve', ierr)
   end subroutine hs_solve
+
+  ! Solve size(scenes) Hertz scenes on `threads` threads (default 0: one per
+  ! core); results(i) is bitwise what hs_solve + hs_solution_summary (+
+  ! hs_solution_energy with flags = HS_BATCH_ENERGIES) give for scenes(i), with
+  ! the scene's own status in results(i)%status. ierr: the call's status.
+  subroutine hs_solve_batch(scenes, results, opts, flags, threads, ierr)
+    type(hs_scene), intent(in) :: scenes(:)
+    type(hs_batch_result), intent(inout) :: results(:)
+    type(hs_options), intent(in), target, optional :: opts
+    integer, intent(in), optional :: flags, threads
+    integer, intent(out), optional :: ierr
+    type(c_ptr) :: po
+    integer(c_int) :: fl, nt
+    type(hs_batch_result) :: probe
+    if (size(results) < size(scenes)) then
+      call check(HS_ERR_BUFFER_TOO_SMALL, 'hs_solve_batch', ierr)
+      return
+    end if
+    po = c_null_ptr
+    if (present(opts)) po = c_loc(opts)
+    fl = 0
+    if (present(flags)) fl = int(flags, c_int)
+    nt = 0
+    if (present(threads)) nt = int(threads, c_int)
+    call check(c_hs_solve_batch(size(scenes, kind=c_size_t), scenes, po, fl, nt, results, c_sizeof(probe)), &
+               'hs_solve_batch', ierr)
+  end subroutine hs_solve_batch
 
   ! Defaults: Hertz, flat_over_a = 0.5, exponent = 2, no samples, no callback.
   subroutine hs_geometry_default(geometry, ierr)

@@ -199,6 +199,13 @@ std::shared_ptr<const core::pressure_model<double>> pressure_of_geometry(const h
 
 }}  // namespace hs::capi
 
+namespace hs { namespace capi {
+// hs_solve_batch checks its options once (batch.cpp)
+int validate_options(const hs_options *opts) {
+  return guard([&] { read_options(opts); });
+}
+}}  // namespace hs::capi
+
 namespace {
 // The contact state of each kind of solution (issue 15; C++ overloads, so
 // outside extern "C")

@@ -80,6 +80,7 @@ program test_fortran
   call test_reference()
   call test_history()
   call test_fields()
+  call test_batch()
 
   write (*, '(a,i0,a,i0,a)') 'fortran: ', passed, ' passed, ', failed, ' failed'
   if (failed /= 0) error stop 1
@@ -920,5 +921,35 @@ contains
     call expect_near(Qsum / (pi / 2), 0.3_c_double, 2.2e-5_c_double, 'fields: opposite-sign int q = Q')
     call hs_solution_free(sol)
   end subroutine test_fields
+
+  ! issue 16: hs_solve_batch against one hs_solve per scene, bitwise, with the
+  ! failing scene's own status
+  subroutine test_batch()
+    type(hs_scene) :: sc(4)
+    type(hs_batch_result) :: res(4)
+    type(hs_solution_t) :: sol
+    type(hs_summary) :: sm
+    real(c_double) :: e(2)
+    integer :: i, ierr
+    sc(1) = scene_qs(0.3_c_double, 2.0_c_double)
+    sc(2) = scene_qs(-0.5_c_double, 0.1_c_double)
+    sc(3) = scene_qs(1.0_c_double, 0.5_c_double)      ! gross sliding
+    sc(4) = scene_qs(0.9_c_double, -3.0_c_double)
+    call hs_solve_batch(sc, res, flags=HS_BATCH_ENERGIES, threads=2, ierr=ierr)
+    call expect(ierr == HS_OK, 'batch: call status')
+    call expect(res(3)%status == HS_ERR_GROSS_SLIDING, 'batch: per-scene status')
+    do i = 1, 4
+      if (i == 3) cycle
+      call hs_solve(sc(i), sol)
+      call hs_solution_summary(sol, sm)
+      call hs_solution_energy(sol, e)
+      call expect(res(i)%status == HS_OK .and. res(i)%regime == sm%regime .and. res(i)%b1 == sm%b1 .and. &
+                  res(i)%b2 == sm%b2 .and. res(i)%d1 == sm%d1 .and. res(i)%d2 == sm%d2 .and. &
+                  res(i)%energy1 == e(1) .and. res(i)%energy2 == e(2), 'batch: equal to one solve per scene')
+      call hs_solution_free(sol)
+    end do
+    call hs_solve_batch(sc, res, threads=-1, ierr=ierr)
+    call expect(ierr == HS_ERR_BAD_OPTION, 'batch: threads < 0')
+  end subroutine test_batch
 
 end program test_fortran

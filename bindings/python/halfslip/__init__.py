@@ -35,7 +35,7 @@ __version__ = "0.4.0"
 __all__ = [
     "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified", "Model", "Regime", "History",
     "HistoryVertex", "CycleSummary", "Ramp",
-    "solve", "from_hertz_loads", "from_power_law_loads", "from_flat_rounded_loads", "solve_reference", "ref_max_digits",
+    "solve", "solve_batch", "from_hertz_loads", "from_power_law_loads", "from_flat_rounded_loads", "solve_reference", "ref_max_digits",
     "version", "library_version", "library_path", "strerror",
 ]
 
@@ -181,7 +181,7 @@ _STATUS_ARGS = {
     ERR_GROSS_SLIDING: ("Q_over_fP", "Q", "P", "f"),
     ERR_BAD_GEOMETRY: ("geometry", "flat_over_a", "exponent", "n", "samples", "flat_width", "R", "A", "model"),
     ERR_BAD_OPTION: ("digits", "rtol", "max_iterations", "model", "geometry", "quantity", "nu", "body", "vertex",
-                     "component", "y"),
+                     "component", "y", "threads"),
     ERR_BAD_NUMBER: _ALL,
     ERR_TOLERANCE: ("rtol", "model"),
     ERR_NOT_APPLICABLE: ("model", "geometry", "rtol"),
@@ -1189,3 +1189,55 @@ class ReferenceSolution(_Handle):
         values = {"x": x, "y": y, "body": body, "pad_bulk": pad_bulk}
         return tuple(_ref_text(_lib.hs_ref_eval_stress, "hs_ref_eval_stress", (h, int(body), cb, c, cx, cy), values)
                      for c in (STRESS_XX, STRESS_YY, STRESS_XY))
+
+# ---- batches (issue 16) -----------------------------------------------------------------
+
+BATCH_FIELDS = ("status", "regime", "slip_dir1", "slip_dir2", "model", "iterations", "b1", "b2", "d1", "d2",
+                "error_estimate", "energy1", "energy2")
+
+
+def solve_batch(Q_over_fP, sigma_over_fp0, *, a=1.0, p0=1.0, f=1.0, E_star=1.0, energies=False, threads=0,
+                max_iterations=None, rtol=None, model=None):
+    """Solve many Hertz scenes at once with hs_solve_batch (std::threads in the C
+    library; threads=0: one per core). Q_over_fP and sigma_over_fp0 are
+    sequences of equal length (lists, array.array, numpy arrays, ...); a, p0,
+    f, E_star are shared. Returns a dict of lists, one entry per scene, keyed by
+    BATCH_FIELDS: "status" (0 or the scene's ERR_*; strerror gives the message),
+    regime, slip directions, model, iterations, b1, b2, d1, d2,
+    error_estimate, and with energies=True energy1, energy2 (else 0). Each
+    entry is bitwise what solve() and the Solution's summary (and energies)
+    give for that scene; a failing scene does not stop the others. Raises
+    HalfslipError for bad arguments of the call itself (threads, options)."""
+    q = [float(v) for v in Q_over_fP]
+    s = [float(v) for v in sigma_over_fp0]
+    if len(q) != len(s):
+        raise ValueError("halfslip.solve_batch: Q_over_fP has %d values, sigma_over_fp0 %d" % (len(q), len(s)))
+    if isinstance(threads, bool) or not isinstance(threads, int):
+        raise ValueError("halfslip.solve_batch: threads=%r is not an integer" % (threads,))
+    n = len(q)
+    scenes = (_clib.Scene * max(n, 1))()
+    base = _clib.Scene()
+    _check(_lib.hs_scene_default(byref(base)), "hs_scene_default")
+    base.a, base.p0, base.f, base.E_star = (_float(v, k, "solve_batch") for v, k in
+                                            ((a, "a"), (p0, "p0"), (f, "f"), (E_star, "E_star")))
+    for i in range(n):
+        scenes[i] = base
+        scenes[i].Q_over_fP = q[i]
+        scenes[i].sigma_over_fp0 = s[i]
+    opts = None
+    if max_iterations is not None or rtol is not None or model is not None:
+        o = _clib.Options()
+        _check(_lib.hs_options_default(byref(o)), "hs_options_default")
+        if max_iterations is not None:
+            o.max_iterations = int(max_iterations)
+        if rtol is not None:
+            o.rtol = _float(rtol, "rtol", "solve_batch")
+        if model is not None:
+            o.model = Model._parse(model, "model")
+        opts = byref(o)
+    out = (_clib.BatchResult * max(n, 1))()
+    flags = 1 if energies else 0  # HS_BATCH_ENERGIES
+    st = _lib.hs_solve_batch(n, scenes, opts, flags, threads, out, ctypes.sizeof(_clib.BatchResult))
+    _check(st, "hs_solve_batch", {"threads": threads, "max_iterations": max_iterations, "rtol": rtol,
+                                  "model": None if model is None else str(model)})
+    return {k: [getattr(out[i], k) for i in range(n)] for k in BATCH_FIELDS}

@@ -68,6 +68,25 @@ class Summary(ctypes.Structure):
 PressureFn = ctypes.CFUNCTYPE(c_double, c_double, ctypes.c_void_p)
 
 
+class BatchResult(ctypes.Structure):
+    """struct hs_batch_result (issue 16; no struct_size: hs_solve_batch takes its size)"""
+    _fields_ = [
+        ("status", c_int),
+        ("regime", c_int),
+        ("slip_dir1", c_int),
+        ("slip_dir2", c_int),
+        ("model", c_int),
+        ("iterations", c_int),
+        ("b1", c_double),
+        ("b2", c_double),
+        ("d1", c_double),
+        ("d2", c_double),
+        ("error_estimate", c_double),
+        ("energy1", c_double),
+        ("energy2", c_double),
+    ]
+
+
 class Geometry(ctypes.Structure):
     """struct hs_geometry"""
     _fields_ = [
@@ -209,6 +228,8 @@ _SIGNATURES = {
     "hs_solution_free": (None, [SolutionP]),
     "hs_solution_summary": (c_int, [SolutionP, POINTER(Summary)]),
     "hs_solution_energy": (c_int, [SolutionP, _DoubleP]),
+    "hs_solve_batch": (c_int, [c_size_t, POINTER(Scene), POINTER(Options), c_int, c_int, POINTER(BatchResult),
+                               c_size_t]),  # issue 16
     "hs_eval_Bx": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),
     "hs_eval_slip": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),
     "hs_eval_work": (c_int, [SolutionP, c_size_t, _DoubleP, _DoubleP]),

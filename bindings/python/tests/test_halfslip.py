@@ -1046,5 +1046,45 @@ class TestPlot(unittest.TestCase):
                 hp.tractions(sol)
 
 
+class TestBatch(unittest.TestCase):
+    """issue 16: solve_batch equals solve() per scene, bitwise, with per-scene statuses."""
+
+    def test_equal_to_single_solves(self):
+        q = [0.3, -0.5, 0.0, 0.9, 1.0, 0.2, float("nan")]
+        s = [2.0, 0.1, 1.0, -3.0, 0.5, 0.0, 0.5]
+        for threads in (1, 2, 0):
+            r = halfslip.solve_batch(q, s, energies=True, threads=threads)
+            self.assertEqual(set(r), set(halfslip.BATCH_FIELDS))
+            for i in range(len(q)):
+                try:
+                    sol = halfslip.solve(Q_over_fP=q[i], sigma_over_fp0=s[i])
+                except HalfslipError as e:
+                    self.assertEqual(r["status"][i], e.status)
+                    self.assertEqual(r["b1"][i], 0.0)
+                    continue
+                with sol:
+                    self.assertEqual(r["status"][i], halfslip.OK)
+                    self.assertEqual(r["regime"][i], int(sol.regime))
+                    for k in ("b1", "b2", "d1", "d2"):
+                        self.assertEqual(struct.pack("d", r[k][i]), struct.pack("d", getattr(sol, k)), k)
+                    e1, e2 = sol.energy()
+                    self.assertEqual(struct.pack("d", r["energy1"][i]), struct.pack("d", e1))
+                    self.assertEqual(struct.pack("d", r["energy2"][i]), struct.pack("d", e2))
+        self.assertEqual(r["status"][4], halfslip.ERR_GROSS_SLIDING)
+        self.assertEqual(r["status"][6], halfslip.ERR_NOT_FINITE)
+
+    def test_arguments(self):
+        self.assertEqual(halfslip.solve_batch([], [])["status"], [])
+        with self.assertRaises(ValueError):
+            halfslip.solve_batch([0.1, 0.2], [0.1])
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve_batch([0.1], [0.1], threads=-1)
+        self.assertEqual(cm.exception.status, halfslip.ERR_BAD_OPTION)
+        self.assertIn("threads=-1", str(cm.exception))
+        # array.array (no numpy needed)
+        r = halfslip.solve_batch(array.array("d", [0.3]), array.array("d", [2.0]))
+        self.assertEqual(r["regime"], [2])
+
+
 if __name__ == "__main__":
     unittest.main()

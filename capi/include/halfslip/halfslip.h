@@ -502,6 +502,34 @@ typedef struct hs_steady_cycle {
 } hs_steady_cycle;
 HS_EXPORT int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out);
 
+/* ---- batches (issue 16) ------------------------------------------------------
+ * Solve n Hertz scenes (scene->geometry must be HS_GEOMETRY_HERTZ) with the same
+ * options on `threads` threads (0: std::thread::hardware_concurrency(); never
+ * more than n). Each out[i] is exactly what hs_solve + hs_solution_summary
+ * (+ hs_solution_energy with HS_BATCH_ENERGIES) give for scenes[i], bitwise,
+ * whatever the thread count: the scenes are split into fixed contiguous
+ * chunks and solved independently. A scene that fails (bad input, no
+ * convergence, ...) gets its HS_ERR_* in out[i].status (hs_strerror gives the
+ * message), its other fields zero, and does not stop the others. The call
+ * itself returns HS_OK once the arguments are valid, or HS_ERR_NULL_POINTER
+ * (scenes or out NULL with n > 0), HS_ERR_STRUCT_SIZE (result_size is not
+ * sizeof(hs_batch_result), or opts->struct_size), HS_ERR_BAD_OPTION (threads
+ * < 0 or > 1024, unknown flags, an invalid opts field); then out is untouched.
+ * No state is kept between calls. */
+#define HS_BATCH_ENERGIES 1 /* flags: also compute the zone energies */
+typedef struct hs_batch_result {
+  int status;           /* HS_OK or the scene's HS_ERR_* */
+  int regime;           /* HS_REGIME_* */
+  int slip_dir1, slip_dir2;
+  int model;            /* HS_MODEL_* actually used */
+  int iterations;
+  double b1, b2, d1, d2;     /* as hs_summary */
+  double error_estimate;     /* as hs_summary */
+  double energy1, energy2;   /* with HS_BATCH_ENERGIES, else 0 (as hs_solution_energy) */
+} hs_batch_result;
+HS_EXPORT int hs_solve_batch(size_t n, const hs_scene *scenes, const hs_options *opts, int flags, int threads,
+                             hs_batch_result *out, size_t result_size);
+
 #ifdef __cplusplus
 }
 #endif

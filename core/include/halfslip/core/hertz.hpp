@@ -15,6 +15,7 @@
 
 #include "frame.hpp"
 #include "hertz_opposite.hpp"
+#include "hertz_opposite_slip.hpp"
 #include "numerics.hpp"
 #include "status.hpp"
 
@@ -87,10 +88,32 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
     return -2 * Rh * (1 + 2 * g / pi<T>());
   }
 
+  // The opposite-sign zone integrals of a canonical zone: the state with the
+  // other zone first (as opposite_G_state takes it).
+  opposite_zone_integrals<T> zone_integrals(int zone) const {
+    return opposite_zone_integrals<T>(zone > 0 ? opposite_state<T>{delta2, delta1, width, log_width}
+                                               : opposite_state<T>{delta1, delta2, width, log_width});
+  }
+  // The fixed Gauss rules of hertz_opposite_slip.hpp are sized for <= 64-bit
+  // significands (double, long double); wider types (the MPFR reference
+  // backend) keep the adaptive tanh-sinh path.
+  static constexpr bool fixed_rules = std::numeric_limits<T>::digits <= 64;
+
   // canonical dimensionless slip h = (f p0 a / E*) * hhat, zero at the stick boundary.
   T hhat(int zone, const T &dl) const {
     if (!(dl > 0)) return T(0);
     if (reg != regime::opposite_sign) return 2 * sqrt_quadratic_integral(dl, half_width());
+    if constexpr (!fixed_rules) {
+      return hhat_tanh_sinh(zone, dl);
+    } else {
+      const T I = zone_integrals(zone).slip(dl);
+      return zone > 0 ? I : -I;
+    }
+  }
+  // The slip by adaptive tanh-sinh quadrature of bhat (the path before issue
+  // 16; kept for wide types and for bench/ to compare against).
+  T hhat_tanh_sinh(int zone, const T &dl) const {
+    if (!(dl > 0)) return T(0);
     // int_0^dl bhat(u) du; bhat ~ sqrt(u) at u = 0: tanh-sinh handles it.
     const T I = integrate_ts<T>([&](const T &u, const T &uc) { return bhat(zone, uc < 0 ? -uc : u); }, T(0), dl,
                                 quad_tol());
@@ -104,6 +127,17 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
   // int Pi(xi) b(xi) dxi with Pi the pressure tail beyond xi (Pi = 0 at the
   // contact edge, h = 0 at the stick edge).
   T energy_hat(int zone) const {
+    using std::abs;
+    if constexpr (fixed_rules) {
+      if (reg == regime::opposite_sign) {
+        const T L = zone_length(zone);
+        return L > 0 ? T(abs(zone_integrals(zone).energy(L))) : T(0);
+      }
+    }
+    return energy_hat_tanh_sinh(zone);
+  }
+  // The same by adaptive tanh-sinh (every regime; the path before issue 16).
+  T energy_hat_tanh_sinh(int zone) const {
     using std::abs;
     const T L = zone_length(zone);
     if (!(L > 0)) return T(0);
