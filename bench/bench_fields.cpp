@@ -83,8 +83,8 @@ const points &pts() {
   return p;
 }
 
-void BM_surface(benchmark::State &state, scene_def d) {
-  hs_solution *sol = solve(d);
+// surface sigma_xx at the 1,000 points, and the 200 x 100 grid, of a solution (freed here)
+void surface_loop(benchmark::State &state, hs_solution *sol) {
   std::vector<double> out(pts().sx.size());
   hs_eval_surface_stress(sol, 1, 0.0, 1, pts().sx.data(), out.data());  // first call builds the cache
   for (auto _ : state) {
@@ -94,8 +94,7 @@ void BM_surface(benchmark::State &state, scene_def d) {
   hs_solution_free(sol);
 }
 
-void BM_grid(benchmark::State &state, scene_def d) {
-  hs_solution *sol = solve(d);
+void grid_loop(benchmark::State &state, hs_solution *sol) {
   std::vector<double> out(3 * pts().gx.size());
   hs_eval_stress(sol, 1, 0.0, 1, pts().gx.data(), pts().gy.data(), out.data());
   for (auto _ : state) {
@@ -104,6 +103,9 @@ void BM_grid(benchmark::State &state, scene_def d) {
   }
   hs_solution_free(sol);
 }
+
+void BM_surface(benchmark::State &state, scene_def d) { surface_loop(state, solve(d)); }
+void BM_grid(benchmark::State &state, scene_def d) { grid_loop(state, solve(d)); }
 
 // the first field call on a fresh solution: the cached panels are built (solve not timed)
 void BM_first_call(benchmark::State &state, scene_def d) {
@@ -236,27 +238,8 @@ hs_solution *history_state(const history_def &d) {
   return sol;
 }
 
-void BM_history_surface(benchmark::State &state, history_def d) {
-  hs_solution *sol = history_state(d);
-  std::vector<double> out(pts().sx.size());
-  hs_eval_surface_stress(sol, 1, 0.0, 1, pts().sx.data(), out.data());
-  for (auto _ : state) {
-    hs_eval_surface_stress(sol, 1, 0.0, out.size(), pts().sx.data(), out.data());
-    benchmark::DoNotOptimize(out.data());
-  }
-  hs_solution_free(sol);
-}
-
-void BM_history_grid(benchmark::State &state, history_def d) {
-  hs_solution *sol = history_state(d);
-  std::vector<double> out(3 * pts().gx.size());
-  hs_eval_stress(sol, 1, 0.0, 1, pts().gx.data(), pts().gy.data(), out.data());
-  for (auto _ : state) {
-    hs_eval_stress(sol, 1, 0.0, pts().gx.size(), pts().gx.data(), pts().gy.data(), out.data());
-    benchmark::DoNotOptimize(out.data());
-  }
-  hs_solution_free(sol);
-}
+void BM_history_surface(benchmark::State &state, history_def d) { surface_loop(state, history_state(d)); }
+void BM_history_grid(benchmark::State &state, history_def d) { grid_loop(state, history_state(d)); }
 
 // the state's handle and its first field call (panel cache over the state's steps); the march not timed
 void BM_history_first_call(benchmark::State &state, history_def d) {

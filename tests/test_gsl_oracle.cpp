@@ -85,7 +85,11 @@ template <class F> double trampoline(double x, void *p) { return (*static_cast<c
 void record(int status, const char *what, double abserr) {
   if (status != GSL_SUCCESS) {
     ++g_stats.failures;
-    g_stats.last = std::string(what) + ": " + gsl_strerror(status) + " (abserr " + [](double v) { char b[32]; std::snprintf(b, sizeof b, "%.3g", v); return std::string(b); }(abserr) + ")";
+    g_stats.last = std::string(what) + ": " + gsl_strerror(status) + " (abserr " + [](double v) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.3g", v);
+      return std::string(b);
+    }(abserr) + ")";
   }
 }
 
@@ -530,7 +534,8 @@ struct surface_oracle {
   std::function<double(double)> q;  // shear traction on [-1, 1]
   double s;                         // sigma/(f p0) with a = p0 = f = 1: sigma1 = s, sigma2 = 0
   std::vector<double> kinks;
-  const oracle *pressure = nullptr;  // p/p0 (nullptr: Hertz, sqrt(1 - x^2))        // where q is not smooth inside (-1, 1): stick ends, kinks of p
+  const oracle *pressure =
+      nullptr;  // p/p0 (nullptr: Hertz, sqrt(1 - x^2))        // where q is not smooth inside (-1, 1): stick ends, kinks of p
   // int q(t)/(x - t) dt over [-1, 1]. On the contact the principal value is taken by
   // QAWC on [x - d, x + d], where q is smooth (d: half the distance from x to the
   // nearest edge or kink); every other piece between the edges, the kinks and x -+ d
@@ -603,8 +608,8 @@ void check_surface(const std::string &what, lib_solution &sol, const surface_ora
       CHECK(ext[1] == -1.0);
     }
     if (g_stats.failures) MESSAGE(g_stats.last);
-    MESSAGE(what << ", body " << body << ": max " << ext[0] << " at x/a = " << ext[1] << ", min " << ext[2]
-                 << " at " << ext[3] << "; largest |library - GSL| on the scan " << worst << " at x/a = " << worst_x);
+    MESSAGE(what << ", body " << body << ": max " << ext[0] << " at x/a = " << ext[1] << ", min " << ext[2] << " at "
+                 << ext[3] << "; largest |library - GSL| on the scan " << worst << " at x/a = " << worst_x);
     xs.resize(xs.size() - 2);
   }
   CHECK_MESSAGE(g_stats.failures == 0, g_stats.last);
@@ -612,7 +617,8 @@ void check_surface(const std::string &what, lib_solution &sol, const surface_ora
 
 }  // namespace
 
-TEST_CASE("gsl oracle: surface sigma_xx and its extremes, Hertz same sign (closed-form q), peak at the trailing edge") {
+TEST_CASE(
+    "gsl oracle: surface sigma_xx and its extremes, Hertz same sign (closed-form q), peak at the trailing edge") {
   for (auto qs : {std::pair<double, double>{0.6, 0.0}, {0.6, 0.2}, {0.6, 0.5}, {0.3, -0.4}, {0.9, 0.1}}) {
     const double q = qs.first, s = qs.second;
     lib_solution sol(HS_GEOMETRY_HERTZ, 2.0, q, s);

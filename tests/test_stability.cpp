@@ -26,7 +26,9 @@ struct ref_values {
   double d1, d2, e1, e2;
 };
 
-ref_values hertz_reference(double q, double s) {
+// reference values of a scene (Hertz, or another geometry with its parameter as text)
+ref_values reference_values(double q, double s, int geometry = HS_GEOMETRY_HERTZ, const char *flat = nullptr,
+                            int digits = 30) {
   hs_ref_scene r;
   hs_ref_scene_default(&r);
   char qs[64], ss[64];
@@ -34,8 +36,10 @@ ref_values hertz_reference(double q, double s) {
   std::snprintf(ss, 64, "%.45e", s);
   r.Q_over_fP = qs;
   r.sigma_over_fp0 = ss;
+  r.geometry = geometry;
+  if (flat) r.flat_over_a = flat;
   hs_ref_solution *sol = nullptr;
-  REQUIRE(hs_ref_solve(&r, 30, &sol) == HS_OK);
+  REQUIRE(hs_ref_solve(&r, digits, &sol) == HS_OK);
   auto get = [&](int what) {
     char buf[128];
     REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, nullptr) == HS_OK);
@@ -45,6 +49,7 @@ ref_values hertz_reference(double q, double s) {
   hs_ref_solution_free(sol);
   return v;
 }
+ref_values hertz_reference(double q, double s) { return reference_values(q, s); }
 
 int solve_geometry(int kind, double par, double q, double s, int model, hs_solution **out) {
   hs_scene sc;
@@ -256,26 +261,9 @@ TEST_CASE("issue 13: domain sweep of the double paths" * doctest::skip()) {
 namespace {
 
 ref_values flat_reference(double bf, double q, double s) {
-  hs_ref_scene r;
-  hs_ref_scene_default(&r);
-  char qs[64], ss[64], bs[64];
-  std::snprintf(qs, 64, "%.45e", q);
-  std::snprintf(ss, 64, "%.45e", s);
+  char bs[64];
   std::snprintf(bs, 64, "%.45e", bf);
-  r.Q_over_fP = qs;
-  r.sigma_over_fp0 = ss;
-  r.geometry = HS_GEOMETRY_FLAT_ROUNDED;
-  r.flat_over_a = bs;
-  hs_ref_solution *sol = nullptr;
-  REQUIRE(hs_ref_solve(&r, 20, &sol) == HS_OK);
-  auto get = [&](int what) {
-    char buf[128];
-    REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, nullptr) == HS_OK);
-    return std::strtod(buf, nullptr);
-  };
-  ref_values v{get(HS_REF_D1), get(HS_REF_D2), get(HS_REF_ENERGY1), get(HS_REF_ENERGY2)};
-  hs_ref_solution_free(sol);
-  return v;
+  return reference_values(q, s, HS_GEOMETRY_FLAT_ROUNDED, bs, 20);
 }
 
 }  // namespace

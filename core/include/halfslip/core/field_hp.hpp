@@ -104,14 +104,7 @@ template <class T, class G> void cauchy_graded(const G &dens, const std::vector<
         for (int k = 1; k < 200 && ldexp(T(1), -k) > r / 2; ++k) cuts.push_back(ldexp(T(1), -k));
       const T t0 = std::min(std::max(tau.real(), T(0)), T(1));
       const T delta = abs(tau - t0);
-      if (delta < T(0.5)) {
-        const T dmin = std::max(delta, T(64) * eps<T>());
-        cuts.push_back(t0);
-        for (T d = dmin; d < 1; d *= 2) {
-          if (t0 - d > 0) cuts.push_back(t0 - d);
-          if (t0 + d < 1) cuts.push_back(t0 + d);
-        }
-      }
+      grade_towards(cuts, t0, delta);
       std::sort(cuts.begin(), cuts.end());
       cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
       for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {

@@ -35,6 +35,20 @@ namespace hs { namespace core {
 
 template <class T> struct cauchy_pair { std::complex<T> F0{0, 0}, F1{0, 0}; };
 
+// Panel ends in t in [0, 1] graded geometrically towards t0, the real part of a
+// pole at distance delta from the real axis (delta < 1/2 only): t0 and t0 -+ d
+// for d = max(delta, 64 eps), 2d, 4d, ... < 1. Shared by the quadrature from
+// scratch (fields.hpp) and its high-precision form (field_hp.hpp).
+template <class T> void grade_towards(std::vector<T> &cuts, const T &t0, const T &delta) {
+  if (!(delta < T(0.5))) return;
+  const T dmin = std::max(delta, T(64) * eps<T>());
+  cuts.push_back(t0);
+  for (T d = dmin; d < 1; d *= 2) {
+    if (t0 - d > 0) cuts.push_back(t0 - d);
+    if (t0 + d < 1) cuts.push_back(t0 + d);
+  }
+}
+
 template <class T> class traction_panels {
  public:
   static constexpr int n = 20;

@@ -108,14 +108,7 @@ template <class T, class G> void cauchy_numeric(const G &dens, const std::vector
           using std::ldexp;  // ADL for multiprecision T
           cuts.push_back(ldexp(T(1), -k));
         }
-      if (delta < T(0.5)) {
-        const T dmin = std::max(delta, T(64) * eps<T>());
-        cuts.push_back(t0);
-        for (T d = dmin; d < 1; d *= 2) {
-          if (t0 - d > 0) cuts.push_back(t0 - d);
-          if (t0 + d < 1) cuts.push_back(t0 + d);
-        }
-      }
+      grade_towards(cuts, t0, delta);
       std::sort(cuts.begin(), cuts.end());
       for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
         if (cuts[k + 1] > cuts[k]) panel(end, h, cuts[k], cuts[k + 1]);

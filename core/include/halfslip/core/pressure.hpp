@@ -655,7 +655,8 @@ template <class T> class callback_pressure final : public pressure_model<T> {
     // solved as if it were a pressure (issue 13); the normalisation's adaptive
     // quadrature resolves such a dip, so it meets it there
     const T v = fn_(a_ * x);
-    if (!(v >= 0)) throw error(status::bad_geometry, "pressure callback returned a negative pressure inside the contact");
+    if (!(v >= 0))
+      throw error(status::bad_geometry, "pressure callback returned a negative pressure inside the contact");
     return scale_ * v / sqrt(r);
   }
   std::vector<breakpoint<T>> breakpoints() const override { return bps_; }

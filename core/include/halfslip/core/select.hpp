@@ -72,9 +72,7 @@ template <class T> T infinite() { return std::numeric_limits<T>::infinity(); }
 // over a length d), reaches that spacing first. Relative error floors of d and
 // of E; infinite once d^3 underflows (at sigma/fp0 = 4e-320 the energies were 0
 // with an estimate of 2.5e-14).
-template <class T> T tiny_length_floor(const T &d) {
-  return 4 * boost::math::tools::min_value<T>() * eps<T>() / d;
-}
+template <class T> T tiny_length_floor(const T &d) { return 4 * boost::math::tools::min_value<T>() * eps<T>() / d; }
 template <class T> T tiny_energy_floor(const T &d) {
   const T d3 = d * d * d;
   return d3 > 0 ? 256 * boost::math::tools::min_value<T>() * eps<T>() / d3 : infinite<T>();
