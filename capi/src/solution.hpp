@@ -14,6 +14,7 @@
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/history.hpp"
+#include "halfslip/core/history_fields.hpp"
 #include "halfslip/core/select.hpp"
 #include "halfslip/reference/backend.hpp"
 
@@ -120,13 +121,9 @@ class history_state {
   double slip(double x) const {
     return scene.f * scene.p0 * scene.a / scene.Estar * hist->slip(x / scene.a, nsteps());
   }
-  double pressure(double x) const {
-    const double xi = x / scene.a;
-    return xi > -1 && xi < 1 ? scene.p0 * hist->pressure().p(xi) : 0.0;
-  }
+  double pressure(double x) const { return core::history_pressure_at(*hist, x, scene.a, scene.p0); }
   double traction(double x) const {
-    const double xi = x / scene.a;
-    return xi > -1 && xi < 1 ? scene.f * scene.p0 * hist->traction(xi, nsteps()) : 0.0;
+    return core::history_traction_at(*hist, nsteps(), x, scene.a, scene.p0, scene.f);
   }
 
  private:

@@ -18,6 +18,19 @@
 
 namespace hs { namespace core {
 
+// p and q of the state after nsteps steps of h in physical units: x in units of
+// length, p = p0 p^(x/a), q = f p0 q^(x/a), 0 outside |x| < a. The one
+// definition for the stresses (below) and the C ABI's history-state handle.
+template <class T> T history_pressure_at(const history<T> &h, const T &x, const T &a, const T &p0) {
+  const T xi = x / a;
+  return xi > -1 && xi < 1 ? p0 * h.pressure().p(xi) : T(0);
+}
+template <class T>
+T history_traction_at(const history<T> &h, std::size_t nsteps, const T &x, const T &a, const T &p0, const T &f) {
+  const T xi = x / a;
+  return xi > -1 && xi < 1 ? f * p0 * h.traction(xi, nsteps) : T(0);
+}
+
 // The state after nsteps steps of h (nsteps <= h->step_count()), in the units
 // of a, p0, f: x in units of length with the contact |x| < a, p = p0 p^(x/a),
 // q = f p0 q^(x/a), sigma = s f p0 with s the loads after nsteps. bulk2: the
@@ -34,16 +47,8 @@ template <class T> contact_state<T> history_contact_state(std::shared_ptr<const 
   st.a = a;
   st.bulk2 = bulk2;
   st.bulk1 = sigma + bulk2;
-  st.p = [h, a, p0](const T &x) {
-    const T xi = x / a;
-    if (!(xi > -1 && xi < 1)) return T(0);
-    return p0 * h->pressure().p(xi);
-  };
-  st.q = [h, nsteps, a, p0, f](const T &x) {
-    const T xi = x / a;
-    if (!(xi > -1 && xi < 1)) return T(0);
-    return f * p0 * h->traction(xi, nsteps);
-  };
+  st.p = [h, a, p0](const T &x) { return history_pressure_at(*h, x, a, p0); };
+  st.q = [h, nsteps, a, p0, f](const T &x) { return history_traction_at(*h, nsteps, x, a, p0, f); };
   for (const T &m : h->memory_points(nsteps)) st.breaks.push_back(a * m);
   for (const auto &bp : h->pressure().breakpoints()) {
     st.breaks.push_back(a * bp.x);
