@@ -51,14 +51,7 @@ template <class T> int graded_order(const T &rho, int max_order) {
   const T n = ceil(digits / (2 * log(rho)));
   if (!(n <= T(max_order)))
     throw error(status::no_convergence, "field quadrature: Gauss-Legendre order above max_order (a pole too near)");
-  int m = std::max(8, int(n.template convert_to<long>()));
-  return (m + 3) / 4 * 4;
-}
-template <> inline int graded_order<double>(const double &rho, int max_order) {
-  const double n = std::ceil((-std::log(eps<double>()) + std::log(100.0)) / (2 * std::log(rho)));
-  if (!(n <= max_order))
-    throw error(status::no_convergence, "field quadrature: Gauss-Legendre order above max_order (a pole too near)");
-  const int m = std::max(8, int(n));
+  const int m = std::max(8, int(static_cast<long>(n)));  // explicit conversion: double and MPFR alike
   return (m + 3) / 4 * 4;
 }
 
