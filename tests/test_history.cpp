@@ -1,10 +1,14 @@
 // Load histories (issue #14): core/history.hpp against closed forms (monotonic
 // solutions, Ciavarella-Jager unloading, 4x the monotonic energy per steady
 // proportional cycle) and against the independent collocation BEM of
-// reference/bem_history.hpp (non-proportional paths, the receding ray).
+// reference/bem_history.hpp (non-proportional paths, the receding ray), and
+// against the static-solve oracle of reference/reversal_oracle.hpp (a segment
+// after a Hertz ramp along which both ends only advance, to ~1e-15).
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -13,6 +17,7 @@
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/history.hpp"
 #include "halfslip/reference/bem_history.hpp"
+#include "halfslip/reference/reversal_oracle.hpp"
 
 using namespace hs::core;
 
@@ -329,4 +334,124 @@ TEST_CASE("history: ramp_recedes finds where e = 2/lambda along the ray") {
   CHECK(!ramp_recedes<double>(0.2, 0.6, e_of, at));  // lambda = 3, but e(0.2) > 2/3
   CHECK(ramp_recedes<double>(-0.88, -2.64, e_of, at));
   CHECK(at == doctest::Approx(-0.4603).epsilon(1e-3));
+}
+
+// ---- non-proportional segments after a ramp: the static-solve oracle ---------------------------
+// reference/reversal_oracle.hpp solves the state after a segment whose stick-zone ends only
+// advance by one static solve (no time stepping): an independent check to ~1e-15 where the BEM
+// gives ~1e-3. Cases: (q0, s0) reached by a ramp, then (q1, s1), and the new directions.
+namespace {
+struct seg_case {
+  double q0, s0, q1, s1;
+  int d1, d2;
+  bool crosses;  // a new end passes the ramp's stick end (a cusp of the traction)
+};
+const seg_case seg_cases[] = {
+    // both zones reverse; zone 1's new end passes the ramp's end (from a random walk of bench_history)
+    {0.14915544246907966, 0.12976720841044964, 0.037592776800771471, 0.27947936305003174, -1, -1, true},
+    {0.5, 0.4, 0.2, 0.6, -1, -1, false},  // both reverse, new zones inside the old ones
+    {0.3, 0.0, 0.25, 0.8, -1, 1, false},  // zone 1 reverses, zone 2 keeps advancing
+    {0.4, 0.5, -0.1, 0.3, -1, -1, true},
+    {0.6, 0.2, 0.3, -0.3, -1, -1, false},
+    {0.2, 0.3, 0.1, 0.9, -1, 1, true},
+    {0.45, 0.0, 0.0, 0.0, -1, -1, false},  // Ciavarella-Jager unloading to zero
+};
+std::array<double, 2> oracle_ends(const seg_case &c) {
+  hs::reference::reversal_oracle<double> o(c.q0, c.s0, c.q1, c.s1, c.d1, c.d2);
+  const auto b = o.solve(0.9, 0.9);
+  // the static solution is the state only if the stick traction stays inside the limit
+  REQUIRE(o.traction_margin(1, b[0], b[1]) < 0);
+  REQUIRE(o.traction_margin(2, b[0], b[1]) < 0);
+  return b;
+}
+}  // namespace
+
+TEST_CASE("reversal oracle: monotonic closed forms and Ciavarella-Jager unloading") {
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (const auto &qs : {std::make_pair(0.3, 0.2), std::make_pair(0.7, -0.4), std::make_pair(0.05, 0.1)}) {
+    hs::reference::reversal_oracle<double> o(0, 0, qs.first, qs.second, 1, 1);
+    const auto b = o.solve(0.9, 0.9);
+    const auto m = mono(qs.first, qs.second);
+    // a few ulps: the ends come from quadrature (tanh-sinh to ~eps) through a Newton solve
+    CHECK(std::fabs(b[0] - m.b1()) < 64 * eps);
+    CHECK(std::fabs(b[1] - m.b2()) < 64 * eps);
+    const double e = std::sqrt(1 - qs.first), c = qs.second / 4;
+    for (double x : {c - 0.5 * e, c, c + 0.9 * e}) {
+      const double exact = std::sqrt(1 - x * x) - std::sqrt(e * e - (x - c) * (x - c));
+      CHECK(std::fabs(o.traction(x, b[0], b[1]) - exact) < 64 * eps);
+    }
+  }
+  // unloading q* -> q at sigma = 0: the reversed zones end at sqrt(1 - (q* - q)/2)
+  for (double q : {0.3, 0.0, -0.2}) {
+    hs::reference::reversal_oracle<double> o(0.45, 0, q, 0, -1, -1);
+    const auto b = o.solve(0.9, 0.9);
+    const double c = std::sqrt(1 - (0.45 - q) / 2);
+    CHECK(std::fabs(b[0] - c) < 64 * eps);
+    CHECK(std::fabs(b[1] - c) < 64 * eps);
+  }
+  // long double through the same template: double's result to its own rounding
+  hs::reference::reversal_oracle<long double> ol(0.4L, 0.5L, -0.1L, 0.3L, -1, -1);
+  const auto bl = ol.solve(0.9L, 0.9L);
+  const auto bd = oracle_ends(seg_cases[3]);
+  CHECK(std::fabs(double(bl[0]) - bd[0]) < 64 * eps);
+  CHECK(std::fabs(double(bl[1]) - bd[1]) < 64 * eps);
+}
+
+TEST_CASE("history: segments after a ramp against the static-solve oracle, fixed step 1/512") {
+  // At step 1/512 the march's own truncation error on these segments is 1e-11 to 1e-9
+  // (it falls like step^2.3-step^3 here); 1e-8 is a convergence bound, not a rounding
+  // bound. Before the memory-point events (an advancing end restarts its run where it
+  // reaches an earlier end position, a cusp of the traction), the crossing cases were
+  // off by 5e-6 to 3e-5 at this step.
+  for (const auto &c : seg_cases) {
+    const auto b = oracle_ends(c);
+    history<double> h(hertz_pm(), opts(1.0 / 512));
+    h.add_vertex(c.q0, c.s0);
+    h.add_vertex(c.q1, c.s1);
+    const auto &v = h.vertices().back();
+    INFO("case (" << c.q0 << ", " << c.s0 << ") -> (" << c.q1 << ", " << c.s1 << ")");
+    CHECK(v.dir1 == c.d1);
+    CHECK(v.dir2 == c.d2);
+    CHECK(std::fabs(v.b1 - b[0]) < 1e-8);
+    CHECK(std::fabs(v.b2 - b[1]) < 1e-8);
+  }
+}
+
+TEST_CASE("history: refined march at rtol 1e-8 within twice its estimate (oracle)") {
+  // The estimate is the difference of the last two marches over 7 (third order). Here the
+  // march converges like step^2.3 (ratio 5 per halving), so the finer march's true error is
+  // that difference over 4 = 1.75 x the estimate: 2 x bounds it.
+  for (const auto &c : seg_cases) {
+    if (c.q0 == 0.14915544246907966 || c.q0 == 0.4) continue;  // next test case
+    const auto b = oracle_ends(c);
+    refined_history<double> h(hertz_pm(), opts(1.0 / 32), 1e-8);
+    h.add_vertex(c.q0, c.s0);
+    h.add_vertex(c.q1, c.s1);
+    const auto &v = h.vertices().back();
+    INFO("case (" << c.q0 << ", " << c.s0 << ") -> (" << c.q1 << ", " << c.s1 << "), estimate "
+                  << v.error_estimate);
+    const double err = std::max(std::fabs(v.b1 - b[0]), std::fabs(v.b2 - b[1]));
+    CHECK(err <= 2 * v.error_estimate);
+    CHECK(err < 1e-7);
+  }
+}
+
+// Known defect (docs/history.md, "Limits"): where an advancing end reaches an earlier end
+// position whose inner side is already past the friction limit, the end sweeps inwards at
+// once. A step that straddles that sweep is solved on the inner root but its interpolated
+// trajectory is smooth, so the traction it leaves is off by up to 3e-5 a; the march at
+// some step sizes (1/256 for the first case, 1/64-1/1024 for the second) then disagrees
+// with its neighbours, the refinement stops as erratic and the estimate is 2-4x short.
+TEST_CASE("history: refined march across a sweep at a memory point (known defect)" * doctest::should_fail()) {
+  for (int k : {0, 3}) {
+    const auto &c = seg_cases[k];
+    const auto b = oracle_ends(c);
+    refined_history<double> h(hertz_pm(), opts(1.0 / 32), 1e-8);
+    h.add_vertex(c.q0, c.s0);
+    h.add_vertex(c.q1, c.s1);
+    const auto &v = h.vertices().back();
+    const double err = std::max(std::fabs(v.b1 - b[0]), std::fabs(v.b2 - b[1]));
+    MESSAGE("error " << err << ", estimate " << v.error_estimate);
+    CHECK(err <= 2 * v.error_estimate);
+  }
 }

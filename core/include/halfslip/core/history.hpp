@@ -225,10 +225,94 @@ template <class T> class history {
           }
           return false;
         };
+        // a step that would carry an advancing end past a memory point (a cusp of
+        // the traction) ends exactly there, driven by that end; the run restarts
+        bool at_memory = false;
+        auto by_memory = [&](const T &fmax) -> bool {
+          update_memory_targets();
+          bool found = false;
+          for (int i = 1; i <= 2; ++i) {
+            const mode mi = i == 1 ? m1_ : m2_;
+            const bool ok = i == 1 ? mem1_ok_ : mem2_ok_;
+            if (mi != adv || !ok) continue;
+            const T bt = i == 1 ? mem1_ : -mem2_;
+            history_step<T> se;
+            if (end_driven_step(dq, ds, i, bt, found ? frac : fmax, se) && (!found || se.len < frac)) {
+              st = se;
+              frac = se.len;
+              found = true;
+            }
+          }
+          return found;
+        };
+        // a crossing that cannot be landed on. An end that a step left just short of its
+        // point, where the continuity residual already has the far side's sign (the stuck
+        // traction there is past the limit, so the end belongs further in), sweeps to the
+        // next root inwards: a zero-load jump over a band of the width of the step's own
+        // error, found by doubling then bisection; the run restarts there. Any other
+        // crossing (the end-driven step did not converge) is marched through as an
+        // ordinary step. Either way the point is no longer a target.
+        auto pass_memory = [&]() -> bool {
+          const T w = b1_ + b2_;
+          bool jumped = false;
+          for (int i = 1; i <= 2; ++i) {
+            const mode mi = i == 1 ? m1_ : m2_;
+            const bool ok = i == 1 ? mem1_ok_ : mem2_ok_;
+            const T bi = i == 1 ? b1_ : b2_, bm = i == 1 ? mem1_ : -mem2_;
+            const T bn = i == 1 ? st.e1.bb : st.e2.bb;
+            if (mi != adv || !ok || !(bn < bm)) continue;
+            (i == 1 ? mem_skip1_ : mem_skip2_) = i == 1 ? mem1_ : mem2_;
+            mem_run_ = size_t(-1);
+            if (!(bi - bm < T(1e-6) * w)) continue;
+            const int si = i == 1 ? s1_ : s2_;
+            auto G = [&](const T &b) {
+              const T x = i == 1 ? b : -b;
+              return T(si) * (stick_traction(x, steps_.size(), nullptr) - T(si) * pm_->p(x));
+            };
+            T hi = bm, d = bi - bm;
+            if (!(G(hi) > 0)) continue;
+            T lo = hi;
+            bool bracket = false;
+            for (int k = 0; k < 40 && d < T(1e-3) * w; ++k, d *= 2) {
+              lo = bm - d;
+              if (G(lo) < 0) {
+                bracket = true;
+                break;
+              }
+              hi = lo;
+            }
+            if (!bracket) continue;
+            for (int it = 0; it < 200 && hi - lo > 4 * eps<T>() * w; ++it) {
+              const T mid = (lo + hi) / 2;
+              if (G(mid) < 0) lo = mid;
+              else hi = mid;
+            }
+            if (i == 1) jump(hi, b2_);
+            else jump(b1_, hi);
+            jumped = true;
+          }
+          if (jumped) run_start_ = steps_.size();
+          return jumped;
+        };
+        bool restarted = false;
+        auto crosses = [&](const history_step<T> &t) {
+          update_memory_targets();
+          return (m1_ == adv && mem1_ok_ && t.e1.bb < mem1_) || (m2_ == adv && mem2_ok_ && -t.e2.bb > mem2_);
+        };
         int near_erases = 0, end_driven = 0;
         for (int tries = 0;; ++tries) {
           try {
             st = take_step(dq, ds, frac);
+            if (crosses(st)) {
+              if (by_memory(frac)) {
+                at_memory = true;
+                break;
+              }
+              if (pass_memory()) {
+                restarted = true;
+                break;
+              }
+            }
             const T moved = max(abs(st.e1.bb - b1_), abs(st.e2.bb - b2_));
             if (moved > db_max && tries < 40 && frac > hrun / 65536) {
               if (end_driven++ < 2 && by_end(frac)) break;
@@ -238,6 +322,10 @@ template <class T> class history {
             break;
           } catch (const error &err) {
             if (err.code() != status::no_convergence || tries >= 20) throw;
+            if (tries == 0 && by_memory(frac)) {
+              at_memory = true;
+              break;
+            }
             if (near_erases < 8) {
               // an end stalls against a region already within 1e-5 of the limit
               // (a Masing return the limit events did not catch): sweep it
@@ -255,8 +343,10 @@ template <class T> class history {
             frac /= 2;
           }
         }
+        if (restarted) continue;
         // events within the step
         int ev = event_in(st);
+        if (at_memory && (ev == 9 || ev == 10)) ev = 0;  // landed on the point: no bisection
         if ((ev == 7 || ev == 8) &&
             abs(event_value(ev, nullptr, dq, ds, T(0))) <= 64 * eps<T>() * (abs(dq) + abs(ds))) {
           after_event(ev);  // the zone opens at the start of the step (r_i was zero there)
@@ -315,6 +405,11 @@ template <class T> class history {
         E1 += st.E1;
         E2 += st.E2;
         cur = min(2 * frac, hrun);
+        if (at_memory) {
+          run_start_ = steps_.size();
+          const T rest = 1 - done;
+          if (rest > 0) hrun = rest / max(T(1), ceil(rest / h));
+        }
       }
     }
     history_vertex<T> v;
@@ -460,6 +555,11 @@ template <class T> class history {
   size_t interior_merges_ = 0;  // interior slip patches merged with an edge zone (approximation)
   mutable int open_sign_ = 0;   // direction of the zone that event 7/8 opens
   mutable size_t work_ = 0, work_budget_ = size_t(-1);  // residual evaluations in the current segment
+  // memory-point targets of the advancing ends (events 9/10), for the run mem_run_
+  mutable size_t mem_run_ = size_t(-1);
+  mutable T mem1_{0}, mem2_{0};
+  T mem_skip1_{2}, mem_skip2_{2};  // memory points passed without landing (pass_memory)
+  mutable bool mem1_ok_ = false, mem2_ok_ = false;
 
   static int sgn(const T &v) { return (v > 0) - (v < 0); }
   static T r(int i, const T &dq, const T &ds, const T &e) {
@@ -1018,7 +1118,34 @@ template <class T> class history {
     }
     if (noop_erase_ < 3 && m1_ == adv && limit_margin(1, &st) > limit_tol()) return 5;
     if (noop_erase_ < 3 && m2_ == adv && limit_margin(2, &st) > limit_tol()) return 6;
+    // 9/10: advancing end i reaches a memory point of the stick zone (an earlier end
+    // position still remembered by the traction). There the traction has a
+    // square-root cusp, so the end is not smooth in the load across it: the run
+    // restarts at the crossing and its interpolation never straddles the cusp.
+    if (m1_ == adv || m2_ == adv) {
+      update_memory_targets();
+      if (m1_ == adv && mem1_ok_ && st.e1.bb < mem1_) return 9;
+      if (m2_ == adv && mem2_ok_ && -st.e2.bb > mem2_) return 10;
+    }
     return 0;
+  }
+  // the nearest memory point inwards of each end of the current stick zone
+  // (recomputed once per run: memory_points costs O(steps))
+  void update_memory_targets() const {
+    if (mem_run_ == run_start_) return;
+    mem_run_ = run_start_;
+    mem1_ok_ = mem2_ok_ = false;
+    if (steps_.empty()) return;
+    const T w = b1_ + b2_;
+    const T gap = w * T(1e-9);  // a point this close to an end is the end itself
+    for (const T &x : memory_points(steps_.size())) {
+      if (x == mem_skip1_ || x == mem_skip2_) continue;
+      if (x < b1_ - gap && x > -b2_ + gap) {
+        if (!mem1_ok_ || x > mem1_) mem1_ = x;
+        if (!mem2_ok_ || x < mem2_) mem2_ = x;
+        mem1_ok_ = mem2_ok_ = true;
+      }
+    }
   }
   static T limit_tol() {
     using std::sqrt;
@@ -1129,6 +1256,8 @@ template <class T> class history {
       case 4: return 1 - b2;
       case 5: return limit_tol() - limit_margin(1, st);
       case 6: return limit_tol() - limit_margin(2, st);
+      case 9: return b1 - mem1_;
+      case 10: return b2 + mem2_;
       case 7: return -T(open_sign_) * r(1, dq, ds, e);  // > 0 before r_1 takes the sign of the opening
       default: return -T(open_sign_) * r(2, dq, ds, e);
     }
