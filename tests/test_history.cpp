@@ -420,9 +420,11 @@ TEST_CASE("history: segments after a ramp against the static-solve oracle, fixed
 TEST_CASE("history: refined march at rtol 1e-8 within twice its estimate (oracle)") {
   // The estimate is the difference of the last two marches over 7 (third order). Here the
   // march converges like step^2.3 (ratio 5 per halving), so the finer march's true error is
-  // that difference over 4 = 1.75 x the estimate: 2 x bounds it.
+  // that difference over 4 = 1.75 x the estimate: 2 x bounds it. Two of these cases failed
+  // before the refinement stopped only on two non-shrinking differences in a row (errors
+  // 1.3e-5 and 1.1e-7 a against estimates 2.7e-6 and 2.9e-8) and before a step that ends
+  // within 1 % of its move short of a memory point counted as reaching it.
   for (const auto &c : seg_cases) {
-    if (c.q0 == 0.14915544246907966 || c.q0 == 0.4) continue;  // next test case
     const auto b = oracle_ends(c);
     refined_history<double> h(hertz_pm(), opts(1.0 / 32), 1e-8);
     h.add_vertex(c.q0, c.s0);
@@ -433,25 +435,5 @@ TEST_CASE("history: refined march at rtol 1e-8 within twice its estimate (oracle
     const double err = std::max(std::fabs(v.b1 - b[0]), std::fabs(v.b2 - b[1]));
     CHECK(err <= 2 * v.error_estimate);
     CHECK(err < 1e-7);
-  }
-}
-
-// Known defect (docs/history.md, "Limits"): where an advancing end reaches an earlier end
-// position whose inner side is already past the friction limit, the end sweeps inwards at
-// once. A step that straddles that sweep is solved on the inner root but its interpolated
-// trajectory is smooth, so the traction it leaves is off by up to 3e-5 a; the march at
-// some step sizes (1/256 for the first case, 1/64-1/1024 for the second) then disagrees
-// with its neighbours, the refinement stops as erratic and the estimate is 2-4x short.
-TEST_CASE("history: refined march across a sweep at a memory point (known defect)" * doctest::should_fail()) {
-  for (int k : {0, 3}) {
-    const auto &c = seg_cases[k];
-    const auto b = oracle_ends(c);
-    refined_history<double> h(hertz_pm(), opts(1.0 / 32), 1e-8);
-    h.add_vertex(c.q0, c.s0);
-    h.add_vertex(c.q1, c.s1);
-    const auto &v = h.vertices().back();
-    const double err = std::max(std::fabs(v.b1 - b[0]), std::fabs(v.b2 - b[1]));
-    MESSAGE("error " << err << ", estimate " << v.error_estimate);
-    CHECK(err <= 2 * v.error_estimate);
   }
 }

@@ -260,7 +260,7 @@ template <class T> class history {
             const bool ok = i == 1 ? mem1_ok_ : mem2_ok_;
             const T bi = i == 1 ? b1_ : b2_, bm = i == 1 ? mem1_ : -mem2_;
             const T bn = i == 1 ? st.e1.bb : st.e2.bb;
-            if (mi != adv || !ok || !(bn < bm)) continue;
+            if (mi != adv || !ok || !(bn < bm + abs(bn - bi) / 100)) continue;
             (i == 1 ? mem_skip1_ : mem_skip2_) = i == 1 ? mem1_ : mem2_;
             mem_run_ = size_t(-1);
             if (!(bi - bm < T(1e-6) * w)) continue;
@@ -297,7 +297,11 @@ template <class T> class history {
         bool restarted = false;
         auto crosses = [&](const history_step<T> &t) {
           update_memory_targets();
-          return (m1_ == adv && mem1_ok_ && t.e1.bb < mem1_) || (m2_ == adv && mem2_ok_ && -t.e2.bb > mem2_);
+          // a step that ends just short of the point (within 1 % of its own move) counts
+          // too: next to the cusp the continuity residual can have a second, spurious root
+          // there, where the end would stall instead of passing the point
+          const T g1 = abs(t.e1.bb - b1_) / 100, g2 = abs(t.e2.bb - b2_) / 100;
+          return (m1_ == adv && mem1_ok_ && t.e1.bb < mem1_ + g1) || (m2_ == adv && mem2_ok_ && -t.e2.bb > mem2_ - g2);
         };
         int near_erases = 0, end_driven = 0;
         for (int tries = 0;; ++tries) {
@@ -867,7 +871,27 @@ template <class T> class history {
       T glo = G(lo, nullptr);
       if (!(glo < 0)) return false;  // the end is already at the limit there: a jump, not a step
       T ghi = G(hi, nullptr);
-      if (!(ghi > 0)) return false;  // the end does not reach bt within frac_max
+      if (!(ghi > 0)) {
+        // G(w) is the residual of a step that moves the end to bt over the fraction w: a
+        // w much longer than the end needs gives an unnaturally slow end, whose residual
+        // can have the sign of "not reached" again. Look for the earliest w at which the
+        // end is past bt on a grid (the first sign change from below brackets it).
+        bool found = false;
+        T wprev = lo;
+        for (int k = 1; k <= 16 && !found; ++k) {
+          const T w = frac_max * T(k) / 16;
+          if (w >= hi) break;
+          const T gw = G(w, nullptr);
+          if (gw > 0) {
+            lo = wprev;
+            glo = G(lo, nullptr);
+            hi = w;
+            ghi = gw;
+            found = glo < 0;
+          } else wprev = w;
+        }
+        if (!found) return false;  // the end does not reach bt within frac_max
+      }
       std::uintmax_t it = 40;
       auto tol = [](const T &a, const T &b) { return abs(b - a) <= 4 * eps<T>() * abs(b); };
       auto r = boost::math::tools::toms748_solve([&](const T &w) { return G(w, nullptr); }, lo, hi, glo, ghi, tol,
@@ -1619,6 +1643,7 @@ template <class T> class refined_history {
     };
     std::unique_ptr<history<T>> prev, cur;
     T h = min(T(1), 2 * opt_.max_step), est = 0, lastd = -1;
+    int no_gain = 0;
     try {
       prev = march(h);
     } catch (const error &e) {
@@ -1651,9 +1676,14 @@ template <class T> class refined_history {
         lastd = est;
         cur = std::move(next);
         if (est <= rtol_) break;
-        // the differences do not shrink (an erratic segment, e.g. a fast end sweep):
-        // halving further costs much and gains nothing; keep this march and its estimate
-        if (before > 0 && est > before / 2) break;
+        // the differences do not shrink twice in a row (an erratic segment, e.g. a fast
+        // end sweep): halving further costs much and gains nothing; keep this march and
+        // its estimate. (Once is not enough: a coarse march can be lucky, e.g. steps
+        // 1/16, 1/32, 1/64 off by 1.1e-7, 2.9e-7, 1.1e-7 a on an oracle segment that
+        // then converges like step^2.7.)
+        if (before > 0 && est > before / 2) {
+          if (++no_gain >= 2) break;
+        } else no_gain = 0;
         prev = std::move(cur);
         cur.reset();
       } else {
