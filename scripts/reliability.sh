@@ -34,9 +34,9 @@ valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=de
 echo "== reliability 4/4: libFuzzer, ${HS_FUZZ_SECONDS:-20} s per target"
 cmake -S . -B build-fuzz "${common[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DHALFSLIP_FUZZ=ON \
   -DHALFSLIP_BUILD_TESTS=OFF -DHALFSLIP_BUILD_CLI=OFF -DHALFSLIP_SANITIZE=address,undefined >/dev/null
-cmake --build build-fuzz -j "$jobs" --target fuzz_solve fuzz_ref >/dev/null
+cmake --build build-fuzz -j "$jobs" --target fuzz_solve fuzz_ref fuzz_history >/dev/null
 mkdir -p tests/fuzz/crashes
-for t in solve ref; do
+for t in solve ref history; do
   work="$(mktemp -d)"
   cp tests/fuzz/corpus/$t/* "$work/"
   # crash inputs are written to tests/fuzz/crashes/: copy them into corpus/$t to keep them as regression tests
