@@ -202,6 +202,10 @@ template <class T> class history {
         }
         T frac = min(cur, 1 - done);
         if (1 - done - frac < hrun / 1024) frac = 1 - done;
+        // a remainder under a quarter step is shared with this step (two even steps): a
+        // sliver of a last step makes the end's interpolation lopsided and leaves a kink
+        // in the traction next to the vertex (a memory point)
+        else if (1 - done - frac < hrun / 4) frac = (1 - done) / 2;
         // a step that cannot keep an advancing end advancing ends beyond an
         // event: shorten it until it solves (the event is then located below)
         history_step<T> st;
@@ -260,7 +264,8 @@ template <class T> class history {
             const bool ok = i == 1 ? mem1_ok_ : mem2_ok_;
             const T bi = i == 1 ? b1_ : b2_, bm = i == 1 ? mem1_ : -mem2_;
             const T bn = i == 1 ? st.e1.bb : st.e2.bb;
-            if (mi != adv || !ok || !(bn < bm + abs(bn - bi) / 100)) continue;
+            const T win = done + st.len < 1 ? abs(bn - bi) / 100 : T(0);
+            if (mi != adv || !ok || !(bn < bm + win)) continue;
             (i == 1 ? mem_skip1_ : mem_skip2_) = i == 1 ? mem1_ : mem2_;
             mem_run_ = size_t(-1);
             if (!(bi - bm < T(1e-6) * w)) continue;
@@ -300,7 +305,10 @@ template <class T> class history {
           // a step that ends just short of the point (within 1 % of its own move) counts
           // too: next to the cusp the continuity residual can have a second, spurious root
           // there, where the end would stall instead of passing the point
-          const T g1 = abs(t.e1.bb - b1_) / 100, g2 = abs(t.e2.bb - b2_) / 100;
+          // (not for the segment's last step: at a vertex an end may stop just short of a
+          // point, as when a cycle returns to its previous turning point)
+          const bool last = !(done + t.len < 1);
+          const T g1 = last ? T(0) : abs(t.e1.bb - b1_) / 100, g2 = last ? T(0) : abs(t.e2.bb - b2_) / 100;
           return (m1_ == adv && mem1_ok_ && t.e1.bb < mem1_ + g1) || (m2_ == adv && mem2_ok_ && -t.e2.bb > mem2_ - g2);
         };
         int near_erases = 0, end_driven = 0;
@@ -410,6 +418,11 @@ template <class T> class history {
         E2 += st.E2;
         cur = min(2 * frac, hrun);
         if (at_memory) {
+          // a memory point where an earlier zone of the same direction ended (Masing's
+          // memory rule): the region just inside is at the friction limit, and the end
+          // sweeps over it at once
+          for (int i = 1; i <= 2; ++i)
+            if ((i == 1 ? m1_ : m2_) == adv) erase_at_limit(i, limit_tol());
           run_start_ = steps_.size();
           const T rest = 1 - done;
           if (rest > 0) hrun = rest / max(T(1), ceil(rest / h));
@@ -1161,7 +1174,11 @@ template <class T> class history {
     mem1_ok_ = mem2_ok_ = false;
     if (steps_.empty()) return;
     const T w = b1_ + b2_;
-    const T gap = w * T(1e-9);  // a point this close to an end is the end itself
+    // a point this close to an end is the end itself: memory points closer than 1e-4 of
+    // the largest step's move come in clusters (a cycle returning to nearly the same ends)
+    // and landing on each costs an end-driven step for nothing (the cusps merge)
+    using std::max;
+    const T gap = max(w * T(1e-9), opt_.max_step * T(1e-4));
     for (const T &x : memory_points(steps_.size())) {
       if (x == mem_skip1_ || x == mem_skip2_) continue;
       if (x < b1_ - gap && x > -b2_ + gap) {
