@@ -354,8 +354,13 @@ TEST_CASE("hs_solution_steady_cycle: Ciavarella-Jager closed form vs the marched
     CHECK(c.energy_per_cycle1 == 4 * e[0]);
     hs_history_options o;
     hs_history_options_default(&o);
-    o.rtol = 1e-6;
     hs_history *h = nullptr;
+    // a max_step so small that the march's budgets (~1/step) would overflow (fuzz_history)
+    o.max_step = 1e-300;
+    CHECK(hs_history_new(&s, nullptr, &o, &h) == HS_ERR_BAD_OPTION);
+    CHECK(h == nullptr);
+    o.max_step = 1.0 / 32;
+    o.rtol = 1e-6;
     REQUIRE(hs_history_new(&s, nullptr, &o, &h) == HS_OK);
     REQUIRE(hs_history_add_cycles(h, 0, qs.first, 0, qs.second, 0, 2) == HS_OK);
     hs_cycle_summary m;

@@ -56,8 +56,8 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
       r->opts = *opts;
     }
     const auto &o = r->opts;
-    require(std::isfinite(o.max_step) && o.max_step > 0 && o.max_step <= 1, core::status::bad_option,
-            "max_step must be in (0, 1]");
+    require(std::isfinite(o.max_step) && o.max_step >= 1e-6 && o.max_step <= 1, core::status::bad_option,
+            "max_step must be in [1e-6, 1]");
     require(o.max_steps >= 1, core::status::bad_option, "max_steps must be >= 1");
     require(o.segments_per_cycle >= 4 && o.segments_per_cycle <= 100000, core::status::bad_option,
             "segments_per_cycle must be in 4..100000");

@@ -774,6 +774,7 @@ class TestHistory(unittest.TestCase):
             h.add_vertices(0.1, 0.0)
         for kw, st in ((dict(f=0), halfslip.ERR_BAD_FRICTION), (dict(a=-1), halfslip.ERR_BAD_SIZE),
                        (dict(max_step=0), halfslip.ERR_BAD_OPTION), (dict(max_step=2), halfslip.ERR_BAD_OPTION),
+                       (dict(max_step=1e-300), halfslip.ERR_BAD_OPTION),
                        (dict(segments_per_cycle=3), halfslip.ERR_BAD_OPTION),
                        (dict(ramp_order=7), halfslip.ERR_BAD_OPTION),
                        (dict(exponent=1.0), halfslip.ERR_BAD_GEOMETRY)):

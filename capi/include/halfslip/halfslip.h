@@ -403,7 +403,7 @@ typedef struct hs_history hs_history;
 
 typedef struct hs_history_options {
   size_t struct_size;       /* = sizeof(hs_history_options), set by hs_history_options_default */
-  double max_step;          /* first load step, in max(|dQ/fP|, |dsigma/fp0|/4); default 1/32 */
+  double max_step;          /* first load step, in max(|dQ/fP|, |dsigma/fp0|/4), in [1e-6, 1]; default 1/32 */
   int max_steps;            /* limit on the total number of steps; default 20000; the cost grows like its square */
   int segments_per_cycle;   /* periodic loading with Q and sigma out of phase: chords per cycle (default 64) */
   int ramp_order;           /* HS_RAMP_*: how the periodic loading is reached from zero */

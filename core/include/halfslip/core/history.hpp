@@ -150,11 +150,16 @@ template <class T> class history {
   using pressure_ptr = std::shared_ptr<const pressure_model<T>>;
   history(pressure_ptr pm, const history_options<T> &o = {}) : pm_(std::move(pm)), opt_(o) {
     if (!pm_) throw error(status::null_pointer, "history: no pressure model");
-    if (!(opt_.max_step > 0) || !(opt_.max_step <= 1))
-      throw error(status::bad_option, "history: max_step must be in (0, 1]");
+    if (!(opt_.max_step >= min_max_step()) || !(opt_.max_step <= 1))
+      throw error(status::bad_option, "history: max_step must be in [1e-6, 1]");
     if (opt_.degree < 1 || opt_.degree > 5) throw error(status::bad_option, "history: degree must be in 1..5");
     if (opt_.order < 2 || opt_.order > 64) throw error(status::bad_option, "history: order must be in 2..64");
   }
+
+  // The smallest max_step: a segment's step and work budgets scale with 1/step (and
+  // a million steps per unit of load is far past max_steps); below it they would
+  // overflow (found by fuzz_history: max_step = 1e-304).
+  static T min_max_step() { return T(1e-6); }
 
   // March from the current loads to (q, s) along a straight segment.
   void add_vertex(const T &qn, const T &sn) {
@@ -454,7 +459,7 @@ template <class T> class history {
   }
   // the largest load step of later segments
   void set_max_step(const T &h) {
-    if (!(h > 0) || !(h <= 1)) throw error(status::bad_option, "history: max_step must be in (0, 1]");
+    if (!(h >= min_max_step()) || !(h <= 1)) throw error(status::bad_option, "history: max_step must be in [1e-6, 1]");
     opt_.max_step = h;
   }
   T q() const { return q_; }
