@@ -9,6 +9,8 @@
 // march that runs away is a failure, as a crash is.
 #include <halfslip/halfslip.h>
 
+#include "fuzz_input.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -16,32 +18,8 @@
 #include <initializer_list>
 
 namespace {
-struct reader {
-  const uint8_t *p;
-  size_t n;
-  double real() {
-    double v = 0;
-    if (n >= sizeof v) {
-      std::memcpy(&v, p, sizeof v);
-      p += sizeof v;
-      n -= sizeof v;
-    }
-    return v;
-  }
-  uint8_t byte() {
-    if (!n) return 0;
-    --n;
-    return *p++;
-  }
-  // a value in [-r, r] from two bytes
-  double ranged(double r) {
-    const int v = int(byte()) << 8 | int(byte());
-    return r * (double(v) / 32767.5 - 1);
-  }
-};
-void require(bool ok) {
-  if (!ok) std::abort();
-}
+using hs_fuzz::reader;
+using hs_fuzz::require;
 bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
 }  // namespace
 

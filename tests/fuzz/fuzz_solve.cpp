@@ -4,33 +4,16 @@
 // a message for it, and on success self-consistent outputs.
 #include <halfslip/halfslip.h>
 
+#include "fuzz_input.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 
 namespace {
-struct reader {
-  const uint8_t *p;
-  size_t n;
-  double real() {
-    double v = 0;
-    if (n >= sizeof v) {
-      std::memcpy(&v, p, sizeof v);
-      p += sizeof v;
-      n -= sizeof v;
-    }
-    return v;
-  }
-  uint8_t byte() {
-    if (!n) return 0;
-    --n;
-    return *p++;
-  }
-};
-void require(bool ok) {
-  if (!ok) std::abort();
-}
+using hs_fuzz::reader;
+using hs_fuzz::require;
 bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
 }  // namespace
 

@@ -1,0 +1,36 @@
+// Shared by the libFuzzer targets that read raw bytes: a reader that turns the
+// input into doubles (raw: NaN, Inf, denormals, huge values all occur) and
+// bytes, zero once the input runs out, and an abort on a broken contract.
+#pragma once
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
+namespace hs_fuzz {
+struct reader {
+  const uint8_t *p;
+  size_t n;
+  double real() {
+    double v = 0;
+    if (n >= sizeof v) {
+      std::memcpy(&v, p, sizeof v);
+      p += sizeof v;
+      n -= sizeof v;
+    }
+    return v;
+  }
+  uint8_t byte() {
+    if (!n) return 0;
+    --n;
+    return *p++;
+  }
+  // a value in [-r, r] from two bytes
+  double ranged(double r) {
+    const int v = int(byte()) << 8 | int(byte());
+    return r * (double(v) / 32767.5 - 1);
+  }
+};
+inline void require(bool ok) {
+  if (!ok) std::abort();
+}
+}  // namespace hs_fuzz
