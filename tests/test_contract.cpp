@@ -360,6 +360,16 @@ TEST_CASE("hs_solution_steady_cycle: Ciavarella-Jager closed form vs the marched
     CHECK(hs_history_new(&s, nullptr, &o, &h) == HS_ERR_BAD_OPTION);
     CHECK(h == nullptr);
     o.max_step = 1.0 / 32;
+    // a vertex so far away that the segment needs more steps than max_steps: a status at
+    // once (its step budgets, ~1e111, overflowed size_t before: fuzz_history)
+    REQUIRE(hs_history_new(&s, nullptr, &o, &h) == HS_OK);
+    const double qv = 0.1, sv = 1e111;
+    CHECK(hs_history_add_vertices(h, 1, &qv, &sv) == HS_ERR_NO_CONVERGENCE);
+    size_t nv = 99;
+    CHECK(hs_history_vertex_count(h, &nv) == HS_OK);
+    CHECK(nv == 0);
+    hs_history_free(h);
+    h = nullptr;
     o.rtol = 1e-6;
     REQUIRE(hs_history_new(&s, nullptr, &o, &h) == HS_OK);
     REQUIRE(hs_history_add_cycles(h, 0, qs.first, 0, qs.second, 0, 2) == HS_OK);

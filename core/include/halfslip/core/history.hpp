@@ -175,8 +175,15 @@ template <class T> class history {
     T E1 = 0, E2 = 0;
     noop_erase_ = 0;
     if (len > 0) {
+      // steps of the segment at max_step: beyond max_steps the march could not finish
+      // (and the budgets below, ~1/h, would not fit a size_t: fuzz_history, sigma/fp0 = 1e111)
+      const T nseg = max(T(1), ceil(len / opt_.max_step));
+      if (!(nseg <= T(opt_.max_steps)))
+        throw error(status::no_convergence,
+                    "history: the segment needs more load steps than max_steps (max(|dQ/fP|, |dsigma/fp0|/4) / "
+                    "max_step)");
       decide(dq, ds);
-      const T h = T(1) / max(T(1), ceil(len / opt_.max_step));
+      const T h = T(1) / nseg;
       T done = 0;  // fraction of the segment done
       T hrun = h;
       // the ends may move at most max_step (units of a) per step: where an end runs
@@ -187,9 +194,9 @@ template <class T> class history {
       // a march that keeps taking tiny steps without getting on (an end caught at a
       // kink of the traction it cannot pass) stops with a status instead of running on
       const size_t seg_first = steps_.size();
-      const size_t seg_budget = size_t(64) * size_t(ceil(T(1) / h)) + 256;
+      const size_t seg_budget = size_t(64) * size_t(nseg) + 256;
       work_ = 0;
-      work_budget_ = 4000 * size_t(ceil(T(1) / h)) + 40000;  // residual evaluations per segment
+      work_budget_ = 4000 * size_t(nseg) + 40000;  // residual evaluations per segment
       while (done < 1) {
         if (steps_.size() - seg_first > seg_budget)
           throw error(status::no_convergence,
