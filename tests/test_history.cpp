@@ -344,17 +344,16 @@ namespace {
 struct seg_case {
   double q0, s0, q1, s1;
   int d1, d2;
-  bool crosses;  // a new end passes the ramp's stick end (a cusp of the traction)
 };
 const seg_case seg_cases[] = {
     // both zones reverse; zone 1's new end passes the ramp's end (from a random walk of bench_history)
-    {0.14915544246907966, 0.12976720841044964, 0.037592776800771471, 0.27947936305003174, -1, -1, true},
-    {0.5, 0.4, 0.2, 0.6, -1, -1, false},  // both reverse, new zones inside the old ones
-    {0.3, 0.0, 0.25, 0.8, -1, 1, false},  // zone 1 reverses, zone 2 keeps advancing
-    {0.4, 0.5, -0.1, 0.3, -1, -1, true},
-    {0.6, 0.2, 0.3, -0.3, -1, -1, false},
-    {0.2, 0.3, 0.1, 0.9, -1, 1, true},
-    {0.45, 0.0, 0.0, 0.0, -1, -1, false},  // Ciavarella-Jager unloading to zero
+    {0.14915544246907966, 0.12976720841044964, 0.037592776800771471, 0.27947936305003174, -1, -1},
+    {0.5, 0.4, 0.2, 0.6, -1, -1},  // both reverse, new zones inside the old ones
+    {0.3, 0.0, 0.25, 0.8, -1, 1},  // zone 1 reverses, zone 2 keeps advancing
+    {0.4, 0.5, -0.1, 0.3, -1, -1},  // (this and the first and sixth: a new end passes the ramp's end)
+    {0.6, 0.2, 0.3, -0.3, -1, -1},
+    {0.2, 0.3, 0.1, 0.9, -1, 1},
+    {0.45, 0.0, 0.0, 0.0, -1, -1},  // Ciavarella-Jager unloading to zero
 };
 std::array<double, 2> oracle_ends(const seg_case &c) {
   hs::reference::reversal_oracle<double> o(c.q0, c.s0, c.q1, c.s1, c.d1, c.d2);
@@ -388,6 +387,19 @@ TEST_CASE("reversal oracle: monotonic closed forms and Ciavarella-Jager unloadin
     const double c = std::sqrt(1 - (0.45 - q) / 2);
     CHECK(std::fabs(b[0] - c) < 64 * eps);
     CHECK(std::fabs(b[1] - c) < 64 * eps);
+  }
+  // symmetries: all loads, tractions and directions negated gives the same ends; sigma
+  // negated mirrors the contact (b1 <-> b2, zone 1 <-> zone 2)
+  for (const auto &c : seg_cases) {
+    const auto b = oracle_ends(c);
+    hs::reference::reversal_oracle<double> neg(-c.q0, -c.s0, -c.q1, -c.s1, -c.d1, -c.d2);
+    const auto bn = neg.solve(0.9, 0.9);
+    CHECK(std::fabs(bn[0] - b[0]) < 64 * eps);
+    CHECK(std::fabs(bn[1] - b[1]) < 64 * eps);
+    hs::reference::reversal_oracle<double> mir(c.q0, -c.s0, c.q1, -c.s1, c.d2, c.d1);
+    const auto bm = mir.solve(0.9, 0.9);
+    CHECK(std::fabs(bm[0] - b[1]) < 64 * eps);
+    CHECK(std::fabs(bm[1] - b[0]) < 64 * eps);
   }
   // long double through the same template: double's result to its own rounding
   hs::reference::reversal_oracle<long double> ol(0.4L, 0.5L, -0.1L, 0.3L, -1, -1);

@@ -174,6 +174,8 @@ template <class T> class history {
     const T len = max(abs(dq), abs(ds) / 4);
     T E1 = 0, E2 = 0;
     noop_erase_ = 0;
+    mem_skip1_ = mem_skip2_ = T(2);  // memory points passed without landing (pass_memory), per segment
+    mem_run_ = size_t(-1);
     if (len > 0) {
       // steps of the segment at max_step: beyond max_steps the march could not finish
       // (and the budgets below, ~1/h, would not fit a size_t: fuzz_history, sigma/fp0 = 1e111)
@@ -244,6 +246,10 @@ template <class T> class history {
         // a step that would carry an advancing end past a memory point (a cusp of
         // the traction) ends exactly there, driven by that end; the run restarts
         bool at_memory = false;
+        // the end that landed on its memory point (1 or 2). A landing step is not held to
+        // db_max: it ends on the point, where the run restarts (holding it to db_max made
+        // 3 of the 162 periodic loadings of bench_history stagnate)
+        int landed = 0;
         auto by_memory = [&](const T &fmax) -> bool {
           update_memory_targets();
           bool found = false;
@@ -253,10 +259,11 @@ template <class T> class history {
             if (mi != adv || !ok) continue;
             const T bt = i == 1 ? mem1_ : -mem2_;
             history_step<T> se;
-            if (end_driven_step(dq, ds, i, bt, found ? frac : fmax, se) && (!found || se.len < frac)) {
+            if (end_driven_step(dq, ds, i, bt, found ? frac : fmax, se) && (!found || se.len < frac)) {  // no end moves more than a step
               st = se;
               frac = se.len;
               found = true;
+              landed = i;
             }
           }
           return found;
@@ -276,8 +283,9 @@ template <class T> class history {
             const bool ok = i == 1 ? mem1_ok_ : mem2_ok_;
             const T bi = i == 1 ? b1_ : b2_, bm = i == 1 ? mem1_ : -mem2_;
             const T bn = i == 1 ? st.e1.bb : st.e2.bb;
-            const T win = done + st.len < 1 ? abs(bn - bi) / 100 : T(0);
-            if (mi != adv || !ok || !(bn < bm + win)) continue;
+            // a step that stopped just short of the point (the 1 % window of `crosses`)
+            // keeps it as a target: the next step crosses it and lands
+            if (mi != adv || !ok || !(bn < bm)) continue;
             (i == 1 ? mem_skip1_ : mem_skip2_) = i == 1 ? mem1_ : mem2_;
             mem_run_ = size_t(-1);
             if (!(bi - bm < T(1e-6) * w)) continue;
@@ -370,7 +378,7 @@ template <class T> class history {
         if (restarted) continue;
         // events within the step
         int ev = event_in(st);
-        if (at_memory && (ev == 9 || ev == 10)) ev = 0;  // landed on the point: no bisection
+        if (at_memory && ev == 8 + landed) ev = 0;  // landed on the point: no bisection
         if ((ev == 7 || ev == 8) &&
             abs(event_value(ev, nullptr, dq, ds, T(0))) <= 64 * eps<T>() * (abs(dq) + abs(ds))) {
           after_event(ev);  // the zone opens at the start of the step (r_i was zero there)
@@ -434,7 +442,7 @@ template <class T> class history {
           // memory rule): the region just inside is at the friction limit, and the end
           // sweeps over it at once
           for (int i = 1; i <= 2; ++i)
-            if ((i == 1 ? m1_ : m2_) == adv) erase_at_limit(i, limit_tol());
+            if (i == landed && (i == 1 ? m1_ : m2_) == adv) erase_at_limit(i, limit_tol());
           run_start_ = steps_.size();
           const T rest = 1 - done;
           if (rest > 0) hrun = rest / max(T(1), ceil(rest / h));
@@ -599,6 +607,7 @@ template <class T> class history {
   void jump(const T &b1n, const T &b2n) {
     if (steps_.size() >= size_t(opt_.max_steps))
       throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
+    if (!(b1n + b2n > 0)) throw error(status::no_convergence, "history: a jump of an end would empty the stick zone");
     history_step<T> st;
     st.q0 = q_;
     st.s0 = s_;
@@ -1244,8 +1253,22 @@ template <class T> class history {
       const T d1 = L * T(1) / T(M * M) * T(0.75) / 64;
       if (!(limit_ratio(i, xat(d1), nullptr) >= below)) return false;
       d_in = d1;
-      while (d_in < T(0.75) * L && limit_ratio(i, xat(2 * d_in), nullptr) >= below) d_in *= 2;
-      d_out = 2 * d_in;
+      // doubling within 3/4 of the stick zone (beyond, near the other end, q tends to s p
+      // when both zones slip the same way, which is not the limit of this end's region)
+      for (;;) {
+        const T dn = 2 * d_in;
+        if (dn >= T(0.75) * L) {
+          if (limit_ratio(i, xat(T(0.75) * L), nullptr) >= below)
+            throw error(status::no_convergence, "history: the whole stick zone reached the friction limit");
+          d_out = T(0.75) * L;
+          break;
+        }
+        if (!(limit_ratio(i, xat(dn), nullptr) >= below)) {
+          d_out = dn;
+          break;
+        }
+        d_in = dn;
+      }
     } else {
       if (!(limit_margin(i, nullptr) > limit_tol() / 2)) {  // located short of the limit: nothing to do
         ++noop_erase_;
@@ -1643,6 +1666,8 @@ template <class T> class refined_history {
   refined_history(pressure_ptr pm, const history_options<T> &o, const T &rtol, const T &min_step = T(1) / 512)
       : pm_(std::move(pm)), opt_(o), rtol_(rtol), min_step_(min_step) {
     if (!(rtol_ >= 0)) throw error(status::bad_option, "history: rtol must be >= 0");
+    if (!(min_step_ >= history<T>::min_max_step()) || !(min_step_ <= 1))
+      throw error(status::bad_option, "history: min_step must be in [1e-6, 1]");
     fine_.reset(new history<T>(pm_, opt_));
   }
   void add_vertex(const T &q, const T &s) {

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/fpclassify.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
 namespace hs { namespace reference {
@@ -47,9 +48,11 @@ template <class T> class reversal_oracle {
     using std::sqrt;
     if (!(abs(q0) < 1) || !(abs(q1) < 1)) throw std::invalid_argument("reversal_oracle: |q| >= 1");
     sg_ = q0 > 0 ? 1 : (q0 < 0 ? -1 : 0);
+    if (sg_ == 0 && s0 != 0)  // a sigma-only ramp has zones slipping in opposite directions
+      throw std::invalid_argument("reversal_oracle: the start must be a same-sign Hertz state (q0 != 0 or s0 = 0)");
     e0_ = sqrt(1 - abs(q0));
-    c0_ = s0 / 4;
-    if (sg_ == 0) c0_ = 0;
+    // q < 0: the state is minus that at (-q0, -s0), whose centre is -s0/4
+    c0_ = T(sg_) * s0 / 4;
     B1o_ = c0_ + e0_;
     B2o_ = e0_ - c0_;
     if (sg_ != 0 && !(B1o_ <= 1 && B2o_ <= 1)) throw std::invalid_argument("reversal_oracle: start not same-sign");
@@ -129,6 +132,9 @@ template <class T> class reversal_oracle {
       const T j12 = (r2p[0] - r2m[0]) / (2 * h), j22 = (r2p[1] - r2m[1]) / (2 * h);
       const T det = j11 * j22 - j12 * j21;
       const T x1 = (r[0] * j22 - r[1] * j12) / det, x2 = (j11 * r[1] - j21 * r[0]) / det;
+      using boost::math::isfinite;
+      if (!isfinite(x1) || !isfinite(x2))  // e.g. a segment that only continues the ramp: g = 0
+        throw std::runtime_error("reversal_oracle: singular Newton step");
       // keep the ends inside the contact and the stick zone non-empty
       T lam = 1;
       while (lam > T(1e-6) && !(b1 - lam * x1 < 1 && b2 - lam * x2 < 1 && b1 - lam * x1 + b2 - lam * x2 > 0))
