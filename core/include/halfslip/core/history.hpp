@@ -1373,6 +1373,15 @@ template <class T> class history {
     if (steps_.size() >= size_t(opt_.max_steps))
       throw error(status::no_convergence, "history: step limit reached (history_options::max_steps)");
     step_energy(st);
+    // the slip rate grows like log(1/e) as the stick zone closes; where its interpolated
+    // half-width reaches zero within a step (gross sliding at hand) the energies are not
+    // defined: a status, never a NaN (found by fuzz_history at Q/fP = -0.95, sigma/fp0 = -2.5)
+    {
+      using boost::math::isfinite;
+      if (!isfinite(st.E1) || !isfinite(st.E2))
+        throw error(status::no_convergence,
+                    "history: the stick zone closes within a step (gross sliding is near): energies undefined");
+    }
     st.run_start = steps_.size() == run_start_;
     steps_.push_back(st);
     b1_ = st.e1.bb;
