@@ -223,6 +223,7 @@ template <class T, class Basis> struct opposite_problem {
   bool handoff = false;            // a refinement in a wider type follows (shortcut)
   T last_conv = -1;                // relative size of the last accepted step
   bool last_full = false;          // ... and whether it was a full step
+  bool at_floor = false;           // the residual of the current state is at its rounding floor
 
   opposite_problem(const T &q_, const T &s_) : q(q_), s(s_) {
     // Residuals are sums of terms of size <= pi (1 + s): rounding leaves them
@@ -240,6 +241,7 @@ template <class T, class Basis> struct opposite_problem {
   }
   jacobian2<T> jacobian(const state &st, const eval &r) {
     near_boundary = st.d1 < st.e;
+    at_floor = residual_norm(r) <= floor(r);
     // x = c: columns (Fc, Fl). x = ln d1 at fixed e: dc = -d1 dx, and at fixed
     // d1 a change of ln e moves c by -e/2 d(ln e).
     if (!near_boundary) return {r.F1c, r.F1l, r.F2c, r.F2l};
@@ -248,9 +250,11 @@ template <class T, class Basis> struct opposite_problem {
   // Hand-off to the refinement in a wider type (refine_opposite, which is
   // itself a Newton step): once the full step is so small that the state it
   // leads to is within ~1e-10 of the root (the quadratic convergence
-  // measured on the last two steps), it is taken unevaluated and the
-  // iteration ends; the wider step then removes what is left (its own error
-  // ~ K (1e-10)^2). Only where such a refinement follows (handoff).
+  // measured on the last two steps), or the residual is already at its
+  // rounding floor (near the regime boundary, where d1 is a small
+  // difference, the steps stop shrinking there), it is taken unevaluated and
+  // the iteration ends; the wider step then removes what is left (its own
+  // error ~ K (1e-10)^2). Only where such a refinement follows (handoff).
   bool shortcut(state &st, const T &dx, const T &dy, const T &) {
     using std::abs;
     using std::max;
@@ -267,7 +271,15 @@ template <class T, class Basis> struct opposite_problem {
     }
     const T rel = max(max(rd1, rd2), rde);
     bool take;
-    if (last_conv > 0 && last_full) {
+    if (at_floor) {
+      // the residual is rounding: the step is of the size of that noise (the
+      // lengths are as good as T can make them), and small enough that the
+      // wider step takes it from here: 1e-8 relative, or where d1 is a
+      // tiny difference near the regime boundary (its relative step is
+      // noise of order eps s/d1) 1e-6 relative with lengths moved by < 1e-12
+      const T ad1 = near_boundary ? T(abs(st.d1 * dx)) : T(abs(dx + st.e * dy / 2));
+      take = rel <= T(1e-8) || (rel <= T(1e-6) && ad1 <= T(1e-12) && rde <= T(1e-12));
+    } else if (last_conv > 0 && last_full) {
       const T K = rel / (last_conv * last_conv);  // contraction constant of the last step
       take = rel <= T(1e-4) && rel <= last_conv / 8 && K * rel * rel <= T(1e-10);
     } else {
@@ -507,10 +519,15 @@ opposite_result<T> solve_opposite_legacy(const T &q, const T &s, int max_iterati
 //   y = D/(K w + D (1 - K/D_max)), D = s - s_b(q)  (y = 1 at D = D_max w),
 // with K = 8, D_max = 80 and w = sin(psi/2) of the sliding stick point (the
 // scale on which the stick zone closes: e ~ exp(-pi D/(8 w)) for large D), of
-// three smooth quantities
-//   A = ln(d1 / (D/(1 + D)))          (d1 ~ D near the boundary, saturates),
-//   B = (d2 - d1)/(2 m)                (the stick centre over its value m at the boundary),
-//   C = ln e + (pi s/8 - pi c_inf/2)/w (tends to a constant as D -> infinity),
+// three smooth quantities (Y = D/(1 + D))
+//   A = ln(d1 / Y)                     (d1 ~ D near the boundary, saturates),
+//   B = ((d2 - d1)/(2 m) - 1)/Y        (the stick centre c, = m at the boundary),
+//   C = (L - L_b)/Y, L = ln e + (pi s/8 - pi c_inf/2)/w and L_b its value
+//       at the boundary (e = 2 sqrt(1 - q), s = 4 m); L tends to a
+//       constant as D -> infinity,
+// of which B and C carry their error times Y: near the boundary, where d1
+// is small and a start error in c or ln e would move it by that error
+// squared over d1, c and e start exact to first order in D.
 // interpolated by 4 x 4-point Lagrange (bicubic) in (x, y). Beyond D_max w the
 // saturated row is used, with the true s in C. The table is built on first
 // use by the solver itself from the starts of solve_opposite_legacy (1089
@@ -546,12 +563,13 @@ struct opposite_start_table {
         // the row y = 0 is the limit D -> 0 (taken at D = 1e-7 w)
         const double D = j == 0 ? 1e-7 * w : D_of_y(w, double(j) / (ny - 1));
         const double s = 4 * m + D;
-        const double Da = s - 4 * m;
+        const double Da = s - 4 * m, Y = Da / (1 + Da);
+        const double Lb = std::log(2 * std::sqrt(1 - q)) + (pi_ * m / 2 - pi_ * c / 2) / w;
         try {
           const auto r = solve_opposite_legacy<double>(q, s, 100);
-          A[i][j] = float(std::log(r.delta1 * (1 + Da) / Da));
-          B[i][j] = float((r.delta2 - r.delta1) / (2 * m));
-          C[i][j] = float(r.log_width + (pi_ * s / 8 - pi_ * c / 2) / w);
+          A[i][j] = float(std::log(r.delta1 / Y));
+          B[i][j] = float(((r.delta2 - r.delta1) / (2 * m) - 1) / Y);
+          C[i][j] = float((r.log_width + (pi_ * s / 8 - pi_ * c / 2) / w - Lb) / Y);
         } catch (const error &) {
           ok = false;
         }
@@ -614,9 +632,10 @@ struct opposite_start_table {
       Bv += wx[a] * rb;
       Cv += wx[a] * rc;
     }
+    const double Lb = std::log(2 * std::sqrt(1 - q)) + (pi_ * m / 2 - pi_ * c / 2) / w;
     st.d1 = std::exp(Av) * yy;
-    st.d2 = st.d1 + 2 * m * Bv;
-    st.le = Cv - (pi_ * s / 8 - pi_ * c / 2) / w;
+    st.d2 = st.d1 + 2 * m * (1 + yy * Bv);
+    st.le = Lb + yy * Cv - (pi_ * s / 8 - pi_ * c / 2) / w;
     st.e = std::exp(st.le);
     // d1 + d2 + e = 2 in the largest
     if (st.e >= st.d1 && st.e >= st.d2) {
