@@ -346,13 +346,14 @@ template <class T, class Basis> struct opposite_problem {
 };
 
 // Newton's method from a start; true on convergence (out, iterations set).
-// handoff: a refinement in a wider type follows (opposite_problem::shortcut).
+// handoff: a refinement in a wider type follows (opposite_problem::shortcut);
+// le_set: start.le is ln start.e (else it is computed here).
 template <class T, class Basis = opposite_basis<T>>
 bool opposite_newton(const T &q, const T &s, const opposite_state<T> &start, int max_iterations,
-                     opposite_state<T> &out, int &iterations, bool handoff = false) {
+                     opposite_state<T> &out, int &iterations, bool handoff = false, bool le_set = false) {
   using boost::math::isfinite;
   opposite_state<T> st = start;
-  st.le = log_width(st);
+  if (!le_set) st.le = log_width(st);
   if (!(st.e >= 0) || !isfinite(st.le) || !(st.d1 > 0) || !(st.d2 > 0)) return false;
   opposite_problem<T, Basis> p(q, s);
   p.handoff = handoff;
@@ -378,7 +379,8 @@ template <class T, class R> opposite_state<T> refine_opposite(const T &q, const 
   using std::log;
   // a wider type may hold a stick zone that underflows in T (long double: e
   // down to ~1e-4900)
-  const R le = R(log_width(st));
+  // (st.le as Newton carries it: ln st.e)
+  const R le = R(st.le != 0 ? st.le : log_width(st));
   const R ew = st.e >= boost::math::tools::min_value<T>() ? R(st.e) : R(exp(le));
   // the largest of the three lengths carries the rounding of d1 + d2 + e = 2
   // in T; in R it is recomputed from the other two, else the residual is
@@ -415,13 +417,11 @@ template <class T, class R> opposite_state<T> refine_opposite(const T &q, const 
   // (ln e is weakly determined when the stick zone is tiny, and of size
   // ~ sigma/(f p0): its correction is judged relative to it)
   if (abs(dc) > R(1e-6) || abs(dl) > R(1e-6) * (1 + abs(le))) return st;
-  // ln of the new e in T where e is in T's range (within an ulp of ln in R,
-  // without a logarithm in R); below it, ln e as carried: le + dl, where le
-  // is ln w.e unless w.e was recomputed above
+  // ln of the new e: le + dl, where le is ln w.e (to the rounding of le in T:
+  // within an ulp of T's ln e) unless w.e was recomputed above
   const T ne = T(n.e);
-  if (ne >= boost::math::tools::min_value<T>()) return {T(n.d1), T(n.d2), ne, T(log(ne))};
-  const R nle = e_exact || !(n.e >= boost::math::tools::min_value<R>()) ? n.le : R(log(n.e));
-  return {T(n.d1), T(n.d2), ne, T(nle)};
+  if (e_exact || !(n.e >= boost::math::tools::min_value<R>())) return {T(n.d1), T(n.d2), ne, T(n.le)};
+  return {T(n.d1), T(n.d2), ne, T(log(n.e))};
 }
 
 // The result from a converged state: one refinement step in the wider type
@@ -663,7 +663,7 @@ opposite_result<T> solve_opposite(const T &q, const T &s, int max_iterations) {
     if (opposite_start_table::get().start(q, s, st0)) {
       const int cap = max_iterations < 16 ? max_iterations : 16;
       int its = 0;
-      if (opposite_newton<T, Basis>(q, s, st0, cap, st, its, true)) return finish_opposite(q, s, st, its);
+      if (opposite_newton<T, Basis>(q, s, st0, cap, st, its, true, true)) return finish_opposite(q, s, st, its);
       spent = cap;
     }
   }
