@@ -121,10 +121,13 @@ template <class T, class Basis> void opposite_derivatives(const T &s, const oppo
   const T pi_ = pi<T>();
   const T d1 = st.d1, d2 = st.d2, e = st.e;
   const T b1 = 1 - d1, bdiff = d2 - d1;
-  F1c = pi_ - 4 * B.RF + 8 * d1 * B.op2 * B.RJc / 3;
-  F2c = pi_ * bdiff - pi_ * s / 4 + 2 * (2 - 4 * b1) * B.RF + 8 * d1 / 3 * (bdiff * B.op2 * B.RJc - d2 * B.eRDb);
-  F1l = -2 * e * B.RF - 4 * d1 * d2 * B.eRDb / 3;
-  F2l = pi_ * e * e / 4 + 2 * e * (-b1 * B.RF + d1 * e * B.op2 * B.RJc / 3) - 2 * d1 * bdiff * d2 * B.eRDb / 3;
+  // (x/3 as x * (1/3): the derivatives only steer Newton)
+  const T third = T(1) / 3;
+  const T oRJ = B.op2 * B.RJc;
+  F1c = pi_ - 4 * B.RF + 8 * d1 * oRJ * third;
+  F2c = pi_ * bdiff - pi_ * s / 4 + 2 * (2 - 4 * b1) * B.RF + 8 * d1 * third * (bdiff * oRJ - d2 * B.eRDb);
+  F1l = -2 * e * B.RF - 4 * d1 * d2 * B.eRDb * third;
+  F2l = pi_ * e * e / 4 + 2 * e * (-b1 * B.RF + d1 * e * oRJ * third) - 2 * d1 * bdiff * d2 * B.eRDb * third;
 }
 
 // Basis is the provider of the Carlson quantities (default: cel-based
@@ -143,9 +146,11 @@ opposite_eval<T> opposite_residual(const T &q, const T &s, const opposite_state<
     const T poly = moments_poly(d1, d2);
     // the terms of A0, A1 grow like ln(1/e) d1 / (d1 + e)^(3/2) as e -> 0 near
     // Q -> fP, far beyond pi s: the rounding of F is judged on them
-    const T t0 = abs(B.RF) + abs(bdiff * B.op2 * B.RJc) / 3 + abs(d2 * B.eRDb) / 3;
-    const T t1 = abs((4 - 3 * d1 + d2) * B.RF) / 2 + abs(B.op2 * poly * B.RJc) / 6 + abs(d2 * bdiff * B.eRDb) / 2;
-    r.mag = pi_ * (abs(bdiff) + s / 2 + q / 2 + abs(D1) / pi_) + 4 * d1 * t0 + 2 * d1 * t1;
+    // (a rounding scale: x/3 as x * (1/3))
+    const T third = T(1) / 3;
+    const T t0 = abs(B.RF) + (abs(bdiff * B.op2 * B.RJc) + abs(d2 * B.eRDb)) * third;
+    const T t1 = abs((4 - 3 * d1 + d2) * B.RF) / 2 + abs(B.op2 * poly * B.RJc) * third / 2 + abs(d2 * bdiff * B.eRDb) / 2;
+    r.mag = pi_ * (abs(bdiff) + s / 2 + q / 2) + abs(D1) + 4 * d1 * t0 + 2 * d1 * t1;
   }
   opposite_derivatives(s, st, B, r.F1c, r.F2c, r.F1l, r.F2l);
   return r;
@@ -320,13 +325,21 @@ template <class T, class Basis> struct opposite_problem {
     if (st.d1 + dd1 <= st.d1 / 4 || st.d2 + dd2 <= st.d2 / 4) return false;
     // e from ln e: it may be below the range of T (then only le carries it)
     const T nle = st.le + lam * dy;
-    nst = {st.d1 + dd1, st.d2 + dd2, exp(nle), nle};
+    // (with a hand-off, the iterates need not be consistent to the last ulp:
+    // e + de, without a second exponential, where e is in T's range)
+    const T ne = handoff && st.e >= boost::math::tools::min_value<T>() ? T(st.e + de) : T(exp(nle));
+    nst = {st.d1 + dd1, st.d2 + dd2, ne, nle};
     // keep d1 + d2 + e = 2 exactly in the largest of the three
     if (nst.d1 >= nst.d2 && nst.d1 >= nst.e) nst.d1 = 2 - nst.d2 - nst.e;
     else if (nst.d2 >= nst.e) nst.d2 = 2 - nst.d1 - nst.e;
     else {
+      const T e0 = nst.e;
       nst.e = 2 - nst.d1 - nst.d2;
-      nst.le = log(nst.e);
+      // the recomputed e differs from e0 by roundings only (dd1 + dd2 + de
+      // = 0): ln e to first order in the difference, without a logarithm
+      const T rel = (nst.e - e0) / e0;
+      using std::abs;
+      nst.le = handoff && abs(rel) <= T(1e-8) ? T(nle + rel) : T(log(nst.e));
     }
     return isfinite(nst.le) && nst.e >= 0;
   }
@@ -421,6 +434,10 @@ template <class T, class R> opposite_state<T> refine_opposite(const T &q, const 
   // within an ulp of T's ln e) unless w.e was recomputed above
   const T ne = T(n.e);
   if (e_exact || !(n.e >= boost::math::tools::min_value<R>())) return {T(n.d1), T(n.d2), ne, T(n.le)};
+  // w.e was recomputed from the other two: it differs from ew (= exp(le))
+  // by roundings of T, and ln w.e = le + (w.e - ew)/ew to first order
+  const R rel = (w.e - ew) / ew;
+  if (abs(rel) <= R(1e-8)) return {T(n.d1), T(n.d2), ne, T(n.le + rel)};
   return {T(n.d1), T(n.d2), ne, T(log(n.e))};
 }
 
@@ -539,7 +556,7 @@ struct opposite_start_table {
   static constexpr double r_max = 0.1;  // (1 - q_max)^(1/3)
   static constexpr double q_max = 0.999;
   static constexpr double K = 8, D_max = 80;
-  float A[nx][ny], B[nx][ny], C[nx][ny];
+  double A[nx][ny], B[nx][ny], C[nx][ny];
   double W[nx], Ci[nx];  // w and c_inf at the x nodes
   bool ok = true;        // every node solved (else the table is not used)
 
@@ -567,9 +584,9 @@ struct opposite_start_table {
         const double Lb = std::log(2 * std::sqrt(1 - q)) + (pi_ * m / 2 - pi_ * c / 2) / w;
         try {
           const auto r = solve_opposite_legacy<double>(q, s, 100);
-          A[i][j] = float(std::log(r.delta1 / Y));
-          B[i][j] = float(((r.delta2 - r.delta1) / (2 * m) - 1) / Y);
-          C[i][j] = float((r.log_width + (pi_ * s / 8 - pi_ * c / 2) / w - Lb) / Y);
+          A[i][j] = std::log(r.delta1 / Y);
+          B[i][j] = ((r.delta2 - r.delta1) / (2 * m) - 1) / Y;
+          C[i][j] = (r.log_width + (pi_ * s / 8 - pi_ * c / 2) / w - Lb) / Y;
         } catch (const error &) {
           ok = false;
         }
@@ -589,10 +606,11 @@ struct opposite_start_table {
     if (i0 < 0) i0 = 0;
     if (i0 > n - 4) i0 = n - 4;
     const double t0 = f - i0, t1 = t0 - 1, t2 = t0 - 2, t3 = t0 - 3;
-    w[0] = -t1 * t2 * t3 / 6;
-    w[1] = t0 * t2 * t3 / 2;
-    w[2] = -t0 * t1 * t3 / 2;
-    w[3] = t0 * t1 * t2 / 6;
+    const double sixth = 1.0 / 6;
+    w[0] = -t1 * t2 * t3 * sixth;
+    w[1] = t0 * t2 * t3 * 0.5;
+    w[2] = -t0 * t1 * t3 * 0.5;
+    w[3] = t0 * t1 * t2 * sixth;
     return i0;
   }
 
@@ -632,20 +650,27 @@ struct opposite_start_table {
       Bv += wx[a] * rb;
       Cv += wx[a] * rc;
     }
-    const double Lb = std::log(2 * std::sqrt(1 - q)) + (pi_ * m / 2 - pi_ * c / 2) / w;
     st.d1 = std::exp(Av) * yy;
     st.d2 = st.d1 + 2 * m * (1 + yy * Bv);
-    st.le = Lb + yy * Cv - (pi_ * s / 8 - pi_ * c / 2) / w;
-    st.e = std::exp(st.le);
+    // ln e = L_b + Y C - (pi s/8 - pi c_inf/2)/w = ln e_b + Y C - pi D/(8 w),
+    // e_b = 2 sqrt(1 - q): one exponential, and the logarithm of the final e
+    const double t = yy * Cv - pi_ * D / (8 * w);
+    const bool tiny = t < -700;  // e below the range of double: ln e carries it
+    if (tiny) {
+      st.le = std::log(2 * std::sqrt(1 - q)) + t;
+      st.e = std::exp(st.le);
+    } else {
+      st.e = 2 * std::sqrt(1 - q) * std::exp(t);
+    }
     // d1 + d2 + e = 2 in the largest
     if (st.e >= st.d1 && st.e >= st.d2) {
       st.e = 2 - st.d1 - st.d2;
       if (!(st.e > 0)) return false;
       st.le = std::log(st.e);
-    } else if (st.d2 >= st.d1) {
-      st.d2 = 2 - st.d1 - st.e;
     } else {
-      st.d1 = 2 - st.d2 - st.e;
+      if (st.d2 >= st.d1) st.d2 = 2 - st.d1 - st.e;
+      else st.d1 = 2 - st.d2 - st.e;
+      if (!tiny) st.le = std::log(st.e);
     }
     return st.d1 > 0 && st.d2 > 0 && std::isfinite(st.le);
   }
