@@ -632,9 +632,16 @@ struct opposite_start_table {
     if (!(D > 0) || !(w > 0)) return false;
     double y = D / (K * w + D * (1 - K / D_max));
     double yy = D / (1 + D);
-    if (y > 1) {
+    const bool sat = y > 1;
+    double c_exact = 0;
+    if (sat) {
+      // beyond D_max the stick zone (e < 1e-13 e_b) sits at the sliding stick
+      // point to within e, and ln e ~ -pi D/(8 w): c_inf and w to the last
+      // ulp, not interpolated (the side conditions' sensitivity to c grows
+      // like ln(1/e))
       y = 1;
       yy = D_max * w / (1 + D_max * w);
+      sliding_stick_point(q, c_exact, w);
     }
     double wy[4];
     const int j0 = weights(y * (ny - 1), ny, wy);
@@ -661,6 +668,12 @@ struct opposite_start_table {
       st.e = std::exp(st.le);
     } else {
       st.e = 2 * std::sqrt(1 - q) * std::exp(t);
+    }
+    if (sat) {
+      st.d1 = 1 - c_exact - st.e / 2;
+      st.d2 = 1 + c_exact - st.e / 2;
+      if (!tiny) st.le = std::log(st.e);
+      return st.d1 > 0 && st.d2 > 0 && std::isfinite(st.le);
     }
     // d1 + d2 + e = 2 in the largest
     if (st.e >= st.d1 && st.e >= st.d2) {
