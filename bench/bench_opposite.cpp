@@ -1,8 +1,11 @@
-// Issue 16 (Google Benchmark): the Hertz opposite-sign slip at a point and the
-// zone energies, fixed Gauss rules in tau (the library) against the adaptive
-// tanh-sinh path they replace (hertz_solution::hhat_tanh_sinh /
-// energy_hat_tanh_sinh, kept callable), and hs_solve_batch against one hs_solve
-// + summary per scene, on the same scenes in the same run.
+// Issue 16 (Google Benchmark): the Hertz opposite-sign solve (stored start and
+// hand-off, core/hertz_opposite.hpp) against the starts it replaces
+// (solve_opposite_legacy) and against one std::comp_ellint_1 call, the
+// baseline of the issue's targets; the slip at a point and the zone energies,
+// fixed Gauss rules in tau (the library) against the adaptive tanh-sinh path
+// they replace (hertz_solution::hhat_tanh_sinh / energy_hat_tanh_sinh, kept
+// callable); and hs_solve_batch against one hs_solve + summary per scene, on
+// the same scenes in the same run.
 //   build/bench/bench_opposite --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //       --benchmark_out=bench/results/opposite.csv --benchmark_out_format=csv
 #include <benchmark/benchmark.h>
@@ -10,6 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "halfslip/core/hertz.hpp"
@@ -25,6 +29,24 @@ core::hertz_solution<double> solution(double q, double s) {
   sc.q = q;
   sc.s = s;
   return core::solve_hertz(sc);
+}
+
+// one complete elliptic integral of the first kind (C++17 special math), the
+// issue's unit; the modulus varies over the loop as in a solve
+void bm_comp_ellint_1(benchmark::State &state) {
+  double k = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(std::comp_ellint_1(k));
+    k = k < 0.9 ? k + 0.0137 : 0.1;
+  }
+}
+
+// the canonical solve: q, s as hertz_solution's canonical frame
+void bm_solve(benchmark::State &state, double q, double s, bool legacy) {
+  for (auto _ : state) {
+    const auto r = legacy ? core::solve_opposite_legacy<double>(q, s, 100) : core::solve_opposite<double>(q, s, 100);
+    benchmark::DoNotOptimize(r.delta1);
+  }
 }
 
 void bm_slip(benchmark::State &state, double q, double s, bool old) {
@@ -92,6 +114,16 @@ int main(int argc, char **argv) {
     const char *name;
     double q, s;
   };
+  benchmark::RegisterBenchmark("baseline/std::comp_ellint_1", bm_comp_ellint_1);
+  // the opposite-sign solve: the scenes below, one 1e-9 past the regime
+  // boundary (d1 ~ 1e-10 a) and one near sliding
+  const double sb95 = 4 * 0.95 / (1 + std::sqrt(0.05));
+  for (const sc c : {sc{"q0.3_s2", 0.3, 2.0}, sc{"q0.3_s60", 0.3, 60.0}, sc{"q0.95_s5", 0.95, 5.0},
+                     sc{"q0.95_boundary+1e-9", 0.95, sb95 + 1e-9}})
+    for (bool legacy : {false, true})
+      benchmark::RegisterBenchmark(
+          (std::string("solve_opposite/") + (legacy ? "legacy-start/" : "stored-start/") + c.name).c_str(),
+          [c, legacy](benchmark::State &st) { bm_solve(st, c.q, c.s, legacy); });
   for (const sc c : {sc{"q0.3_s2", 0.3, 2.0}, sc{"q0.3_s60", 0.3, 60.0}}) {
     for (bool old : {true, false}) {
       const std::string tag = std::string(old ? "tanh-sinh/" : "gauss-tau/") + c.name;

@@ -44,3 +44,23 @@ TEST_CASE("cel rejects kc <= 0 and p <= 0 with an exception, not a crash") {
   CHECK_THROWS_AS(cel(0.0, 1.0, 1.0, 1.0), hs::core::error);
   CHECK_THROWS_AS(cel(0.5, -1.0, 1.0, 1.0), hs::core::error);
 }
+
+// Issue 16: the three cel of the opposite-sign side conditions in one pass
+// are the three calls, bit for bit (the same operations on each stream), in
+// both branches of the small-modulus switch.
+TEST_CASE_TEMPLATE("cel3 is bitwise cel(kc,1,1,1), cel(kc,1,1,0), cel(kc,p,0,1)", T, double, long double) {
+  hs_test::rng r(7);
+  for (int i = 0; i < 500; ++i) {
+    const T kc = T(r.log_uniform(1e-12, 1.0));
+    const T p = T(r.log_uniform(1.0, 1e3));
+    const auto c = hs::core::cel3(kc, p);
+    CHECK(c.c111 == cel(kc, T(1), T(1), T(1)));
+    CHECK(c.c110 == cel(kc, T(1), T(1), T(0)));
+    CHECK(c.cp == cel(kc, p, T(0), T(1)));
+    const T lkc = std::log(kc);
+    const auto cl = hs::core::cel3_log(kc, lkc, p);
+    CHECK(cl.c111 == hs::core::cel_log(kc, lkc, T(1), T(1), T(1)));
+    CHECK(cl.c110 == hs::core::cel_log(kc, lkc, T(1), T(1), T(0)));
+    CHECK(cl.cp == hs::core::cel_log(kc, lkc, p, T(0), T(1)));
+  }
+}

@@ -633,3 +633,56 @@ TEST_CASE("issue 16: opposite-sign slip and energies by fixed Gauss rules agains
   }
   MESSAGE("issue 16 sweep: max error / (1 + position term) in eps of |h| " << worst_h << ", of E " << worst_E);
 }
+
+// Issue 16: the double opposite-sign solve (stored start over (q, s), Newton
+// handing off to one long-double step; core/hertz_opposite.hpp) against the
+// reference at 40 digits, in eps, next to the path before it
+// (solve_opposite_legacy: its starts, Newton to convergence, the same
+// long-double step): slip zones from the regime boundary (d1/a down to
+// ~1e-13) to saturation (sigma/(f p0) up to ~1000, stick width far below
+// the double range), Q/fP from 0 to beyond the stored start's range (0.999).
+// The error unit is eps (d_ref + 1e-3): full relative accuracy down to
+// d ~ 1e-3 a, absolute below (d1 near the boundary is a small difference of
+// the inputs). Both paths are limited by the same long-double step, whose
+// rounding the side conditions amplify as Q -> fP and sigma grows (ln e ~
+// -pi s/(8 w), w -> 0): there the errors reach tens to hundreds of eps for
+// either path alike. Checked: every scene within the bound of the stability
+// sweep (8 eps + 16 eps d), each path's worst within 1.5 times the other's
+// plus 1, and in the well-conditioned part (Q/fP <= 0.95, sigma/(f p0) <= 50)
+// both within 1.
+TEST_CASE("issue 16: opposite-sign solve with the stored start against the reference at 40 digits") {
+  const double eps = 2.220446049250313e-16;
+  double worst[2] = {0, 0}, worst_easy[2] = {0, 0};
+  int n = 0;
+  for (double q : {0.0, 1e-6, 0.3, 0.7, 0.95, 0.998, 0.9995})
+    for (double D : {1e-12, 1e-9, 1e-6, 1e-3, 0.1, 1.0, 3.0, 10.0, 40.0, 200.0}) {
+      const double s = boundary_s(q) + D * (1 + boundary_s(q));
+      CAPTURE(q);
+      CAPTURE(s);
+      const auto dsol = solve_double(q, s);
+      REQUIRE(dsol.reg == core::regime::opposite_sign);
+      const auto leg = core::solve_opposite_legacy<double>(q, s, 100);
+      const ref::solution rsol(text(q, s), 40);
+      const mp80 rd1(rsol.value(ref::quantity::d1).text), rd2(rsol.value(ref::quantity::d2).text);
+      const double e_new = std::max(double(abs(mp80(dsol.delta1) - rd1)) / (eps * (double(rd1) + 1e-3)),
+                                    double(abs(mp80(dsol.delta2) - rd2)) / (eps * (double(rd2) + 1e-3)));
+      const double e_leg = std::max(double(abs(mp80(leg.delta1) - rd1)) / (eps * (double(rd1) + 1e-3)),
+                                    double(abs(mp80(leg.delta2) - rd2)) / (eps * (double(rd2) + 1e-3)));
+      CHECK(double(abs(mp80(dsol.delta1) - rd1)) <= 8 * eps + 16 * eps * double(rd1));
+      CHECK(double(abs(mp80(dsol.delta2) - rd2)) <= 8 * eps + 16 * eps * double(rd2));
+      worst[0] = std::max(worst[0], e_new);
+      worst[1] = std::max(worst[1], e_leg);
+      if (q <= 0.95 && s <= 50) {
+        worst_easy[0] = std::max(worst_easy[0], e_new);
+        worst_easy[1] = std::max(worst_easy[1], e_leg);
+      }
+      MESSAGE("q " << q << " s " << s << ": error / (eps (d + 1e-3)) stored start " << e_new << ", legacy " << e_leg);
+      ++n;
+    }
+  MESSAGE(n << " scenes: worst error / (eps (d_ref + 1e-3)): stored start " << worst[0] << ", legacy " << worst[1]
+            << "; Q/fP <= 0.95, sigma/(f p0) <= 50: " << worst_easy[0] << ", " << worst_easy[1]);
+  CHECK(worst[0] <= 1.5 * worst[1] + 1);
+  CHECK(worst[1] <= 1.5 * worst[0] + 1);
+  CHECK(worst_easy[0] <= 1);
+  CHECK(worst_easy[1] <= 1);
+}

@@ -33,6 +33,36 @@
 
 namespace hs { namespace core {
 
+// pressure_tail (numerics.hpp) of the Hertz pressure with sin(2 theta) =
+// 2 (1 - c) sqrt(c (2 - c)) (theta = acos(1 - c)) in place of a sine where
+// y - sin y does not cancel (y = 2 theta > 1)
+// (2 theta > 1.01 for c > 1/8); below c = 1/8 the series
+//   int_0^c sqrt(t (2 - t)) dt = sqrt(2) c^(3/2) sum_k binom(1/2, k) (-c/2)^k / (k + 3/2)
+// (ratio <= 1/16: 18 terms reach 1e-21).
+template <class T> T hertz_pressure_tail(const T &c) {
+  using std::asin;
+  using std::sqrt;
+  if (!(c > 0)) return T(0);
+  if (c > T(0.125)) {
+    const T y = 4 * asin(sqrt(c / 2));  // 2 theta
+    return (y - 2 * (1 - c) * sqrt(c * (2 - c))) / 4;
+  }
+  struct coefficients {
+    T a[18];
+    coefficients() {
+      T bk = 1;  // binom(1/2, k) (-1/2)^k
+      for (int k = 0; k < 18; ++k) {
+        a[k] = bk / (T(k) + T(1.5));
+        bk *= (T(0.5) - T(k)) / T(k + 1) * T(-0.5);
+      }
+    }
+  };
+  static const coefficients co;
+  T sum = co.a[17];
+  for (int k = 16; k >= 0; --k) sum = sum * c + co.a[k];
+  return boost::math::constants::root_two<T>() * c * sqrt(c) * sum;
+}
+
 // The integrals of one slip zone. st is the state as opposite_G_state takes
 // it: the other zone first (st.d1 is the length of the zone whose traction
 // drives G, st.d2 the length of this zone).
@@ -46,57 +76,146 @@ template <class T> class opposite_zone_integrals {
     op1_ = st.d2 + st.e;
     Q_ = op1_ * op2_;
     const T sQ = sqrt(Q_);
+    ks_ = cel_switch<T>();
     if (st.e >= boost::math::tools::min_value<T>()) {
       kc_ = sqrt(2 * st.e / Q_);
-      lkc_ = log(kc_);
+      // ln kc is read only below the switch (cel_log, and the continuation)
+      lkc_ = kc_ > ks_ ? std::numeric_limits<T>::quiet_NaN() : T(log(kc_));
     } else {
       lkc_ = (log(T(2)) + le_ - log(Q_)) / 2;
       using std::exp;
       kc_ = exp(lkc_);
     }
     rj_scale_ = 3 / (Q_ * sQ);
-    RJc_ = rj_scale_ * cel_log(kc_, lkc_, 2 / op1_, T(0), T(1));
+    static const T lks = log(cel_switch<T>());
+    lks_ = lks;
+    agm_init(kc_ > ks_ ? kc_ : ks_);
+    two_op1_ = 2 / op1_;
     coef_ = 4 * st.d1 * op2_ / 3;
-    using std::pow;
-    static const T ks = pow(boost::math::tools::epsilon<T>(), T(0.6));  // cel_log's switch
-    ks_ = ks;
+    g2_ = 2 * coef_ / pi<T>();
   }
 
   // slip int_0^dl b(u) du (dl >= 0)
   T slip(const T &dl) const {
+    using std::exp;
+    using std::expm1;
     if (!(dl > 0)) return T(0);
     const T tmax = tau_of(dl);
-    const T em1T = expm1_neg(tmax);
-    return integrate(tmax, [&](const T &sig) { return F(dl, tmax, em1T, sig); });
+    const T em1T = expm1(-tmax);
+    const T eT = exp(-tmax);  // not 1 + em1T: that cancels for large T
+    const T dlb = dl / (em1T * em1T);
+    return integrate(tmax, [&](const T &sig, const T &esig, T &u, T &v) {
+      uv(dlb, tmax, eT, sig, esig, u, v);
+      return T(1);
+    });
   }
 
   // int_0^L Pi(L - u) b(u) du, L the length of this zone
   T energy(const T &L) const {
+    using std::exp;
     using std::expm1;
     if (!(L > 0)) return T(0);
     const T tmax = tau_of(L);
-    const T em1T = expm1_neg(tmax);
+    const T em1T = expm1(-tmax), em2T = expm1(-2 * tmax);
+    const T eT = exp(-tmax), e2T = exp(-2 * tmax);
+    const T dlb = L / (em1T * em1T);
     return integrate(
         tmax,
-        [&](const T &sig) {
-          // c = L - u = e sinh(sig/2) sinh(T - sig/2), no cancellation
-          const T c = L * expm1(-sig) * expm1(sig - 2 * tmax) / (em1T * em1T);
-          return pressure_tail(c) * F(L, tmax, em1T, sig);
+        [&](const T &sig, const T &esig, T &u, T &v) {
+          // c = L - u = L expm1(-sig) expm1(sig - 2T) / expm1(-T)^2 and
+          // em = expm1(-tau), tau = T - sig: below sig = 1 all from
+          // E1 = expm1(-sig) (the differences (expm1(-T) - E1)/(1 + E1) lose
+          // digits only where tau -> 0, whose nodes carry ~tau^2 of the
+          // integral); beyond it from e^-sig (then 2T - sig >= T >= 1)
+          T E1, es, em, b;
+          if (sig < 1) {
+            E1 = expm1(-sig);
+            es = 1 + E1;
+            em = (em1T - E1) / es;
+            b = (em2T - E1) / es;
+          } else {
+            es = esig;
+            E1 = es - 1;
+            em = eT / es - 1;
+            b = e2T / es - 1;
+          }
+          const T base = dlb * es;
+          u = base * em * em;
+          v = base * (2 + em) * (2 + em);
+          return hertz_pressure_tail(dlb * E1 * b);
         },
         true);
   }
 
   // b(u) (as opposite_G_state and hertz_solution::bhat), u > 0
-  T bhat(const T &u) const { return point(u, u + st_.e); }
+  T bhat(const T &u) const {
+    using std::sqrt;
+    const T v = u + st_.e;
+    return -2 * sqrt(u * v) * gfac(u, v);
+  }
 
  private:
   opposite_state<T> st_;
-  T le_, op1_, op2_, Q_, kc_, lkc_, rj_scale_, RJc_, coef_, ks_;
+  T le_, op1_, op2_, Q_, kc_, lkc_, rj_scale_, coef_, two_op1_, g2_, ks_, lks_;
+  // the AGM of the modulus in cel's loop (elliptic.hpp), which does not depend
+  // on p: every cel(kc, p, 0, 1) of the zone runs only its p-stream on it
+  static constexpr int agm_max = 40;
+  T agm_e_[agm_max];
+  T agm_em_ = 1;
+  int agm_n_ = 0;  // 0: not available (the generic cel_log is used)
 
-  static T expm1_neg(const T &x) {
-    using std::expm1;
-    return expm1(-x);
+  void agm_init(T kc) {
+    using std::abs;
+    using std::sqrt;
+    const T ca = sqrt(boost::math::tools::epsilon<T>());
+    T e = kc, em = T(1);
+    for (int i = 0; i < agm_max; ++i) {
+      agm_e_[i] = e;
+      const T g = em;
+      em += kc;
+      if (abs(g - kc) <= g * ca) {
+        agm_n_ = i + 1;
+        agm_em_ = em;
+        return;
+      }
+      kc = sqrt(e);
+      kc += kc;
+      e = kc * em;
+    }
+    agm_n_ = 0;
   }
+  // cel(kc_seq, p, 0, 1) by the p-stream of cel's loop on the stored AGM (one
+  // division per step: the reciprocal of p serves both quotients)
+  T cel_stream(const T &px) const {
+    using std::sqrt;
+    T p = sqrt(px);
+    T ip = 1 / p;
+    T a = 0, b = ip;
+    for (int i = 0; i < agm_n_; ++i) {
+      const T f = a;
+      a += b * ip;
+      const T g = agm_e_[i] * ip;
+      b += f * g;
+      b += b;
+      p += g;
+      ip = 1 / p;
+    }
+    return boost::math::constants::half_pi<T>() * (b + a * agm_em_) * ip / (agm_em_ * (agm_em_ * ip + 1));
+  }
+  // cel(kc, p, 0, 1) through cel_log's switch (ks min(1, sqrt p))
+  T cel_fast(const T &p) const {
+    using std::sqrt;
+    if (agm_n_ > 0) {
+      if (p >= 1) {
+        const T r = cel_stream(p);
+        // below the switch the stream ran on ks: cel_log's continuation
+        return kc_ > ks_ ? r : T(r + (lks_ - lkc_) / p);
+      }
+      if (kc_ > ks_ && kc_ > ks_ * sqrt(p)) return cel_stream(p);
+    }
+    return cel_log(kc_, lkc_, p, T(0), T(1));
+  }
+
   // tau at distance dl: sinh^2(tau/2) = dl/e
   T tau_of(const T &dl) const {
     using std::asinh;
@@ -106,42 +225,88 @@ template <class T> class opposite_zone_integrals {
     // 2 asinh(z) = 2 ln(2z) + O(1/z^2), z^2 = dl/e > 1e150
     return log(4 * dl) - le_;
   }
-  // b at u with v = u + e (both to full relative accuracy)
-  T point(const T &u, const T &v) const {
-    using std::sqrt;
-    const T omx = st_.d1 + v;  // 1 - x
-    const T opx = st_.d2 - u;  // 1 + x
-    const T px = 2 * v / (op1_ * omx);
-    const T RJq = rj_scale_ * cel_fast(px);
-    const T G = coef_ * (RJc_ + opx / omx * RJq);
-    return -2 * sqrt(u * v) * (1 + 2 * G / pi<T>());
+  // 1 + 2 G(u)/pi at u with v = u + e (both to full relative accuracy):
+  // b(u) = -2 sqrt(u v) gfac(u, v)
+  T gfac(const T &u, const T &v) const {
+    T g;
+    gfac_batch(1, &u, &v, &g);
+    return g;
   }
-  // cel(kc, p, 0, 1) through cel_log's switch, its threshold precomputed
-  T cel_fast(const T &p) const {
-    using std::min;
-    using std::sqrt;
-    if (kc_ > ks_ && (p >= 1 || kc_ > ks_ * sqrt(p))) return cel(kc_, p, T(0), T(1));
-    return cel_log(kc_, lkc_, p, T(0), T(1));
+  // gfac at n <= 16 points at once: the p-streams of their cel run side by
+  // side (independent chains of divisions, which the processor overlaps)
+  // (The constant R_J(0,P,Q,2(1+beta2)) of G, cel(kc, 2/op1, 0, 1), rides
+  // along as one more stream.)
+  void gfac_batch(int n, const T *u, const T *v, T *g) const {
+    T px[17], r[16], c[17];
+    for (int k = 0; k < n; ++k) {
+      const T iomx = 1 / (st_.d1 + v[k]);  // 1/(1 - x)
+      px[k] = two_op1_ * v[k] * iomx;
+      r[k] = (st_.d2 - u[k]) * iomx;  // (1 + x)/(1 - x)
+    }
+    px[n] = two_op1_;
+    cel_batch(n + 1, px, c);
+    const T RJc = rj_scale_ * c[n];
+    for (int k = 0; k < n; ++k) g[k] = 1 + g2_ * (RJc + r[k] * rj_scale_ * c[k]);
   }
-  // The integrand R^2 g = R b at tau = T - sig, T = tau(dl): u and v = u + e
-  // relative to dl (sinh^2(T/2) = dl/e), so that neither the rounding of T
-  // (absolute eps T when the stick zone is tiny) nor an underflowing e
-  // enters them:
+  // cel(kc, p_k, 0, 1) for n <= 17 values p_k with cel_log's switch
+  // (ks min(1, sqrt p)): by the p-streams on the stored AGM (on kc, or on ks
+  // with cel_log's continuation below it) where that applies, side by side.
+  void cel_batch(int n, const T *px, T *c) const {
+    using std::sqrt;
+    T p[17], ip[17], a[17], b[17];
+    if (agm_n_ > 0) {
+      for (int k = 0; k < n; ++k) {
+        p[k] = sqrt(px[k]);
+        ip[k] = 1 / p[k];
+        a[k] = 0;
+        b[k] = ip[k];
+      }
+      for (int i = 0; i < agm_n_; ++i) {
+        const T E = agm_e_[i];
+        for (int k = 0; k < n; ++k) {
+          const T f = a[k];
+          a[k] += b[k] * ip[k];
+          const T gg = E * ip[k];
+          b[k] += f * gg;
+          b[k] += b[k];
+          p[k] += gg;
+          ip[k] = 1 / p[k];
+        }
+      }
+    }
+    const T em = agm_em_, hp = boost::math::constants::half_pi<T>();
+    for (int k = 0; k < n; ++k) {
+      if (agm_n_ > 0 && (px[k] >= 1 || (kc_ > ks_ && kc_ > ks_ * sqrt(px[k])))) {
+        c[k] = hp * (b[k] + a[k] * em) * ip[k] / (em * (em * ip[k] + 1));
+        if (!(kc_ > ks_)) c[k] += (lks_ - lkc_) / px[k];
+      } else {
+        c[k] = cel_log(kc_, lkc_, px[k], T(0), T(1));
+      }
+    }
+  }
+  // u and v = u + e at tau = T - sig, T = tau(dl), relative to dl
+  // (sinh^2(T/2) = dl/e), so that neither the rounding of T (absolute eps T
+  // when the stick zone is tiny) nor an underflowing e enters them:
   //   u = dl e^(-sig) (expm1(-tau)/expm1(-T))^2, v = dl e^(-sig) ((2 + expm1(-tau))/expm1(-T))^2
-  T F(const T &dl, const T &tmax, const T &em1T, const T &sig) const {
-    using std::exp;
+  // dlb = dl/expm1(-T)^2, eT = e^-T, esig = e^-sig. expm1(-tau) by expm1
+  // below tau = 1, beyond it as e^-T/e^-sig - 1 (within ~1.2 ulp there).
+  // The integrand R^2 g = R b there is -2 u v gfac(u, v).
+  // Below tau = 1 e^-sig = e^-T / (1 + expm1(-tau)) (esig is not read there).
+  void uv(const T &dlb, const T &tmax, const T &eT, const T &sig, const T &esig, T &u, T &v) const {
     using std::expm1;
-    using std::sqrt;
     const T tau = tmax - sig;
-    const T em = expm1(-tau);
-    const T base = dl * exp(-sig) / (em1T * em1T);
-    const T u = base * em * em, v = base * (2 + em) * (2 + em);
-    // far below the point (sig beyond ~700) u and v underflow: what is left
-    // there is below e^(-40) of the total (see integrate)
-    if (!(v > 0)) return T(0);
-    return sqrt(u * v) * point(u, v);
+    T em, base;
+    if (tau < 1) {
+      em = expm1(-tau);
+      base = dlb * (eT / (1 + em));
+    } else {
+      em = eT / esig - 1;
+      base = dlb * esig;
+    }
+    u = base * em * em;
+    v = base * (2 + em) * (2 + em);
   }
-  // int_0^tmax f(sig) dsig (sig = T - tau: the distance from the point in
+  // int_0^tmax f(sig, e^-sig) dsig (sig = T - tau: the distance from the point in
   // tau) on fixed panels from sig = 0. The integrand decays like e^(-sig)
   // away from the point (u = dl e^(-sig) for large T), so the panels may
   // lengthen as the part they carry shrinks; each keeps rho^(-2n) e^(-sig_a)
@@ -159,7 +324,9 @@ template <class T> class opposite_zone_integrals {
     for (const piece &p : pieces) {
       const T b = tmax < T(p.end) ? tmax : T(p.end);
       if (last_edge && a == 0) sum += edge_panel(a, b, f);
-      else sum += panel(a, b, b - a <= T(0.25) ? 6 : b - a <= T(0.75) ? 8 : b - a <= T(1.25) ? 10 : p.n, f);
+      else
+        sum += panel(a, b, b - a <= T(0.25) ? 6 : b - a <= T(0.75) ? 8 : b - a <= T(1.25) ? 10 : p.n, f,
+                     last_edge || tmax - a >= 1);
       a = b;
       if (!(a < tmax)) return sum;
     }
@@ -167,12 +334,44 @@ template <class T> class opposite_zone_integrals {
     // nothing, where u, v would underflow
     return sum + panel(a, tmax < T(80) ? tmax : T(80), 12, f);
   }
-  template <class Fn> static T panel(const T &a, const T &b, int n, const Fn &f) {
+  // The sum of w_k f(sig_k) (-2 u v gfac) over nodes sig_k: f gives the
+  // factor and u, v at a node; far below the point (sig beyond ~700) u and v
+  // underflow, and what is left there is below e^(-40) of the total (see
+  // integrate): such nodes count zero.
+  template <class Fn> T node_sum(int n, const T *sig, const T *esig, const T *w, const Fn &f) const {
+    T u[16], v[16], m[16], g[16];
+    for (int k = 0; k < n; ++k) {
+      m[k] = f(sig[k], esig[k], u[k], v[k]);
+      if (!(v[k] > 0)) {
+        m[k] = 0;
+        u[k] = v[k] = 1;
+      }
+    }
+    gfac_batch(n, u, v, g);
+    T s = 0;
+    for (int k = 0; k < n; ++k)
+      if (m[k] != 0) s += w[k] * m[k] * (-2 * (u[k] * v[k]) * g[k]);
+    return s;
+  }
+  // Gauss-Legendre on [a, b]: the nodes come in pairs m -+ h x, whose
+  // exponentials are e^-m times e^(+-h x), one exp per pair
+  // need_esig = false: the integrand does not read e^-sig on this panel
+  template <class Fn> T panel(const T &a, const T &b, int n, const Fn &f, bool need_esig = true) const {
+    using std::exp;
     const auto &r = rule(n);
     const T h = (b - a) / 2, m = (a + b) / 2;
-    T s = 0;
-    for (int i = 0; i < n; ++i) s += r.w[i] * f(m + h * r.x[i]);
-    return s * h;
+    const T em = exp(-m);
+    T sig[16], esig[16], w[16];
+    for (int i = 0; i < n / 2; ++i) {
+      const T hx = h * r.x[n - 1 - i];  // > 0
+      const T ex = need_esig ? T(exp(hx)) : T(1);
+      sig[2 * i] = m - hx;
+      esig[2 * i] = em * ex;
+      sig[2 * i + 1] = m + hx;
+      esig[2 * i + 1] = em / ex;
+      w[2 * i] = w[2 * i + 1] = r.w[i];
+    }
+    return node_sum(n, sig, esig, w, f) * h;
   }
   // int_0^b f(sig) dsig with the contact edge at sig = 0, where c = L - u
   // = L (1 - e^-sig)(1 - e^(sig - 2T))/(1 - e^-T)^2 vanishes and Pi(c) ~ c^(3/2):
@@ -180,19 +379,33 @@ template <class T> class opposite_zone_integrals {
   // b = T it also makes the mirror branch point sig = 2T (c = 0 again) regular
   // (sig (2T - sig) = T^2 sin^2 phi), which the map sig = b s^2 would put
   // at s = sqrt(2), 0.41 beyond the rule's end (measured: 4e-14 with 12 nodes).
-  template <class Fn> static T edge_panel(const T &a, const T &b, const Fn &f) {
+  template <class Fn> T edge_panel(const T &a, const T &b, const Fn &f) const {
     using std::cos;
+    using std::exp;
     using std::sin;
     const T L = b - a;
-    const auto &r = rule(16);
     const T h = pi<T>() / 4;
-    T s = 0;
+    // the rule in phi: 2 sin^2(phi/2) and w sin(phi) at its nodes
+    struct edge_rule {
+      T s2[16], w[16];
+      edge_rule() {
+        const auto &r = rule(16);
+        const T hh = pi<T>() / 4;
+        for (int i = 0; i < 16; ++i) {
+          const T phi = hh * (1 + r.x[i]);
+          const T sh = sin(phi / 2);
+          s2[i] = 2 * sh * sh;
+          w[i] = r.w[i] * sin(phi);
+        }
+      }
+    };
+    static const edge_rule er;
+    T sig[16], esig[16];
     for (int i = 0; i < 16; ++i) {
-      const T phi = h * (1 + r.x[i]);
-      const T sh = sin(phi / 2);
-      s += r.w[i] * sin(phi) * f(a + 2 * L * sh * sh);
+      sig[i] = a + L * er.s2[i];
+      esig[i] = sig[i] < 1 ? T(0) : T(exp(-sig[i]));  // read only beyond sig = 1
     }
-    return s * L * h;
+    return node_sum(16, sig, esig, er.w, f) * L * h;
   }
   static const gl_rule<T> &rule(int n) {
     // immutable after their thread-safe initialisation (the rule cache's shared rules)

@@ -50,8 +50,8 @@ struct newton_outcome {
 //    is at its rounding floor and did not grow;
 //  - a trust region of 4 in y = ln e (the problem caps x);
 //  - up to 40 halvings of the step;
-//  - the noise floor: if no halving is accepted, the current state is the
-//    solution when its residual is at the floor; once at the floor, a step
+//  - the noise floor: if no halving is accepted, or the Jacobian is singular,
+//    the current state is the solution when its residual is at the floor; once at the floor, a step
 //    that stopped shrinking quadratically (at least 1/4 of the previous one)
 //    ends the iteration (a weakly determined length is then known to the
 //    accuracy the residual allows).
@@ -77,7 +77,11 @@ template <class P> newton_outcome damped_newton(P &p, typename P::state &st, typ
   for (int it = 1; it <= max_iterations; ++it) {
     const jacobian2<T> J = p.jacobian(st, r);
     const auto x = solve2x2(J.a11, J.a12, J.a21, J.a22, r.F1, r.F2);
-    if (!(x.det != 0) || !(abs(x.det) < boost::math::tools::max_value<T>())) return {false, it};
+    // a singular Jacobian: no step; the state is the solution if its residual
+    // is at the rounding floor (as when no damped step decreases it, below;
+    // seen with a stick zone below the range of T, where the columns in c and
+    // ln e are parallel to rounding), else a failure
+    if (!(x.det != 0) || !(abs(x.det) < boost::math::tools::max_value<T>())) return {norm <= floor, it};
     T dx = -x.x1, dy = -x.x2;
     auto level = [&](const typename P::eval &f) {
       const auto z = solve2x2(J.a11, J.a12, J.a21, J.a22, x.det, f.F1, f.F2);
