@@ -519,12 +519,14 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
 namespace detail {
 // local exponent of p at an edge from two distances d1 < d2: p ~ d^alpha.
 // The declared edge behaviour is alpha = 1/2; accepted in [1/4, 3/4].
-template <class T> void check_edge_exponent(const T &p1, const T &d1, const T &p2, const T &d2) {
+// not_sqrt: the message for an exponent outside that range.
+template <class T>
+void check_edge_exponent(const T &p1, const T &d1, const T &p2, const T &d2,
+                         const char *not_sqrt = "pressure must vanish like sqrt(distance) at both contact edges") {
   using std::log;
   if (!(p1 > 0) || !(p2 > 0)) throw error(status::bad_geometry, "pressure must be positive inside the contact");
   const T alpha = log(p2 / p1) / log(d2 / d1);
-  if (!(alpha >= T(0.25) && alpha <= T(0.75)))
-    throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
+  if (!(alpha >= T(0.25) && alpha <= T(0.75))) throw error(status::bad_geometry, not_sqrt);
 }
 }  // namespace detail
 
@@ -539,36 +541,56 @@ template <class T> void check_edge_exponent(const T &p1, const T &d1, const T &p
 // (local exponent from the two outermost interior samples at each edge).
 template <class T> class sampled_pressure final : public pressure_model<T> {
  public:
-  sampled_pressure(const std::vector<T> &xs, const std::vector<T> &ps, const T &a) : a_(a) {
+  // where (if not null) receives, when a rule is broken, the index of the
+  // sample the rule is about (xs.size(): the samples as a whole), so that a
+  // caller can name it (the C ABI's hs_check_samples, the CLI's file line).
+  sampled_pressure(const std::vector<T> &xs, const std::vector<T> &ps, const T &a, std::size_t *where = nullptr)
+      : a_(a) {
     using std::abs;
     using std::sqrt;
-    if (!(a > 0)) throw error(status::bad_size, "sampled pressure: a must be > 0");
-    if (xs.size() != ps.size()) throw error(status::bad_geometry, "sampled pressure: size mismatch");
+    std::size_t at = xs.size();
+    auto fail = [&](std::size_t i, status s, const char *msg) {
+      if (where) *where = i;
+      throw error(s, msg);
+    };
+    if (!(a > 0)) fail(at, status::bad_size, "sampled pressure: a must be > 0");
+    if (xs.size() != ps.size()) fail(at, status::bad_geometry, "sampled pressure: size mismatch");
     T pmax = 0;
     for (std::size_t i = 0; i < xs.size(); ++i) {
-      if (!(ps[i] >= 0)) throw error(status::bad_geometry, "pressure must not be negative");
-      if (i > 0 && !(xs[i] > xs[i - 1])) throw error(status::bad_geometry, "sample abscissae must increase");
-      if (!(xs[i] >= -a && xs[i] <= a)) throw error(status::bad_geometry, "sample outside the contact");
+      if (!(ps[i] >= 0)) fail(i, status::bad_geometry, "pressure must not be negative");
+      if (i > 0 && !(xs[i] > xs[i - 1])) fail(i, status::bad_geometry, "sample abscissae must increase");
+      if (!(xs[i] >= -a && xs[i] <= a)) fail(i, status::bad_geometry, "sample outside the contact");
       pmax = std::max(pmax, ps[i]);
     }
+    std::vector<std::size_t> index;  // input index of each interior sample
     for (std::size_t i = 0; i < xs.size(); ++i) {
       const T dm = a + xs[i], dp = a - xs[i];
       if (dm == 0 || dp == 0) {
-        if (ps[i] > 64 * eps<T>() * pmax)
-          throw error(status::bad_geometry, "pressure must vanish at the contact edges");
+        if (ps[i] > 64 * eps<T>() * pmax) fail(i, status::bad_geometry, "pressure must vanish at the contact edges");
         continue;
       }
-      if (!(ps[i] > 0)) throw error(status::bad_geometry, "pressure must be positive inside the contact");
+      if (!(ps[i] > 0)) fail(i, status::bad_geometry, "pressure must be positive inside the contact");
       x_.push_back(xs[i] / a);
       f_.push_back(ps[i] / sqrt(dm * dp));
       praw_.push_back(ps[i]);
       dm_.push_back(dm / a);
       dp_.push_back(dp / a);
+      index.push_back(i);
     }
     const std::size_t n = x_.size();
-    if (n < 4) throw error(status::bad_geometry, "sampled pressure: need at least 4 interior samples");
-    detail::check_edge_exponent(praw_[0], dm_[0], praw_[1], dm_[1]);
-    detail::check_edge_exponent(praw_[n - 1], dp_[n - 1], praw_[n - 2], dp_[n - 2]);
+    if (n < 4) fail(at, status::bad_geometry, "sampled pressure: need at least 4 interior samples");
+    try {
+      at = index[0];
+      detail::check_edge_exponent(praw_[0], dm_[0], praw_[1], dm_[1],
+                                  "the two samples nearest the edge x = -a do not vanish like sqrt(distance) "
+                                  "(local exponent of p outside [1/4, 3/4])");
+      at = index[n - 1];
+      detail::check_edge_exponent(praw_[n - 1], dp_[n - 1], praw_[n - 2], dp_[n - 2],
+                                  "the two samples nearest the edge x = +a do not vanish like sqrt(distance) "
+                                  "(local exponent of p outside [1/4, 3/4])");
+    } catch (const error &e) {
+      fail(at, e.code(), e.what());
+    }
     // PCHIP slopes
     std::vector<T> h(n - 1), del(n - 1);
     for (std::size_t i = 0; i + 1 < n; ++i) {
@@ -591,8 +613,14 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
     d_[0] = endslope(h[0], h[1], del[0], del[1]);
     d_[n - 1] = endslope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
     // edge values of phi by linear extrapolation must stay positive
-    if (!(f_[0] - d_[0] * dm_[0] > 0) || !(f_[n - 1] + d_[n - 1] * dp_[n - 1] > 0))
-      throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
+    if (!(f_[0] - d_[0] * dm_[0] > 0))
+      fail(index[0], status::bad_geometry,
+           "the samples nearest the edge x = -a extrapolate to a negative p/sqrt(a^2 - x^2) at the edge "
+           "(p must vanish like sqrt(distance) there)");
+    if (!(f_[n - 1] + d_[n - 1] * dp_[n - 1] > 0))
+      fail(index[n - 1], status::bad_geometry,
+           "the samples nearest the edge x = +a extrapolate to a negative p/sqrt(a^2 - x^2) at the edge "
+           "(p must vanish like sqrt(distance) there)");
     // a panel end at every knot (phi is only C^1 there), built once: the
     // quadratures ask for the list per Cauchy integral (issue 13 item 4)
     for (const T &x : x_) bps_.push_back({x, false});
