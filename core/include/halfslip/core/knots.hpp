@@ -92,6 +92,16 @@ template <class T> class knot_quadrature {
     return hermite(s, (t - X_[s]) / h, d);
   }
 
+  // |phi'' jump| (unscaled) at the knot X_s between segments s - 1 and s (0 < s < S)
+  T jump2(std::size_t s) const {
+    using std::abs;
+    const T hl = X_[s] - X_[s - 1], hr = X_[s + 1] - X_[s];
+    // Hermite second derivatives at the right end of s - 1 and the left end of s
+    const T left = (6 * (F_[s - 1] - F_[s]) / hl + 2 * D_[s - 1] + 4 * D_[s]) / hl;
+    const T right = (6 * (F_[s + 1] - F_[s]) / hr - 4 * D_[s] - 2 * D_[s + 1]) / hr;
+    return abs(right - left);
+  }
+
   // int p_hat over the length c from the edge on `side` (+1: x = 1, -1: x = -1),
   // scaled: the nearer edge's cumulative sum plus one partial segment, whose
   // angle comes from c itself (relative accuracy for small c)
@@ -321,6 +331,22 @@ template <class T> struct knot_view {
   const knot_quadrature<T> *q = nullptr;
   bool mirror = false;
   explicit operator bool() const { return q != nullptr; }
+  std::size_t segments() const { return q->segments(); }
+  // end s of the segments in the view's coordinates (s = 0: -1, s = S: 1)
+  T end(std::size_t s) const { return mirror ? T(-q->end(q->segments() - s)) : q->end(s); }
+  // the segment holding t
+  std::size_t segment(const T &t) const {
+    if (!mirror) return q->segment(t);
+    const std::size_t S = q->segments();
+    return S - 1 - q->segment(T(-t));
+  }
+  // |phi'' jump| (scaled) at the view's knot between segments s - 1 and s (0 < s < S)
+  T jump2(std::size_t s) const { return q->scale() * q->jump2(mirror ? q->segments() - s : s); }
+  // phi (scaled) on segment s of the view at t
+  T phi(std::size_t s, const T &t) const {
+    if (!mirror) return q->scale() * q->phi(s, t);
+    return q->scale() * q->phi(q->segments() - 1 - s, T(-t));
+  }
   template <class Adm, class Emit, class Leaf>
   void cover(const T &A, const T &B, const Adm &adm, const Emit &emit, const Leaf &leaf) const {
     if (!mirror) {
