@@ -266,6 +266,38 @@ int main(void) {
     CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
     g.n_samples = 3;
     CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);
+    {
+      /* hs_check_samples names the sample a broken rule is about (issue 13 item 5) */
+      int verdict = -1;
+      size_t at = 99;
+      char why[128];
+      CHECK(hs_check_samples(41, xs, ps, 1.0, &verdict, &at, why, sizeof why) == HS_OK);
+      CHECK(verdict == HS_ERR_BAD_GEOMETRY && at == 20 && strstr(why, "negative") != NULL);
+      ps[20] = hertz_p(xs[20], &unit);
+      CHECK(hs_check_samples(41, xs, ps, 1.0, &verdict, &at, why, sizeof why) == HS_OK);
+      CHECK(verdict == HS_OK && at == 41 && why[0] == '\0');
+      /* a pressure vanishing linearly at x = -a: about the sample nearest that edge (index 1) */
+      ps[1] = 1 + xs[1];
+      ps[2] = 1 + xs[2];
+      CHECK(hs_check_samples(41, xs, ps, 1.0, &verdict, &at, why, sizeof why) == HS_OK);
+      CHECK(verdict == HS_ERR_BAD_GEOMETRY && at == 1 && strstr(why, "edge x = -a") != NULL);
+      CHECK(hs_check_samples(41, xs, ps, 1.0, &verdict, NULL, why, 8) == HS_OK && strlen(why) == 7);
+      ps[1] = hertz_p(xs[1], &unit);
+      ps[2] = hertz_p(xs[2], &unit);
+      ps[7] = NAN;
+      CHECK(hs_check_samples(41, xs, ps, 1.0, &verdict, &at, NULL, 0) == HS_OK);
+      CHECK(verdict == HS_ERR_NOT_FINITE && at == 7);
+      ps[7] = hertz_p(xs[7], &unit);
+      CHECK(hs_check_samples(41, xs, ps, 0.5, &verdict, &at, why, sizeof why) == HS_OK);
+      CHECK(verdict == HS_ERR_BAD_GEOMETRY && at == 0 && strstr(why, "outside") != NULL);
+      CHECK(hs_check_samples(41, xs, ps, -1.0, &verdict, &at, why, sizeof why) == HS_OK);
+      CHECK(verdict == HS_ERR_BAD_SIZE && at == 41);
+      CHECK(hs_check_samples(5, xs, ps, 1.0, &verdict, &at, why, sizeof why) == HS_OK);
+      CHECK(verdict == HS_ERR_BAD_GEOMETRY && at == 5);
+      CHECK(hs_check_samples(41, xs, NULL, 1.0, &verdict, &at, why, sizeof why) == HS_ERR_NULL_POINTER);
+      CHECK(hs_check_samples(41, xs, ps, 1.0, NULL, &at, why, sizeof why) == HS_ERR_NULL_POINTER);
+      ps[20] = -1;
+    }
     g.kind = HS_GEOMETRY_CALLBACK;
     g.pressure = negative_p;
     CHECK(hs_solve_geometry(&sc, &g, NULL, &sol) == HS_ERR_BAD_GEOMETRY);

@@ -110,6 +110,15 @@ rej "x p\n-0.95 0.2\nfoo 0.3\n$six" "line 3: x 'foo' is not a number"
 rej "-0.95 0.2kPa\n$six" "line 1: p '0.2kPa' is not a number"
 rej "-1 0.5\n$six" "line 1: p = 0.5 at the contact edge x = -1"
 rej "-0.95 0\n$six" "line 1: p = 0 inside the contact"
+# the library's own rules name the sample too (issue 13 item 5: was "unknown geometry or invalid
+# geometry parameter"): a pressure vanishing linearly at the edges, a pressure not vanishing
+rej "# triangle\n-1 0\n-0.9 0.1\n-0.5 0.5\n0 1\n0.5 0.5\n0.9 0.1\n1 0\n" "line 3: x = -0.9, p = 0.1: the two samples nearest the edge x = -a do not vanish like sqrt(distance)"
+rej "-0.9 0.44\n-0.5 0.87\n0 1\n0.5 0.87\n0.9 0.44\n0.99 0.44\n" "line 6: x = 0.99, p = 0.44: the two samples nearest the edge x = +a do not vanish like sqrt(distance)"
+# lines longer than 511 bytes (and than the 4096-byte read chunk) keep the line count (issue 13 item 5)
+long=$(printf '%0600d' 0)
+rej "# $long\n$six-0.2 0.9\n" "line 7: x = -0.2 does not increase (previous sample, line 6"
+rej "-0.95 0.31$(printf '%5000s' '')\n$six""0.95 abc\n" "line 7: p 'abc' is not a number"
+rej "x p # $(printf '%0700d' 0)\n-0.95 0.31 # $(printf '%09000d' 0)\n$six-0.2 0.9\n" "line 8: x = -0.2 does not increase (previous sample, line 7"
 "$cli" solve --help | grep -q "first line may be a header" && ok || ko "--help documents the pressure file"
 rm -f "$tmp"
 for bad in "--geometry flat-rounded --flat-over-a 1" "--geometry power-law --exponent 0.5" "--geometry samples" "--geometry samples --pressure-file /nonexistent" "--exponent 3" "--geometry samples --digits 20" "--geometry flat-rounded --digits 171" "--geometry power-law --exponent 1 --digits 20" "--geometry flat-rounded --digits 20 --P 1000 --R 0.01 --E-star 1 --f 0.5 --Q 1 --sigma 0" "--exponent 3 --digits 20"; do

@@ -21,6 +21,10 @@
 //   add_semi_ellipse            (fields.hpp: real arithmetic on the     pi amp c (X - nu), pi amp (nu/X - 1)
 //                                real axis for |nu| > 1, complex         with X = +-sqrt(nu^2 - 1) or
 //                                otherwise)                              i sqrt(1 - nu^2), at 50 digits
+//   sampled_pressure knot path  (pressure.hpp: from knot_tree_min = 256  the Hertz closed forms (long double)
+//                                interior samples the knot quadrature,   for samples of a Hertz pressure
+//                                knots.hpp, below a panel end at every
+//                                sample; issue 13 item 4)
 // Errors are measured in units of eps of the type under test. Every bound is
 // justified where it is set. Each switch was checked to fail when the branch on
 // one side is broken (see the commit message of this file).
@@ -37,6 +41,8 @@
 
 #include "halfslip/core/elliptic.hpp"
 #include "halfslip/core/fields.hpp"
+#include "halfslip/core/general.hpp"
+#include "halfslip/core/hertz.hpp"
 #include "halfslip/core/numerics.hpp"
 #include "halfslip/core/pressure.hpp"
 #include "testing.hpp"
@@ -489,4 +495,46 @@ TEST_CASE_TEMPLATE("switch: add_semi_ellipse on the real axis at |nu| = 1 (real 
     }
   }
   MESSAGE("worst relative error in eps: " << worst);
+}
+
+TEST_CASE("switch: sampled pressure at knot_tree_min interior samples (panels below, knot quadrature from there)") {
+  // Hertz samples (phi constant: the interpolant is exact), 254 .. 258 interior
+  // samples, and the samples at the switch solved on both paths (tree_min
+  // moved): every result against the long-double Hertz closed forms. Bounds:
+  // zones 450 eps (test_general.cpp's sampled-Hertz bound: the solver's
+  // residual tolerance), energies eps^(3/4) relative (the energies' order
+  // control). Observed: zones within 9 eps, energies within 3e-14, on both
+  // sides; the two paths differ by a few ulps (the normalisation, the
+  // quadrature of the zone integrals).
+  const std::size_t K = core::sampled_pressure<double>::knot_tree_min;
+  const double e34 = std::pow(eps<double>(), 0.75);
+  core::hertz_scene<long double> hs;
+  hs.q = 0.3L;
+  hs.s = 1.0L;
+  const auto h = core::solve_hertz(hs);
+  for (std::size_t m = K - 2; m <= K + 2; ++m) {
+    std::vector<double> xs, ps;
+    const std::size_t n = m + 1;  // m interior samples and the two edges
+    for (std::size_t i = 0; i <= n; ++i) {
+      const double x = i == 0 ? -1.0 : (i == n ? 1.0 : -std::cos(M_PI * double(i) / double(n)));
+      xs.push_back(x);
+      ps.push_back(i == 0 || i == n ? 0.0 : std::sqrt((1 - x) * (1 + x)));
+    }
+    for (std::size_t tree_min : {K, m, m + 1}) {
+      core::sampled_pressure<double> sp(xs, ps, 1.0, nullptr, tree_min);
+      CAPTURE(m);
+      CAPTURE(tree_min);
+      CHECK(bool(sp.knots()) == (m >= tree_min));
+      core::general_scene<double> sc;
+      sc.p0 = sp.p0();
+      sc.q = 0.3;
+      sc.s = 1.0;
+      const auto g = core::solve_general<double>(sp, sc);
+      CHECK(std::abs(g.d1() - double(h.delta1)) < 450 * eps<double>());
+      CHECK(std::abs(g.d2() - double(h.delta2)) < 450 * eps<double>());
+      const double s2 = sp.p0() * sp.p0();
+      CHECK(std::abs(g.energy(1) / s2 - double(h.energy(1))) <= e34 * double(h.energy(1)));
+      CHECK(std::abs(g.energy(2) / s2 - double(h.energy(2))) <= e34 * double(h.energy(2)));
+    }
+  }
 }

@@ -875,6 +875,17 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
     if (geometry == "samples") {
       if (!(scene.a > 0)) die("bad value for --a: must be > 0");
       check_samples(samp, scene.a);
+      // the library's remaining rules (the sqrt edge behaviour), with the sample they are about
+      int verdict = HS_OK;
+      size_t at = 0;
+      char why[256];
+      check(hs_check_samples(samp.x.size(), samp.x.data(), samp.p.data(), scene.a, &verdict, &at, why, sizeof why),
+            "samples");
+      if (verdict != HS_OK) {
+        if (at < samp.x.size())
+          bad_sample(samp, samp.line[at], "x = " + g10(samp.x[at]) + ", p = " + g10(samp.p[at]) + ": " + why);
+        bad_sample(samp, samp.last_line, why);
+      }
     }
   }
 }

@@ -3,6 +3,7 @@
 // ABI, every failure becomes an HS_ERR_* status, outputs are untouched on error.
 #include "halfslip/halfslip.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -137,6 +138,23 @@ template <class Fn> int eval_points(const hs_solution *sol, size_t n, const doub
 
 namespace hs { namespace capi {
 
+// The sampled pressure of n samples (x, p) on a contact of half-width a, with
+// the rules of HS_GEOMETRY_SAMPLES; where (if not null) receives the index of
+// the sample a broken rule is about (n: the samples as a whole).
+std::shared_ptr<const core::sampled_pressure<double>> samples_model(size_t n, const double *x, const double *p,
+                                                                    double a, size_t *where) {
+  if (where) *where = n;
+  require(x != nullptr && p != nullptr, core::status::null_pointer, "sample arrays are NULL");
+  require(n >= 6 && n <= 10000000, core::status::bad_geometry, "need at least 6 pressure samples");
+  for (size_t i = 0; i < n; ++i) {
+    if (std::isfinite(x[i]) && std::isfinite(p[i])) continue;
+    if (where) *where = i;
+    throw core::error(core::status::not_finite, "sample is not finite");
+  }
+  return std::make_shared<core::sampled_pressure<double>>(std::vector<double>(x, x + n), std::vector<double>(p, p + n),
+                                                          a, where);
+}
+
 // The pressure model of a geometry (not Hertz) and the canonical scene: a, f,
 // E*, loads from the scene; p0 from the scene, or from the pressure for samples
 // and callbacks.
@@ -164,15 +182,7 @@ std::shared_ptr<const core::pressure_model<double>> pressure_of_geometry(const h
       model = std::make_shared<core::power_law_pressure<double>>(geometry->exponent);
       break;
     case HS_GEOMETRY_SAMPLES: {
-      require(geometry->sample_x != nullptr && geometry->sample_p != nullptr, core::status::null_pointer,
-              "sample arrays are NULL");
-      require(geometry->n_samples >= 6 && geometry->n_samples <= 10000000, core::status::bad_geometry,
-              "need at least 6 pressure samples");
-      std::vector<double> xs(geometry->sample_x, geometry->sample_x + geometry->n_samples);
-      std::vector<double> ps(geometry->sample_p, geometry->sample_p + geometry->n_samples);
-      for (size_t i = 0; i < xs.size(); ++i)
-        require(std::isfinite(xs[i]) && std::isfinite(ps[i]), core::status::not_finite, "sample is not finite");
-      auto m = std::make_shared<core::sampled_pressure<double>>(xs, ps, sc.a);
+      auto m = samples_model(geometry->n_samples, geometry->sample_x, geometry->sample_p, sc.a, nullptr);
       sc.p0 = m->p0();
       model = m;
       break;
@@ -628,6 +638,31 @@ int hs_asymptotic_error(int loading, double b_over_a, hs_asymptotic_comparison *
     r.energy_asymptotic = c.energy_asym;
     r.fractional_error = c.fractional_error();
     *out = r;
+  });
+}
+
+int hs_check_samples(size_t n, const double *x, const double *p, double a, int *verdict, size_t *index,
+                     char *reason, size_t size) {
+  return guard([&] {
+    require(x != nullptr && p != nullptr && verdict != nullptr, core::status::null_pointer, "NULL argument");
+    size_t where = n;
+    int v = HS_OK;
+    const char *why = "";
+    try {
+      require(std::isfinite(a), core::status::not_finite, "contact half-width a is NaN or infinite");
+      require(a > 0, core::status::bad_size, "contact half-width a must be > 0");
+      hs::capi::samples_model(n, x, p, a, &where);
+    } catch (const core::error &e) {
+      v = int(e.code());
+      why = e.what();
+    }
+    *verdict = v;
+    if (index) *index = v == HS_OK ? n : where;
+    if (reason && size > 0) {
+      const size_t len = std::min(std::strlen(why), size - 1);
+      std::memcpy(reason, why, len);
+      reason[len] = '\0';
+    }
   });
 }
 

@@ -417,10 +417,27 @@ class Scene:
             return Solution(h, scene=self)
         g, arrays, callback = _geometry_struct(kind, flat_over_a, exponent, samples, pressure, values)
         st = _lib.hs_solve_geometry(byref(self._c), byref(g), opts, byref(h))
+        if st != 0 and arrays is not None:
+            _sample_detail(g, self._c.a, values)
         del arrays
         if st != 0:
             _raise(st, "hs_solve_geometry", callback, values)
         return Solution(h, callback, scene=self)
+
+
+def _sample_detail(g, a, values):
+    """The rule a set of samples breaks, naming the sample (hs_check_samples),
+    into values["samples"] (shown in the HalfslipError's detail)."""
+    verdict, at = ctypes.c_int(0), ctypes.c_size_t(0)
+    why = ctypes.create_string_buffer(256)
+    if _lib.hs_check_samples(g.n_samples, g.sample_x, g.sample_p, a, byref(verdict), byref(at), why,
+                             len(why)) != 0 or verdict.value == 0:
+        return
+    text = why.value.decode("ascii", "replace")
+    if at.value < g.n_samples:
+        i = at.value
+        text = "sample %d (x=%r, p=%r): %s" % (i, g.sample_x[i], g.sample_p[i], text)
+    values["samples"] = "(%d points; %s)" % (g.n_samples, text)
 
 
 def _geometry_struct(kind, flat_over_a, exponent, samples, pressure, values=None):

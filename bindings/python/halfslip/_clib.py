@@ -225,6 +225,8 @@ _SIGNATURES = {
     "hs_solve": (c_int, [POINTER(Scene), POINTER(Options), POINTER(SolutionP)]),
     "hs_geometry_default": (c_int, [POINTER(Geometry)]),
     "hs_solve_geometry": (c_int, [POINTER(Scene), POINTER(Geometry), POINTER(Options), POINTER(SolutionP)]),
+    "hs_check_samples": (c_int, [c_size_t, _DoubleP, _DoubleP, c_double, POINTER(c_int), POINTER(c_size_t),
+                                 ctypes.c_char_p, c_size_t]),  # issue 13
     "hs_solution_free": (None, [SolutionP]),
     "hs_solution_summary": (c_int, [SolutionP, POINTER(Summary)]),
     "hs_solution_energy": (c_int, [SolutionP, _DoubleP]),

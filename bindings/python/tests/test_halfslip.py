@@ -328,6 +328,18 @@ class TestGeometries(unittest.TestCase):
         with self.assertRaises(HalfslipError) as cm:
             halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2, samples=(xs, ps))
         self.assertEqual(cm.exception.status, halfslip.ERR_BAD_GEOMETRY)
+        # the detail names the sample and the rule (hs_check_samples, issue 13)
+        self.assertIn("sample 20 (x=", cm.exception.detail)
+        self.assertIn("pressure must not be negative", cm.exception.detail)
+        ps[20] = hertz_pressure(xs[20])
+        ps[1] = 1 + xs[1]
+        ps[2] = 1 + xs[2]
+        with self.assertRaises(HalfslipError) as cm:
+            halfslip.solve(samples=(xs, ps))
+        self.assertIn("sample 1 (x=", cm.exception.detail)
+        self.assertIn("edge x = -a do not vanish like sqrt(distance)", cm.exception.detail)
+        ps[1], ps[2] = hertz_pressure(xs[1]), hertz_pressure(xs[2])
+        ps[20] = -1
         with self.assertRaises(HalfslipError) as cm:
             halfslip.solve(samples=(xs[:3], ps[:3]))
         self.assertEqual(cm.exception.status, halfslip.ERR_BAD_GEOMETRY)

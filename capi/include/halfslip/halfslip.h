@@ -224,6 +224,18 @@ HS_EXPORT int hs_geometry_default(hs_geometry *geometry);
 HS_EXPORT int hs_solve_geometry(const hs_scene *scene, const hs_geometry *geometry, const hs_options *opts,
                                 hs_solution **out);
 
+/* Check n pressure samples (x[i], p[i]) on a contact of half-width a against the
+ * rules of HS_GEOMETRY_SAMPLES, without solving, to name the sample a rule is
+ * about (added after 0.4.0). *verdict receives the status hs_solve_geometry
+ * gives for them: HS_OK, or the rule broken (HS_ERR_BAD_GEOMETRY,
+ * HS_ERR_NOT_FINITE, HS_ERR_BAD_SIZE). *index (if not NULL) receives the index
+ * of the sample the rule is about, n for a rule about the samples as a whole
+ * (and for HS_OK). reason[size] (if not NULL and size > 0) receives the rule
+ * as a NUL-terminated text, cut to fit ("" for HS_OK). Returns HS_OK, or
+ * HS_ERR_NULL_POINTER when x, p or verdict is NULL. */
+HS_EXPORT int hs_check_samples(size_t n, const double *x, const double *p, double a, int *verdict, size_t *index,
+                               char *reason, size_t size);
+
 /* Energy dissipated against friction in each slip zone for monotonic loading
  * (per unit length out of plane): E_i = integral over zone i of f p |h| dx.
  * energy[0] is zone 1, energy[1] zone 2. */

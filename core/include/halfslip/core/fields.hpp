@@ -148,6 +148,9 @@ template <class T> struct contact_state {
   // hilbert_q is cheap everywhere (closed forms); otherwise it is used only on
   // the stick zone (stick_lo, stick_hi), where it is sigma/2, and at breakpoints
   bool hilbert_fast = false;
+  // no cached panels (needs_panels false): the state's Cauchy integrals come
+  // from `numeric` at O(log n) (a sampled pressure's knot path)
+  bool no_panels = false;
   T stick_lo{0}, stick_hi{0};
   std::vector<T> kinks;  // breakpoints where p is log-singular (graded panels)
   // q is analytic inside the stick zone (stick_lo, stick_hi) (monotonic
@@ -367,9 +370,94 @@ template <class T> contact_state<T> hertz_state(const hertz_solution<T> &sol, co
   return st;
 }
 
-// General pressures: the pressure's kinks are quadrature split points too.
+template <class T> class stick_series;
+
+// The Cauchy integrals F0, F1 of p and q at zeta (user frame) of a general
+// solution on the knot path (a sampled pressure with many samples, knots.hpp;
+// issue 13 item 4): p over the contact and q = dir f p over the slip zones by
+// the knot tree's product rules where 1/(s - zeta) is smooth (nodes at least
+// twice their length from zeta and the edges), the segments next to those
+// points by cauchy_numeric (square-root maps, panels graded towards zeta); q
+// on the stick zone from its Chebyshev series (ser, or q itself) by
+// cauchy_numeric. In the canonical variable t = m s/a (m = -1 when mirrored):
+// 1/(s - zeta) = m/(a (t - tau)), tau = m zeta/a.
+template <class T>
+void knot_cauchy(const general_solution<T> &sol, const stick_series<T> *ser, const std::complex<T> &zeta,
+                 cauchy_pair<T> &P, cauchy_pair<T> &Q) {
+  using C = std::complex<T>;
+  using std::abs;
+  using std::sqrt;
+  const knot_view<T> kv = sol.pm->knots();
+  const T a = sol.scene.a, p0 = sol.scene.p0, f = sol.scene.f;
+  const T m = sol.mirror ? T(-1) : T(1);
+  const C tau = m * zeta / a;
+  auto adm = [&](const T &lo, const T &hi) {
+    const T lim = knot_quadrature<T>::eta() * (hi - lo);
+    const T re = tau.real(), im = abs(tau.imag());
+    const T dx = re < lo ? T(lo - re) : (re > hi ? T(re - hi) : T(0));
+    if (!(sqrt(dx * dx + im * im) >= lim)) return false;
+    return lo + 1 >= lim && 1 - hi >= lim;
+  };
+  // one part: scale * p over [A, B] (canonical) into the pair out
+  auto part = [&](const T &A, const T &B, const T &scale, cauchy_pair<T> &out) {
+    kv.cover(
+        A, B, adm,
+        [&](const T &t, const T &w) {
+          const T v = scale * p0 * w * sqrt((1 + t) * (1 - t));
+          const C r = T(1) / (C(t) - tau);
+          out.F0 += v * m * r;
+          out.F1 += v * r * r / a;
+        },
+        [&](const T &lo, const T &hi) {
+          // the piece in the user frame, by quadrature from scratch
+          const T s0 = a * m * lo, s1 = a * m * hi;
+          const std::vector<T> pts{std::min(s0, s1), std::max(s0, s1)};
+          cauchy_pair<T> dummy;
+          cauchy_numeric<T>(
+              [&](const T &s, T &pv, T &qv) {
+                pv = scale * sol.pressure(s);
+                qv = 0;
+              },
+              pts, zeta, out, dummy);
+        });
+  };
+  part(T(-1), T(1), T(1), P);
+  const T sg = T(sol.sign());
+  if (sol.delta1 > 0 && sol.dirR != 0) part(T(1 - sol.delta1), T(1), sg * T(sol.dirR) * f, Q);
+  if (sol.delta2 > 0 && sol.dirL != 0) part(T(-1), T(sol.delta2 - 1), sg * T(sol.dirL) * f, Q);
+  // the stick zone (user frame)
+  const T lo = -sol.b2(), hi = sol.b1();
+  if (hi > lo) {
+    cauchy_pair<T> dummy;
+    cauchy_numeric<T>(
+        [&](const T &s, T &pv, T &qv) {
+          pv = 0;
+          qv = ser && ser->inside(s) ? (*ser)(s) : sol.traction(s);
+        },
+        std::vector<T>{lo, hi}, zeta, dummy, Q);
+  }
+}
+
+// General pressures: the pressure's kinks are quadrature split points too. On
+// the knot path (knots.hpp) they are not: the Cauchy integrals come from
+// knot_cauchy and the surface Hilbert transform from B_x (both O(log n)), and
+// the state has no cached panels (no_panels).
 template <class T> contact_state<T> general_state_of(const general_solution<T> &sol, const T &bulk2 = T(0)) {
   contact_state<T> st = make_state<T>(sol, bulk2);
+  if (sol.pm->knots()) {
+    st.hilbert_fast = true;
+    st.no_panels = true;
+    std::shared_ptr<stick_series<T>> ser;
+    if (st.stick_hi > st.stick_lo) {
+      ser = std::make_shared<stick_series<T>>([&sol](const T &x) { return sol.traction(x); }, st.stick_lo,
+                                              st.stick_hi);
+      if (!ser->ok()) ser.reset();
+    }
+    st.numeric = [&sol, ser](const std::complex<T> &z, cauchy_pair<T> &P, cauchy_pair<T> &Q) {
+      knot_cauchy<T>(sol, ser.get(), z, P, Q);
+    };
+    return st;
+  }
   for (const T &k : sol.user_kinks()) {
     st.breaks.push_back(k);
     st.kinks.push_back(k);
@@ -477,6 +565,7 @@ template <class T> std::shared_ptr<const traction_panels<T>> make_panels(const c
 }
 // Whether the state's Cauchy integrals need quadrature (no closed forms).
 template <class T> bool needs_panels(const contact_state<T> &st) {
+  if (st.no_panels) return false;
   cauchy_pair<T> P, Q;
   return !(st.closed && st.closed(std::complex<T>(0, 1), P, Q));
 }

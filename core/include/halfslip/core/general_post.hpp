@@ -10,6 +10,7 @@
 
 #include "frame.hpp"
 #include "gauss.hpp"
+#include "general_knots.hpp"
 #include "general_panels.hpp"
 #include "hertz.hpp"
 #include "numerics.hpp"
@@ -48,6 +49,123 @@ template <class T> class general_solution : public canonical_solution<general_so
     return c * c;  // tanh-sinh converges quadratically: far below this in practice
   }
 
+  // C_Z(xi) on the knot path (a model with a knot quadrature, knots.hpp): the
+  // tree's product rules where the kernel p_hat/(R (t - xi)) is smooth, i.e. on
+  // nodes at least twice their length from the stick edges, +-1 and xi; the
+  // segments next to them in theta as cauchy() below (tanh-sinh per piece; on
+  // the own zone the principal value by subtraction of H(theta_x), with the
+  // closed form (1/sin 2theta_x) log|sin(theta - theta_x)/sin(theta + theta_x)|
+  // of PV int dtheta/(sin^2 theta - sin^2 theta_x) per piece). pz = 0: xi in
+  // the stick zone at distances dl from beta1 and dl2 from -beta2 (the shear
+  // traction there).
+  T cauchy_knots(const knot_view<T> &kv, int zside, int pz, const T &dl, const T &dl2 = T(0)) const {
+    using std::abs;
+    using std::asin;
+    using std::log;
+    using std::sin;
+    using std::sqrt;
+    const T d = zside > 0 ? delta1 : delta2;
+    if (!(d > 0)) return T(0);
+    const T e = width, half_pi = pi<T>() / 2;
+    const int Z = zside;
+    const T zlo = Z > 0 ? T(1 - d) : T(-1), zhi = Z > 0 ? T(1) : T(d - 1);
+    auto dist = [&](const T &t) -> T {  // from Z's stick edge, without cancellation
+      if (Z > 0) return d >= T(0.5) ? T(t - zlo) : T((t - 1) + d);
+      return d >= T(0.5) ? T(zhi - t) : T(d - (1 + t));
+    };
+    // |t - xi| as A + off (xi outside Z), or A - dl (own zone, signed)
+    const bool own = pz == Z;
+    const T off = pz == -Z ? T(e + dl) : (pz == 0 ? (Z > 0 ? dl : dl2) : T(0));
+    const T sgn = Z > 0 ? T(1) : T(-1);  // sign of t - xi off the own zone
+    // xi's position (for the admissibility test only)
+    const T xi = pz > 0 ? T(beta1 + dl) : (pz < 0 ? T(-beta2 - dl) : T(beta1 - dl));
+    const T own_edge = Z > 0 ? zlo : zhi, other_edge = Z > 0 ? T(zlo - e) : T(zhi + e);
+    const T sing[5] = {own_edge, other_edge, T(-1), T(1), xi};
+    auto adm = [&](const T &a, const T &b) {
+      const T lim = knot_quadrature<T>::eta() * (b - a);
+      for (const T &sg : sing) {
+        const T dd = sg < a ? T(a - sg) : (sg > b ? T(sg - b) : T(0));
+        if (!(dd >= lim)) return false;
+      }
+      return true;
+    };
+    T sum = 0;
+    auto emit = [&](const T &t, const T &w) {
+      const T A = dist(t);
+      const T diff = own ? T(sgn * (A - dl)) : T(sgn * (A + off));
+      sum += w * sqrt((1 + t) * (1 - t) / (A * (A + e))) / diff;
+    };
+    std::vector<std::pair<T, T>> pieces;
+    kv.cover(zlo, zhi, adm, emit, [&](const T &a, const T &b) { pieces.push_back({a, b}); });
+    auto theta = [&](const T &t) -> T {
+      if (t == own_edge) return T(0);
+      if (t == (Z > 0 ? zhi : zlo)) return half_pi;
+      const T s2 = dist(t) / d;
+      if (!(s2 > 0)) return T(0);
+      if (!(s2 < 1)) return half_pi;
+      return asin(sqrt(s2));
+    };
+    auto H = [&](const T &th, const T &thc) {
+      const T sn = sin(th), cs = sin(thc);
+      const T s2 = sn * sn, c2 = cs * cs;
+      const gdetail::zone_point<T> x = gdetail::zone_point_at(Z, d, s2, c2);
+      return 2 * d * c2 * sqrt(x.far(Z)) * pm->phi(x.t, x.dm, x.dp) / sqrt(e + d * s2);
+    };
+    const T tol = quad_tol();
+    // the target's theta on the own zone, H there
+    T thx = 0, thxc = half_pi, Hx = 0;
+    if (own) {
+      const T ratio = dl / d;
+      thx = ratio >= 1 ? half_pi : asin(sqrt(ratio));
+      thxc = ratio >= 1 ? T(0) : half_pi - thx;
+      Hx = H(thx, thxc);
+    }
+    T lsum = 0;
+    for (const auto &pc : pieces) {
+      const T ta = Z > 0 ? pc.first : pc.second, tb = Z > 0 ? pc.second : pc.first;
+      const T lo = theta(ta), hi = theta(tb);
+      if (!(hi > lo)) continue;
+      if (!own) {
+        lsum += integrate_ts<T>(
+            [&](const T &th, const T &xc) {
+              const T thc = (xc > 0 && hi == half_pi) ? xc : half_pi - th;
+              const T sn = sin(th);
+              return H(th, thc) / (off + d * sn * sn);
+            },
+            lo, hi, tol);
+        continue;
+      }
+      // own zone: subtraction of Hx, split at theta_x
+      std::vector<T> cuts{lo, hi};
+      if (thx > lo && thx < hi) cuts.insert(cuts.begin() + 1, thx);
+      for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const T a = cuts[i], b = cuts[i + 1];
+        lsum += integrate_ts<T>(
+            [&](const T &th, const T &xc) {
+              T delta;
+              if (xc < 0 && a == thx) delta = -xc;
+              else if (xc > 0 && b == thx) delta = -xc;
+              else delta = th - thx;
+              const T thc = (xc > 0 && b == half_pi) ? xc : half_pi - th;
+              const T den = sin(delta) * sin(2 * thx + delta);
+              if (den == 0) return T(0);
+              return (H(th, thc) - Hx) / den;
+            },
+            a, b, tol);
+      }
+      // Hx PV int_lo^hi dtheta/(sin^2 theta - s2x), the log terms at theta_x cancel between pieces
+      const T s2t = sin(2 * thx);
+      if (s2t != 0) {
+        auto F = [&](const T &th) {
+          if (th == thx) return T(0);
+          return log(abs(sin(th - thx) / sin(th + thx))) / s2t;
+        };
+        lsum += Hx * (F(hi) - F(lo));
+      }
+    }
+    return sum + (own ? T(sgn * lsum / d) : T(sgn * lsum));
+  }
+
   // C_Z(xi) = int_Z p_hat(t) / (R(t) (t - xi)) dt (principal value when xi in Z)
   // for the canonical point xi at distance dl from the stick edge of zone pz.
   T cauchy(int zside, int pz, const T &dl) const {
@@ -57,6 +175,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     using std::sqrt;
     const T d = zside > 0 ? delta1 : delta2;
     if (!(d > 0)) return T(0);
+    if (const knot_view<T> kv = pm->knots()) return cauchy_knots(kv, zside, pz, dl);
     const T e = width;
     auto H = [&](const T &th, const T &thc) {  // thc: pi/2 - th
       const T sn = sin(th), cs = sin(thc);
@@ -216,6 +335,66 @@ template <class T> class general_solution : public canonical_solution<general_so
     return g;
   }
 
+  // The knot path (general_knots.hpp): a model with a knot quadrature, in a
+  // precision where the own zone's graded panels need no inner rule of their own.
+  knot_view<T> knot_path(int M) const {
+    if (graded_inner_order(M) > 0) return {};
+    return pm->knots();
+  }
+
+  // zone energy and slip at outer order M on the knot path
+  T energy_hat_knots(const knot_view<T> &kv, int z, int M) const {
+    using std::abs;
+    using std::sqrt;
+    const T d = zone_length(z);
+    const auto PR = gdetail::knot_panels<T>(kv, +1, delta1, width, M);
+    const auto PL = gdetail::knot_panels<T>(kv, -1, delta2, width, M);
+    const auto O = gdetail::make_knot_nodes<T>(kv, z, d, width, z > 0 ? PR : PL, false);
+    const auto IR = gdetail::make_knot_nodes<T>(kv, +1, delta1, width, PR, true);
+    const auto IL = gdetail::make_knot_nodes<T>(kv, -1, delta2, width, PL, true);
+    const std::vector<T> g = gdetail::knot_hgrad<T>(z, O, IR, IL, O.s2.size(), dirR, dirL, width);
+    std::vector<std::shared_ptr<const gl_cumulative<T>>> cums;
+    std::vector<T> f;
+    T after = 0, E = 0;
+    for (std::size_t P = O.panels.size(); P-- > 0;) {
+      const int k = O.panels[P].order;
+      if (cums.size() <= std::size_t(k)) cums.resize(k + 1);
+      if (!cums[k]) cums[k] = gauss_legendre_cumulative<T>(k);
+      const auto &cum = *cums[k];
+      const std::size_t b = O.first[P];
+      f.assign(k, T(0));
+      T tot = 0;
+      for (int i = 0; i < k; ++i) {
+        f[i] = O.p[b + i] * 2 * d * sqrt(O.s2[b + i] * O.c2[b + i]);
+        tot += O.w[b + i] * f[i];
+      }
+      for (int i = 0; i < k; ++i) {
+        T tail = 0;
+        for (int j = 0; j < k; ++j) tail += cum.S[std::size_t(i) * k + j] * O.jac[b + j] * f[j];
+        tail += after;
+        E += O.w[b + i] * 2 * d * sqrt(O.s2[b + i] * O.c2[b + i]) * tail * g[b + i];
+      }
+      after += tot;
+    }
+    return abs(E);
+  }
+  T hhat_knots(const knot_view<T> &kv, int z, const T &thx, int M) const {
+    using std::sqrt;
+    const T d = zone_length(z);
+    const auto PR = gdetail::knot_panels<T>(kv, +1, delta1, width, M, z > 0 ? &thx : nullptr);
+    const auto PL = gdetail::knot_panels<T>(kv, -1, delta2, width, M, z < 0 ? &thx : nullptr);
+    const auto O = gdetail::make_knot_nodes<T>(kv, z, d, width, z > 0 ? PR : PL, false);
+    std::size_t np = 0;
+    while (np < O.panels.size() && !(O.panels[np].hi > thx)) ++np;
+    const auto IR = gdetail::make_knot_nodes<T>(kv, +1, delta1, width, PR, true);
+    const auto IL = gdetail::make_knot_nodes<T>(kv, -1, delta2, width, PL, true);
+    const std::size_t count = O.first[np];
+    const std::vector<T> g = gdetail::knot_hgrad<T>(z, O, IR, IL, count, dirR, dirL, width);
+    T h = 0;
+    for (std::size_t j = 0; j < count; ++j) h += O.w[j] * 2 * d * sqrt(O.s2[j] * O.c2[j]) * g[j];
+    return h;
+  }
+
   // zone energy with the outer order M (see above), by parts:
   // int_0^d tail(d - u) h'(u) du with the tail cumulated on the outer nodes
   T energy_hat_order(int z, int M) const {
@@ -223,6 +402,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     using std::sqrt;
     const T d = zone_length(z);
     if (!(d > 0)) return T(0);
+    if (const knot_view<T> kv = knot_path(M)) return energy_hat_knots(kv, z, M);
     const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
     const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1);
     const auto IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1);
@@ -263,6 +443,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     if (!(dl > 0) || !(d > 0)) return T(0);
     const T half_pi = pi<T>() / 2;
     const T thx = dl >= d ? half_pi : (2 * dl <= d ? T(asin(sqrt(dl / d))) : half_pi - asin(sqrt((d - dl) / d)));
+    if (const knot_view<T> kv = knot_path(M)) return hhat_knots(kv, z, thx, M);
     const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M, &thx);
     std::size_t np = 0;
     while (np < O.panels.size() && !(O.panels[np].hi > thx)) ++np;
@@ -342,7 +523,28 @@ template <class T> class general_solution : public canonical_solution<general_so
     for (const auto &bp : pm->breakpoints()) k.push_back(scene.a * (mirror ? -bp.x : bp.x));
     return k;
   }
-  T traction(const T &x) const { return this->traction_generic(x, user_kinks()); }
+  T traction(const T &x) const {
+    if (pm->knots()) return traction_knots(x);
+    return this->traction_generic(x, user_kinks());
+  }
+  // The shear traction on the knot path: f dir p on the slip zones; on the
+  // stick zone q = f p0 R(xi)/pi (dirR C_R(xi) - dirL C_L(xi)) (traction.hpp), in
+  // the canonical frame (q_user(x) = sign q_canonical(xi), xi = +-x/a).
+  T traction_knots(const T &x) const {
+    using std::sqrt;
+    const knot_view<T> kv = pm->knots();
+    const T xi = (mirror ? -x : x) / scene.a;
+    if (!(xi > -1 && xi < 1)) return T(0);
+    const T fp0 = scene.f * scene.p0;
+    if (delta1 > 0 && xi >= beta1) return T(this->sign() * dirR) * fp0 * pm->p(xi);
+    if (delta2 > 0 && xi <= -beta2) return T(this->sign() * dirL) * fp0 * pm->p(xi);
+    if (!(delta1 > 0) && !(delta2 > 0)) return T(0);
+    // distances from the stick edges, the stick-zone half of R
+    const T ep1 = beta1 - xi, ep2 = xi + beta2;
+    const T br = (delta1 > 0 ? T(dirR) * cauchy_knots(kv, +1, 0, ep1, ep2) : T(0)) -
+                 (delta2 > 0 ? T(dirL) * cauchy_knots(kv, -1, 0, ep1, ep2) : T(0));
+    return T(this->sign()) * fp0 * sqrt(ep1 * ep2) / pi<T>() * br;
+  }
 
   T pressure(const T &x) const {
     const T xi = (mirror ? -x : x) / scene.a;

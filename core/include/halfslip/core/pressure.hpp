@@ -30,6 +30,7 @@
 #include <boost/math/special_functions/cos_pi.hpp>
 
 #include "gauss.hpp"
+#include "knots.hpp"
 #include "numerics.hpp"
 #include "status.hpp"
 
@@ -99,6 +100,11 @@ template <class T> class pressure_model {
   // Integral of p_hat from the edge on `side` (+1: x = 1, -1: x = -1) over a
   // length c in [0, 2]. Default: quadrature (t = edge -+ c w^2 removes the sqrt).
   virtual T tail(int side, const T &c) const;
+
+  // Product quadrature over the knots of a model with very many of them (the
+  // sampled pressure, knots.hpp): the zone integrals and tails use it instead
+  // of a panel end at every knot. Empty for the other models.
+  virtual knot_view<T> knots() const { return {}; }
 
   T p(const T &x, const T &dm, const T &dp) const {
     using std::sqrt;
@@ -519,12 +525,14 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
 namespace detail {
 // local exponent of p at an edge from two distances d1 < d2: p ~ d^alpha.
 // The declared edge behaviour is alpha = 1/2; accepted in [1/4, 3/4].
-template <class T> void check_edge_exponent(const T &p1, const T &d1, const T &p2, const T &d2) {
+// not_sqrt: the message for an exponent outside that range.
+template <class T>
+void check_edge_exponent(const T &p1, const T &d1, const T &p2, const T &d2,
+                         const char *not_sqrt = "pressure must vanish like sqrt(distance) at both contact edges") {
   using std::log;
   if (!(p1 > 0) || !(p2 > 0)) throw error(status::bad_geometry, "pressure must be positive inside the contact");
   const T alpha = log(p2 / p1) / log(d2 / d1);
-  if (!(alpha >= T(0.25) && alpha <= T(0.75)))
-    throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
+  if (!(alpha >= T(0.25) && alpha <= T(0.75))) throw error(status::bad_geometry, not_sqrt);
 }
 }  // namespace detail
 
@@ -539,36 +547,64 @@ template <class T> void check_edge_exponent(const T &p1, const T &d1, const T &p
 // (local exponent from the two outermost interior samples at each edge).
 template <class T> class sampled_pressure final : public pressure_model<T> {
  public:
-  sampled_pressure(const std::vector<T> &xs, const std::vector<T> &ps, const T &a) : a_(a) {
+  // where (if not null) receives, when a rule is broken, the index of the
+  // sample the rule is about (xs.size(): the samples as a whole), so that a
+  // caller can name it (the C ABI's hs_check_samples, the CLI's file line).
+  // tree_min: the interior-sample count from which the knot quadrature is
+  // used (tests compare both sides of the switch on the same samples).
+  sampled_pressure(const std::vector<T> &xs, const std::vector<T> &ps, const T &a, std::size_t *where = nullptr,
+                   std::size_t tree_min = knot_tree_min)
+      : a_(a) {
     using std::abs;
     using std::sqrt;
-    if (!(a > 0)) throw error(status::bad_size, "sampled pressure: a must be > 0");
-    if (xs.size() != ps.size()) throw error(status::bad_geometry, "sampled pressure: size mismatch");
+    std::size_t at = xs.size();
+    auto fail = [&](std::size_t i, status s, const char *msg) {
+      if (where) *where = i;
+      throw error(s, msg);
+    };
+    if (!(a > 0)) fail(at, status::bad_size, "sampled pressure: a must be > 0");
+    if (xs.size() != ps.size()) fail(at, status::bad_geometry, "sampled pressure: size mismatch");
     T pmax = 0;
     for (std::size_t i = 0; i < xs.size(); ++i) {
-      if (!(ps[i] >= 0)) throw error(status::bad_geometry, "pressure must not be negative");
-      if (i > 0 && !(xs[i] > xs[i - 1])) throw error(status::bad_geometry, "sample abscissae must increase");
-      if (!(xs[i] >= -a && xs[i] <= a)) throw error(status::bad_geometry, "sample outside the contact");
+      if (!(ps[i] >= 0)) fail(i, status::bad_geometry, "pressure must not be negative");
+      if (i > 0 && !(xs[i] > xs[i - 1])) fail(i, status::bad_geometry, "sample abscissae must increase");
+      if (!(xs[i] >= -a && xs[i] <= a)) fail(i, status::bad_geometry, "sample outside the contact");
       pmax = std::max(pmax, ps[i]);
     }
+    // the interior samples (|x| < a); the edge rules need the two outermost at each edge
+    x_.reserve(xs.size());
+    f_.reserve(xs.size());
+    std::vector<std::size_t> index;  // input index of the interior samples
+    index.reserve(xs.size());
     for (std::size_t i = 0; i < xs.size(); ++i) {
       const T dm = a + xs[i], dp = a - xs[i];
       if (dm == 0 || dp == 0) {
-        if (ps[i] > 64 * eps<T>() * pmax)
-          throw error(status::bad_geometry, "pressure must vanish at the contact edges");
+        if (ps[i] > 64 * eps<T>() * pmax) fail(i, status::bad_geometry, "pressure must vanish at the contact edges");
         continue;
       }
-      if (!(ps[i] > 0)) throw error(status::bad_geometry, "pressure must be positive inside the contact");
+      if (!(ps[i] > 0)) fail(i, status::bad_geometry, "pressure must be positive inside the contact");
       x_.push_back(xs[i] / a);
       f_.push_back(ps[i] / sqrt(dm * dp));
-      praw_.push_back(ps[i]);
-      dm_.push_back(dm / a);
-      dp_.push_back(dp / a);
+      index.push_back(i);
     }
     const std::size_t n = x_.size();
-    if (n < 4) throw error(status::bad_geometry, "sampled pressure: need at least 4 interior samples");
-    detail::check_edge_exponent(praw_[0], dm_[0], praw_[1], dm_[1]);
-    detail::check_edge_exponent(praw_[n - 1], dp_[n - 1], praw_[n - 2], dp_[n - 2]);
+    if (n < 4) fail(at, status::bad_geometry, "sampled pressure: need at least 4 interior samples");
+    // distances (units of a) of interior sample k from the edges, and its p
+    auto dm_of = [&](std::size_t k) { return T((a + xs[index[k]]) / a); };
+    auto dp_of = [&](std::size_t k) { return T((a - xs[index[k]]) / a); };
+    auto p_of = [&](std::size_t k) { return ps[index[k]]; };
+    try {
+      at = index[0];
+      detail::check_edge_exponent(p_of(0), dm_of(0), p_of(1), dm_of(1),
+                                  "the two samples nearest the edge x = -a do not vanish like sqrt(distance) "
+                                  "(local exponent of p outside [1/4, 3/4])");
+      at = index[n - 1];
+      detail::check_edge_exponent(p_of(n - 1), dp_of(n - 1), p_of(n - 2), dp_of(n - 2),
+                                  "the two samples nearest the edge x = +a do not vanish like sqrt(distance) "
+                                  "(local exponent of p outside [1/4, 3/4])");
+    } catch (const error &e) {
+      fail(at, e.code(), e.what());
+    }
     // PCHIP slopes
     std::vector<T> h(n - 1), del(n - 1);
     for (std::size_t i = 0; i + 1 < n; ++i) {
@@ -591,21 +627,56 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
     d_[0] = endslope(h[0], h[1], del[0], del[1]);
     d_[n - 1] = endslope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
     // edge values of phi by linear extrapolation must stay positive
-    if (!(f_[0] - d_[0] * dm_[0] > 0) || !(f_[n - 1] + d_[n - 1] * dp_[n - 1] > 0))
-      throw error(status::bad_geometry, "pressure must vanish like sqrt(distance) at both contact edges");
+    const T dm0 = dm_of(0), dpn = dp_of(n - 1);
+    if (!(f_[0] - d_[0] * dm0 > 0))
+      fail(index[0], status::bad_geometry,
+           "the samples nearest the edge x = -a extrapolate to a negative p/sqrt(a^2 - x^2) at the edge "
+           "(p must vanish like sqrt(distance) there)");
+    if (!(f_[n - 1] + d_[n - 1] * dpn > 0))
+      fail(index[n - 1], status::bad_geometry,
+           "the samples nearest the edge x = +a extrapolate to a negative p/sqrt(a^2 - x^2) at the edge "
+           "(p must vanish like sqrt(distance) there)");
     // a panel end at every knot (phi is only C^1 there), built once: the
     // quadratures ask for the list per Cauchy integral (issue 13 item 4)
+    bps_.reserve(n);
     for (const T &x : x_) bps_.push_back({x, false});
+    // from knot_tree_min knots on, the product quadrature over the knots
+    // (knots.hpp): linear cost in n; below, the quadrature with a panel end at
+    // every knot, as before (results unchanged)
+    if (n >= tree_min) {
+      std::vector<T> X, F, D;
+      X.reserve(n + 2);
+      F.reserve(n + 2);
+      D.reserve(n + 2);
+      X.push_back(T(-1));
+      F.push_back(f_[0] - d_[0] * dm0);
+      D.push_back(d_[0]);
+      for (std::size_t i = 0; i < n; ++i) {
+        X.push_back(x_[i]);
+        F.push_back(f_[i]);
+        D.push_back(d_[i]);
+      }
+      X.push_back(T(1));
+      F.push_back(f_[n - 1] + d_[n - 1] * dpn);
+      D.push_back(d_[n - 1]);
+      kq_ = std::make_shared<knot_quadrature<T>>(std::move(X), std::move(F), std::move(D));
+    }
     // normalisation: P = a^2 int_{-1}^{1} sqrt(1-xi^2) phi(xi) dxi (phi dimensional)
     scale_ = 1;
-    const T I = this->tail(+1, T(2));  // int p with scale 1 (phi in p/sqrt units / a)
+    const T I = kq_ ? kq_->total() : this->tail(+1, T(2));  // int p with scale 1 (phi in p/sqrt units / a)
     P_ = a * a * I;
     p0_ = 2 * P_ / (pi<T>() * a);
     scale_ = a / p0_;
+    if (kq_) kq_->set_scale(scale_);
   }
+  // the interior-sample count from which the knot quadrature is used
+  // (test_switches.cpp)
+  static constexpr std::size_t knot_tree_min = 256;
   T phi(const T &x, const T &, const T &) const override { return scale_ * interp(x, false); }
   T dphi(const T &x, const T &, const T &) const override { return scale_ * interp(x, true); }
   std::vector<breakpoint<T>> breakpoints() const override { return bps_; }
+  knot_view<T> knots() const override { return {kq_.get(), false}; }
+  T tail(int side, const T &c) const override { return kq_ ? kq_->tail(side, c) : pressure_model<T>::tail(side, c); }
   std::size_t knot_count() const { return x_.size(); }
   T load() const { return P_; }  // P
   T p0() const { return p0_; }   // 2P/(pi a)
@@ -626,8 +697,9 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
            (3 * t2 - 2 * t) * d_[i + 1];
   }
   T a_;
-  std::vector<T> x_, f_, d_, praw_, dm_, dp_;
+  std::vector<T> x_, f_, d_;
   std::vector<breakpoint<T>> bps_;
+  std::shared_ptr<knot_quadrature<T>> kq_;
   T scale_{1}, P_{0}, p0_{1};
 };
 
@@ -720,6 +792,11 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
   bool shear_only_half_width(const T &q, T &c) const override { return b_.shear_only_half_width(q, c); }
   T accuracy_eps() const override { return b_.accuracy_eps(); }
   T tail(int side, const T &c) const override { return b_.tail(-side, c); }
+  knot_view<T> knots() const override {
+    knot_view<T> v = b_.knots();
+    v.mirror = !v.mirror;
+    return v;
+  }
 
  private:
   const pressure_model<T> &b_;
