@@ -223,7 +223,8 @@ template <class T> class general_solution : public canonical_solution<general_so
     using std::sqrt;
     const T d = zone_length(z);
     if (!(d > 0)) return T(0);
-    const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
+    auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
+    gdetail::drop_outer_panels_below(O, T(eps<T>() * pi<T>() / 2));
     const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1);
     const auto IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1);
     const int Kg = graded_inner_order(M);
@@ -263,7 +264,8 @@ template <class T> class general_solution : public canonical_solution<general_so
     if (!(dl > 0) || !(d > 0)) return T(0);
     const T half_pi = pi<T>() / 2;
     const T thx = dl >= d ? half_pi : (2 * dl <= d ? T(asin(sqrt(dl / d))) : half_pi - asin(sqrt((d - dl) / d)));
-    const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M, &thx);
+    auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M, &thx);
+    gdetail::drop_outer_panels_below(O, T(eps<T>() * thx));
     std::size_t np = 0;
     while (np < O.panels.size() && !(O.panels[np].hi > thx)) ++np;
     const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1, z > 0 ? &thx : nullptr);
