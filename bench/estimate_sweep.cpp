@@ -90,6 +90,7 @@ struct scene {
 struct dres {
   int status = -1, model = 0, regime = -1, dir1 = 0, dir2 = 0;
   double time = 0, d1 = NAN, d2 = NAN, e1 = NAN, e2 = NAN, est = NAN;
+  double resolution = 0;  // hs_summary.zone_resolution (issue 13)
 };
 
 struct rres {
@@ -141,6 +142,7 @@ dres run_double(const scene &c, int model, double rtol) {
     r.d1 = s.d1;
     r.d2 = s.d2;
     r.est = s.error_estimate;
+    r.resolution = s.zone_resolution;
     // certified energies of the general path through the reference take 10-60 s: d only
     if (!(s.model == HS_MODEL_REFERENCE && c.kind != HS_GEOMETRY_HERTZ)) {
       double e[2];
@@ -426,7 +428,7 @@ double rel(double v, double t) { return std::abs(v - t) / std::abs(t); }
 struct verdict {
   double err = NAN;      // true error (docs/models.md, empty zones as in the header)
   double bound = 0;      // the truth's own error bound
-  bool dir_ok = true;    // slip directions of nonempty truth zones agree
+  bool dir_ok = true;    // resolved zones: the truth's direction; unresolved: 0, within the resolution
   bool energies = true;  // energies were compared
 };
 
@@ -447,6 +449,11 @@ verdict compare(const outcome &o, const dres &r) {
   const double td[2] = {o.ref.d1, o.ref.d2}, rd[2] = {r.d1, r.d2}, te[2] = {te1, te2}, re[2] = {r.e1, r.e2};
   const int tdir[2] = {o.ref.dir1, o.ref.dir2}, rdir[2] = {r.dir1, r.dir2};
   for (int i = 0; i < 2; ++i) {
+    // a zone at or below the model's resolution (issue 13): bounded absolutely, direction 0
+    if (!(rd[i] > r.resolution) && r.resolution > 0) {
+      if (std::abs(rd[i] - td[i]) > r.resolution || rdir[i] != 0) v.dir_ok = false;
+      continue;
+    }
     if (td[i] == 0) {
       err = std::max(err, std::abs(rd[i]) / a);
       continue;

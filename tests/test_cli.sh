@@ -33,6 +33,14 @@ for bad in "--Q-over-fP 1.0" "--Q-over-fP nan" "--f -1" "--Q-over-fP abc" "--geo
 done
 err=$("$cli" solve --Q-over-fP 1.5 2>&1 >/dev/null); echo "$err" | grep -q "Q-over-fP" && ok || ko "message names the bad value"
 
+# issue 13: a zone below the model's resolution: regime "boundary", direction 0, zone_resolution in the JSON
+js=$("$cli" solve --Q-over-fP -0.45989658854377635 --sigma-over-fp0 -1.0603308717987363 --json) && echo "$js" | grep -q '"regime": "boundary"' && ok || ko "boundary regime"
+echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["slip_dir1"] == 0 and 0 < d["zone_resolution"] < 1e-14 and d["d1"] <= d["zone_resolution"]' && ok || ko "boundary: direction 0, zone_resolution"
+out=$("$cli" solve --Q-over-fP -0.45989658854377635 --sigma-over-fp0 -1.0603308717987363) && echo "$out" | grep -q "at or below the model's zone resolution" && ok || ko "boundary note in the report"
+# issue 13: the flat punch at b_f/a = 0.999 and large sigma, the power law at n = 999
+"$cli" solve --geometry flat-rounded --flat-over-a 0.999 --Q-over-fP 0.3 --sigma-over-fp0 100 --json >/dev/null && ok || ko "flat punch 0.999 at sigma/fp0 = 100"
+"$cli" solve --geometry power-law --exponent 999 --Q-over-fP 0.3 --sigma-over-fp0 100 --no-energy --json >/dev/null && ok || ko "power law n = 999 at sigma/fp0 = 100"
+
 # model selection by --rtol: tiny slip zones + loose rtol -> asymptotic; the estimate meets rtol
 js=$("$cli" solve --Q-over-fP 1e-5 --sigma-over-fp0 0 --rtol 1e-3 --json) && echo "$js" | grep -q '"model": "asymptotic"' && ok || ko "--rtol picks the asymptotic model"
 echo "$js" | python3 -c 'import json,sys; d=json.load(sys.stdin); assert 0 < d["error_estimate"] <= 1e-3' && ok || ko "estimate <= rtol"

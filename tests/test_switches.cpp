@@ -12,10 +12,12 @@
 //                                1/8 of an integer and of n 2^-m;
 //                                Euler-transformed series for z <= 1/2,
 //                                binomial sum for n even, issue 13)
-//   flat_rounded_pressure phi   (pressure.hpp: edge form for 2c <= c0,  Ciavarella-Hills-Monno bracket
-//   and dphi                     kink-safe form otherwise; k_ratio       at 50 digits (derivative: central
-//                                series for z^2 < cbrt(eps); phi = 1     difference at 50 digits)
-//                                at beta = 0; D = 0 at the kink)
+//   flat_rounded_pressure phi   (pressure.hpp, issue 13: closed forms   Ciavarella-Hills-Monno bracket
+//   and dphi                     below tau* = 2 ep, Gauss ladder above   at 50 digits (derivative: central
+//                                and its rungs; ln(1+u)/u series below   difference at 50 digits)
+//                                u = 1/8; phi' series below tau* =
+//                                ep eps^(1/9); phi = 1 at beta = 0;
+//                                sin b = 0 at the kink)
 //   cel_log                     (elliptic.hpp: log continuation below   Carlson R_F, R_J (Boost.Math) at
 //                                kc = eps^0.6 min(1, sqrt p))            50 digits
 //   add_semi_ellipse            (fields.hpp: real arithmetic on the     pi amp c (X - nu), pi amp (nu/X - 1)
@@ -265,12 +267,13 @@ TEST_CASE_TEMPLATE("switch: power-law F at large exponents, every form (issue 13
 }
 
 // ---------------------------------------------------------------------------
-// Flat punch: phi (and its derivative) by the edge form where 2c <= c0
-// (c = sqrt(1 - x^2), c0 = sqrt(1 - beta^2)) and by the kink-safe form
-// otherwise; inside the edge form k_ratio switches from its closed form to its
-// series at z^2 = cbrt(eps), z = c/c0.
+// Flat punch (issue 13: the evaluation from the inversion integral in tau,
+// pressure.hpp): phi = [T(|x|) + T(-|x|)]/g, each T by closed forms below
+// tau* = 2 ep and by a ladder of Gauss rules above; in the corner ln(1+u)/u
+// by its series for u < 1/8, and phi' by the even series in tau* near the edge.
 namespace {
-// adjacent x_lo < x_hi (x >= 1/2, so dp = 1 - x is exact) with pred(x_lo) != pred(x_hi)
+// adjacent x_lo < x_hi with pred(x_lo) != pred(x_hi) (x >= 1/2: dp = 1 - x is exact;
+// below, the predicates repeat the code's own rounding of min(1 + x, 1 - x))
 template <class T, class P> void straddle(T x, const P &pred, T &lo, T &hi) {
   const bool p0 = pred(x);
   T y = x;
@@ -292,94 +295,157 @@ template <class T> std::vector<T> spots_pair(const T &lo, const T &hi) {
 }
 }  // namespace
 
-TEST_CASE_TEMPLATE("switch: flat-punch phi at 2c = c0 (kink-safe form inside, edge form outside)", T, double,
+namespace {
+// The value spots of one switch of the flat punch: adjacent lo < hi straddling
+// pred, then phi (relative, eps of T) and phi' (against `dscale`, eps of T)
+// at spots_pair(lo, hi), against the 50-digit bracket and its central difference.
+template <class T, class P, class S>
+void flat_switch_spots(const core::flat_rounded_pressure<T> &fp, const T &beta, const T &x0, const P &pred,
+                       const S &dscale, double bound_p, double bound_d, double &worst_p, double &worst_d) {
+  T lo, hi;
+  straddle(x0, pred, lo, hi);
+  REQUIRE(pred(lo) != pred(hi));
+  for (const T &x : spots_pair(lo, hi)) {
+    CAPTURE(double(beta));
+    CAPTURE(double(x));
+    const mp X(x), B(beta);
+    T d;
+    const T ph = fp.phi_dphi(x, 1 + x, 1 - x, d);
+    const mp pref = flat_phi_ref(X, B), dref = flat_dphi_ref(X, B);
+    const double ep = rel_err(ph, pref);
+    const double ed = double(abs(mp(d) - dref) / dscale(X, pref, dref)) / double(eps<T>());
+    CHECK(ep <= bound_p);
+    CHECK(ed <= bound_d);
+    CHECK(fp.phi(x, 1 + x, 1 - x) == ph);
+    worst_p = std::max(worst_p, ep);
+    worst_d = std::max(worst_d, ed);
+  }
+}
+// phi' is measured against phi/c^2 (the size of its terms; phi' itself
+// vanishes where the two T terms balance)
+const auto flat_dscale = [](const mp &X, const mp &p, const mp &) { return mp(p / (1 - X * X)); };
+}  // namespace
+
+// Issue 13: phi = [T(|x|) + T(-|x|)]/g (pressure.hpp), each T by a closed form
+// for tau* < 2 ep and by the Gauss ladder above, i.e. a switch at D = 1 - X =
+// closed_form_distance(): for X = |x| at x = cos(2 ep) (every beta), for
+// X = -|x| at |x| = -cos(2 ep) (beta < cos(pi/4), where 2 ep > pi/2).
+TEST_CASE_TEMPLATE("switch: flat-punch phi at tau* = 2 ep (closed forms below, Gauss ladder above)", T, double,
                    long double) {
   double worst_p = 0, worst_d = 0;
-  for (T beta : {T(0.05), T(0.3), T(0.9)}) {
+  int switches = 0;
+  for (T beta : {T(0.05), T(0.3), T(0.6), T(0.9), T(0.999), T(0.9999)}) {
     const core::flat_rounded_pressure<T> fp(beta);
-    const T c0 = std::sqrt((1 - beta) * (1 + beta));
-    // the predicate as evaluated in pressure.hpp: dist = min(dm, dp) = 1 - x
-    const auto edge_form = [&](const T &x) {
-      const T dist = 1 - x;
-      return x > beta && 2 * std::sqrt(dist * (2 - dist)) <= c0;
-    };
-    T lo, hi;
-    straddle(T(std::sqrt((3 + beta * beta) / 4)), edge_form, lo, hi);
-    REQUIRE(!edge_form(lo));
-    REQUIRE(edge_form(hi));
-    for (const T &x : spots_pair(lo, hi)) {
-      CAPTURE(double(beta));
-      CAPTURE(double(x));
-      const mp X(x), B(beta);
-      T d;
-      const T ph = fp.phi_dphi(x, 1 + x, 1 - x, d);
-      // phi: both forms are sums of a few O(1) terms with logs; at the switch
-      // the kink-safe bracket (size ~ c) is a sum of terms of size ~ 1 with a
-      // cancellation of at most ~1/c = 2/c0 (<= 4.6 for beta = 0.9), the edge form
-      // none (atanh ratios of z <= 1/2). Bound 32 eps.
-      const double ep = rel_err(ph, flat_phi_ref(X, B));
-      // phi' (Newton Jacobians only) is a difference of terms of size ~ phi |x|/c^2
-      // (kink-safe form: -(pi - 2 phi0)|x|/c + ln|A/D| and |x| phi/c^2) which
-      // nearly cancel for small beta (phi' = 0.007 phi/c^2 at beta = 0.05): its
-      // error is measured against that scale. The closed form of
-      // k(z) = (1/(1-z^2) - h)/z^2 at z = 1/2 loses a factor ~ 4/(k z^2) ~ 6.
-      // Bound 16 eps of phi/c^2.
-      const mp pref = flat_phi_ref(X, B), dref = flat_dphi_ref(X, B);
-      const double ed = double(abs(mp(d) - dref) / (pref / (1 - X * X))) / double(eps<T>());
-      CHECK(ep <= 32);
-      CHECK(ed <= 16);
-      CHECK(fp.phi(x, 1 + x, 1 - x) == ph);
-      worst_p = std::max(worst_p, ep);
-      worst_d = std::max(worst_d, ed);
+    const T D0 = fp.closed_form_distance();
+    // the predicates as evaluated in pressure.hpp: dist = min(dm, dp), D = dist or 2 - dist
+    const auto plus = [&](const T &x) { return std::min(1 + x, 1 - x) >= D0; };
+    const auto minus = [&](const T &x) { return 2 - std::min(1 + x, 1 - x) >= D0; };
+    // closed side: T = ep - (2 sin a sin b / sin tau*) ln(sin a / sin b), cancelling at most
+    // ~6x at tau* = 2 ep (the product is 0.82 ep there) on a few ulps per factor; Gauss
+    // side: <= 10 positive terms (truncation eps/64 by the ladder's choice); g to ~3 eps.
+    // Bound 32 eps. phi': the closed side's [ln(..)(1 - cos ep cos tau*) - sin ep sin tau*]
+    // / sin^3 tau* cancels ~2.4x: bound 64 eps of phi/c^2.
+    if (D0 <= 1) {
+      flat_switch_spots(fp, beta, T(1 - D0), plus, flat_dscale, 32, 64, worst_p, worst_d);
+      ++switches;
+    }
+    if (D0 >= 1 && D0 < 2) {
+      flat_switch_spots(fp, beta, T(1 - (2 - D0)), minus, flat_dscale, 32, 64, worst_p, worst_d);
+      ++switches;
     }
   }
+  CHECK(switches == 6);  // X = -|x| for beta = 0.05, 0.3, 0.6; X = |x| for 0.9, 0.999, 0.9999
   MESSAGE("worst error in eps: phi " << worst_p << " (relative), dphi " << worst_d << " (of phi/c^2)");
 }
 
-TEST_CASE_TEMPLATE("switch: flat-punch dphi at z^2 = cbrt(eps) (k_ratio series below, closed form above)", T, double,
-                   long double) {
-  double worst_below = 0, worst_above = 0;
-  const T kthr = std::cbrt(eps<T>());
-  for (T beta : {T(0.05), T(0.3), T(0.9)}) {
+// The rungs of the Gauss ladder: the order rises as tau* approaches 2 ep.
+TEST_CASE_TEMPLATE("switch: flat-punch phi at the rungs of the Gauss ladder", T, double, long double) {
+  double worst_p = 0, worst_d = 0;
+  int rungs = 0;
+  for (T beta : {T(0.9), T(0.999), T(0.9999)}) {
     const core::flat_rounded_pressure<T> fp(beta);
-    const T c0 = std::sqrt((1 - beta) * (1 + beta));
-    // z2 = c / c0 with c = sqrt(dist (2 - dist)): the closed form where z2^2 >= kthr
-    const auto closed = [&](const T &x) {
-      const T dist = 1 - x, z = std::sqrt(dist * (2 - dist)) / c0;
-      return z * z >= kthr;
-    };
-    T lo, hi;
-    // dist (2 - dist) = c0^2 kthr
-    const T u = c0 * c0 * kthr;
-    straddle(T(1 - u / (1 + std::sqrt(1 - u))), closed, lo, hi);
-    REQUIRE(closed(lo));
-    REQUIRE(!closed(hi));
-    for (const T &x : spots_pair(lo, hi)) {
-      CAPTURE(double(beta));
-      CAPTURE(double(x));
-      const mp X(x), B(beta);
-      T d;
-      const T ph = fp.phi_dphi(x, 1 + x, 1 - x, d);
-      CHECK(rel_err(ph, flat_phi_ref(X, B)) <= 32);  // as above
-      const double ed = rel_err(d, flat_dphi_ref(X, B));
-      if (closed(x)) {
-        // closed form of k at z^2 >= cbrt(eps): 1/(1-z^2) and h = atanh(z)/z,
-        // each O(1) with a few ulps (atanh, division), subtracted and divided by
-        // z^2 >= cbrt(eps): relative error <= ~8 eps/(k z^2) <= 12 eps^(2/3), the
-        // documented order eps^(2/3) of pressure.hpp k_ratio (k of the far-edge
-        // term is ~2/3 of phi'). Bound 16 eps^(2/3).
-        CHECK(ed * double(eps<T>()) <= 16 * std::pow(double(eps<T>()), 2.0 / 3));
-        worst_above = std::max(worst_above, ed);
-      } else {
-        // series: positive terms, few eps; the rest of phi' as in the edge form. Bound 64 eps.
-        CHECK(ed <= 64);
-        worst_below = std::max(worst_below, ed);
-      }
+    const auto dists = fp.ladder_distances();
+    REQUIRE(dists.size() >= 2);
+    for (std::size_t j = 0; j + 1 < dists.size(); ++j) {
+      const T Dj = dists[j];
+      if (!(Dj < 1)) continue;  // the rung serves X = |x| only from x = 1 - Dj > 0
+      const auto pred = [&](const T &x) { return std::min(1 + x, 1 - x) >= Dj; };
+      // both sides: positive Gauss terms, truncation <= eps/64 by construction: bound 16 eps
+      // (phi' the same sums with squared denominators: 16 eps of phi/c^2)
+      flat_switch_spots(fp, beta, T(1 - Dj), pred, flat_dscale, 16, 16, worst_p, worst_d);
+      ++rungs;
     }
   }
-  MESSAGE("worst relative error of dphi in eps: series side " << worst_below << ", closed-form side " << worst_above
-                                                              << " (eps^(-1/3) = " << std::cbrt(1 / double(eps<T>()))
-                                                              << ")");
+  CHECK(rungs >= 8);
+  MESSAGE("worst error in eps: phi " << worst_p << " (relative), dphi " << worst_d << " (of phi/c^2)");
+}
+
+// The rounded corner: ln(1 + u)/u by its series for u < 1/8, by log1p above;
+// and phi' by the even series in tau* below series_distance(), by the product
+// rule above.
+TEST_CASE_TEMPLATE("switch: flat-punch corner: ln(1+u)/u at u = 1/8 and phi' at tau* = ep eps^(1/9)", T, double,
+                   long double) {
+  double worst_p = 0, worst_d = 0;
+  for (T beta : {T(0.05), T(0.3), T(0.9), T(0.999)}) {
+    const core::flat_rounded_pressure<T> fp(beta);
+    // u as pressure.hpp forms it from D = dist (X = |x| > beta)
+    const T ce2 = std::sqrt((1 + beta) / 2), se2 = std::sqrt((1 - beta) / 2), omb = 1 - beta;
+    const auto u_of = [&](const T &x) {
+      const T D = std::min(1 + x, 1 - x);
+      const T sh = std::sqrt(D / 2), ch = std::sqrt((2 - D) / 2);
+      const T sa = sh * ce2 + ch * se2, nb = (omb - D) / (2 * sa);
+      return 2 * ce2 * sh / nb;
+    };
+    // u = 1/8: tau*/ep ~ 1/16 (u ~ tau* cot(ep/2) for small tau*); find it by bisection in dist
+    T lo = 0, hi = omb;
+    for (int i = 0; i < 200; ++i) {
+      const T m = (lo + hi) / 2;
+      (u_of(T(1 - m)) < T(0.125) ? lo : hi) = m;
+    }
+    // series side: alternating, terms falling by u <= 1/8, ~18 terms in double; log1p side
+    // as accurate: bound 16 eps for phi. phi' (product rule there): bound 64 eps of phi/c^2.
+    flat_switch_spots(
+        fp, beta, T(1 - lo), [&](const T &x) { return u_of(x) < T(0.125); }, flat_dscale, 16, 64, worst_p, worst_d);
+    // phi': series below D = series_distance(), product rule above; both measured
+    // ~60 eps relative at the switch (pressure.hpp) where phi' is of the size of its
+    // terms (b_f -> a: phi' ~ phi/(1 - beta)); for small beta the two T' nearly cancel
+    // (phi' = 0.022 phi at beta = 0.05). Bound 256 eps of max(|phi'|, phi).
+    const T Ds = fp.series_distance();
+    flat_switch_spots(
+        fp, beta, T(1 - Ds), [&](const T &x) { return std::min(1 + x, 1 - x) < Ds; },
+        [](const mp &, const mp &p, const mp &d) { return abs(d) > p ? mp(abs(d)) : p; }, 16, 256, worst_p, worst_d);
+  }
+  MESSAGE("worst error in eps: phi " << worst_p << " (relative), dphi " << worst_d);
+}
+
+// Issue 13: the bracket form cancelled ~4/g of its digits as b_f -> a (g = 2 ep - sin 2 ep;
+// measured 1.1e3 eps at b_f/a = 0.99, 3.5e4 at 0.999, 1.6e6 at 0.9999); the solver lost
+// the stick zone at b_f/a = 0.999 from sigma/fp0 = 100. Every x of a fine grid, the flat,
+// the kink's neighbourhood and the corner down to 1e-12 (1 - beta) from the edge.
+TEST_CASE_TEMPLATE("flat-punch phi as b_f -> a: every x within 16 eps (issue 13)", T, double, long double) {
+  double worst = 0;
+  for (T beta : {T(0.5), T(0.99), T(0.999), T(0.9999)}) {
+    const core::flat_rounded_pressure<T> fp(beta);
+    std::vector<T> xs;
+    for (int i = 0; i < 64; ++i) xs.push_back(T(i) / 64 * beta);  // the flat (the kink itself: its own test)
+    for (int k = 1; k <= 12; ++k) {
+      const T h = (1 - beta) * std::pow(T(10), -T(k));
+      xs.push_back(beta - h);  // next to the kink
+      xs.push_back(beta + h);
+      xs.push_back(1 - h);  // the corner, at the edge
+    }
+    for (int i = 1; i < 16; ++i) xs.push_back(beta + (1 - beta) * T(i) / 16);  // the corner
+    for (const T &x : xs) {
+      CAPTURE(double(beta));
+      CAPTURE(double(x));
+      const T dp = 1 - x;
+      // every form: positive Gauss terms, or a closed form cancelling at most ~6x (r = 2): 16 eps
+      const double e = rel_err(fp.phi(x, 1 + x, dp), flat_phi_ref(mp(x), mp(beta)));
+      CHECK(e <= 16);
+      worst = std::max(worst, e);
+    }
+  }
+  MESSAGE("worst relative error in eps: " << worst);
 }
 
 TEST_CASE_TEMPLATE("switch: flat-punch phi at the kink x = beta (D = 0 handled apart)", T, double, long double) {
@@ -393,8 +459,9 @@ TEST_CASE_TEMPLATE("switch: flat-punch phi at the kink x = beta (D = 0 handled a
       // 1e-40 away (phi is continuous, modulus ~ |dx log dx| ~ 1e-38)
       const mp X = x == beta ? mp(x) + mp("1e-40") : mp(x);
       const double e = rel_err(fp.phi(x, 1 + x, 1 - x), flat_phi_ref(X, mp(beta)));
-      // kink-safe form, no cancellation at the kink (the (|x| - s0) ln|D| term
-      // vanishes): bound 16 eps.
+      // at the kink sin b = (D - (1 - beta))/(2 sin a) is exactly 0 and T(|x|) = ep; next to
+      // it T = ep - (2 sin a sin b/sin tau*) ln(sin a/sin b) with the product << ep: no
+      // cancellation. Bound 16 eps.
       CHECK(e <= 16);
       worst = std::max(worst, e);
     }

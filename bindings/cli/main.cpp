@@ -140,6 +140,7 @@ const char *regime_name(int r) {
     case HS_REGIME_STUCK: return "stuck";
     case HS_REGIME_SAME_SIGN: return "same-sign";
     case HS_REGIME_OPPOSITE_SIGN: return "opposite-sign";
+    case HS_REGIME_BOUNDARY: return "boundary";
     default: return "unknown";
   }
 }
@@ -985,6 +986,7 @@ int cmd_solve(int argc, char **argv) {
         want_energy ? num(energy[1]).c_str() : "null", sm.iterations);
     std::printf(", \"quadrature_order\": %d, \"model\": \"%s\", \"error_estimate\": %s", sm.quadrature_order,
                 model_name(sm.model), num(sm.error_estimate).c_str());
+    std::printf(", \"zone_resolution\": %s", num(sm.zone_resolution).c_str());
     std::printf(", \"ramp_recedes\": %s, \"ramp_recedes_at_Q_over_fP\": %s", recedes ? "true" : "false",
                 recedes ? num(recedes_at).c_str() : "null");
     if (have_surface) {
@@ -1031,6 +1033,12 @@ int cmd_solve(int argc, char **argv) {
     if (sm.quadrature_order) std::printf("  (quadrature: Gauss-Legendre order %d per panel)\n", sm.quadrature_order);
     std::printf("model: %s, estimated error %.2g (largest relative error of d1, d2 and the energies)\n",
                 model_name(sm.model), sm.error_estimate);
+    if (sm.regime == HS_REGIME_BOUNDARY)
+      std::printf(
+          "note: slip zone %d is at or below the model's zone resolution %.2g a: it may be empty or slip\n"
+          "  either way (the regime boundary), so its direction is reported as 0 and it is left out of the\n"
+          "  estimate (docs/models.md)\n",
+          sm.slip_dir1 == 0 ? 1 : 2, sm.zone_resolution / sm.a);
     if (recedes)
       std::printf(
           "note: this is the monotonic state (every slip zone grown from zero). A proportional ramp from\n"

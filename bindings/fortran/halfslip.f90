@@ -74,6 +74,7 @@ module halfslip
   integer(c_int), parameter, public :: HS_REGIME_STUCK         = 0
   integer(c_int), parameter, public :: HS_REGIME_SAME_SIGN     = 1
   integer(c_int), parameter, public :: HS_REGIME_OPPOSITE_SIGN = 2
+  integer(c_int), parameter, public :: HS_REGIME_BOUNDARY      = 3  ! one zone below zone_resolution
 
   integer(c_int), parameter, public :: HS_REF_B1      = 1
   integer(c_int), parameter, public :: HS_REF_B2      = 2
@@ -141,6 +142,7 @@ module halfslip
     integer(c_int)    :: quadrature_order = 0   ! Gauss-Legendre order per panel (0: closed forms)
     integer(c_int)    :: model = 0              ! HS_MODEL_* used (since 0.3)
     real(c_double)    :: error_estimate = 0     ! estimated largest relative error of d1, d2, E1, E2
+    real(c_double)    :: zone_resolution = 0    ! absolute error bound of d1, d2 (after 0.4, issue 13)
   end type hs_summary
 
   ! Pressure of a non-Hertz geometry (hs_solve_geometry). Fill it with

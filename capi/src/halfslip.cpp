@@ -439,7 +439,8 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
     // structs grow at the end: a caller built against the 0.1 header (before
     // p0 and quadrature_order) passes the shorter size and gets those fields
     const size_t n = out->struct_size;
-    require(n == sizeof(hs_summary) || n == offsetof(hs_summary, model) || n == offsetof(hs_summary, p0),
+    require(n == sizeof(hs_summary) || n == offsetof(hs_summary, zone_resolution) ||
+                n == offsetof(hs_summary, model) || n == offsetof(hs_summary, p0),
             core::status::struct_size, "summary struct_size");
     hs_summary r;
     std::memset(&r, 0, sizeof r);
@@ -461,6 +462,14 @@ int hs_solution_summary(const hs_solution *sol, hs_summary *out) {
     r.quadrature_order = general ? general->order : 0;
     r.model = sol->model_used;
     r.error_estimate = sol->error_estimate;
+    // issue 13 (item 3): a zone at or below the model's resolution has no
+    // direction the model can vouch for; one such zone is the regime boundary
+    r.zone_resolution = sol->zone_resolution * r.a;
+    const bool u1 = core::zone_unresolved(r.d1 / r.a, sol->zone_resolution);
+    const bool u2 = core::zone_unresolved(r.d2 / r.a, sol->zone_resolution);
+    if (u1) r.slip_dir1 = 0;
+    if (u2) r.slip_dir2 = 0;
+    if (u1 || u2) r.regime = (r.d1 == 0 && r.d2 == 0) ? HS_REGIME_STUCK : HS_REGIME_BOUNDARY;
     r.struct_size = n;
     std::memcpy(out, &r, n);
   });

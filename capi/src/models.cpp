@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "halfslip/halfslip.h"
@@ -67,12 +68,19 @@ const core::pressure_model<double> &pressure_of(hs_solution &h) {
   return *h.model;
 }
 
-// est: the model's error estimate if the caller has computed it already (< 0: not yet)
-void run_asymptotic(hs_solution &h, const core::general_scene<double> &sc, double est = -1) {
+// The model's estimate into the handle: the relative error of the resolved
+// zones, the resolution and the number of zones at or below it (issue 13).
+void take_estimate(hs_solution &h, const core::error_estimate<double> &e) {
+  h.error_estimate = e.value();
+  h.zone_resolution = e.resolution;
+  h.unresolved = e.unresolved;
+}
+
+void run_asymptotic(hs_solution &h, const core::general_scene<double> &sc) {
   const auto &pm = pressure_of(h);
   h.solution.emplace<core::edge_solution<double>>(pm, sc);
   h.model_used = HS_MODEL_ASYMPTOTIC;
-  h.error_estimate = est >= 0 ? est : core::asymptotic_estimate(pm, sc).value();
+  take_estimate(h, core::asymptotic_estimate(pm, sc));
 }
 
 void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, const request &r) {
@@ -81,7 +89,7 @@ void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, cons
   o.rtol = r.rtol;
   const auto &s = h.solution.emplace<core::hertz_solution<double>>(core::solve_hertz<double>(sc, o));
   h.model_used = HS_MODEL_CLOSED_FORM;
-  h.error_estimate = core::closed_form_estimate(s.d1() / sc.a, s.d2() / sc.a, sc.q, sc.s).value();
+  take_estimate(h, core::closed_form_estimate(s.d1() / sc.a, s.d2() / sc.a, sc.q, sc.s));
   // rtol > 0 relaxes the quadrature of the opposite-sign slip and energies
   if (16 * r.rtol > h.error_estimate) h.error_estimate = 16 * r.rtol;
 }
@@ -93,7 +101,7 @@ void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int m
   const auto &pm = pressure_of(h);
   const auto &s = h.solution.emplace<core::general_solution<double>>(core::solve_general<double>(pm, sc, o));
   h.model_used = HS_MODEL_QUADRATURE;
-  h.error_estimate = core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q).value();
+  take_estimate(h, core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q, pm.accuracy_eps()));
 }
 
 // The quadrature, or the asymptotic edge model where that is more accurate:
@@ -123,20 +131,26 @@ bool run_quadrature_or_asymptotic(hs_solution &h, const core::general_scene<doub
     return true;
   }
   const double quad = h.error_estimate;
-  const double est = core::asymptotic_estimate(pressure_of(h), sc).value();
+  const double quad_resolution = h.zone_resolution;
+  const int quad_unresolved = h.unresolved;
+  const auto ae = core::asymptotic_estimate(pressure_of(h), sc);
+  const double est = ae.value();
   // only where the asymptotic model is itself accurate: at the regime boundary
   // both estimates are large, and the asymptotic one does not bound its error
-  // there (the sweep: estimate 1e5, error 1e10, a wrong slip direction)
-  if (!(est < quad) || !(est <= 1e-6)) return false;
+  // there (the sweep: estimate 1e5, error 1e10, a wrong slip direction); and
+  // not where it would leave a zone unresolved that the quadrature resolves
+  if (!(est < quad) || !(est <= 1e-6) || ae.unresolved > quad_unresolved) return false;
   auto kept = std::move(h.solution);
   try {
-    run_asymptotic(h, sc, est);
+    run_asymptotic(h, sc);
     return true;
   } catch (const core::error &e) {
     if (e.code() != core::status::not_applicable) throw;
     h.solution = std::move(kept);  // zones cover the contact: keep the quadrature
     h.model_used = HS_MODEL_QUADRATURE;
     h.error_estimate = quad;
+    h.zone_resolution = quad_resolution;
+    h.unresolved = quad_unresolved;
     return false;
   }
 }
@@ -148,6 +162,13 @@ void run_reference(hs_solution &h, const core::general_scene<double> &sc, const 
   h.solution.emplace<reference_double>(ref.text, sc, r.max_iterations < 1000 ? 1000 : r.max_iterations);
   h.model_used = HS_MODEL_REFERENCE;
   h.error_estimate = std::ldexp(1.0, -53);
+  // certified relative values: a zone is resolved unless it rounds to 0
+  // (a scene exactly on the regime boundary, or below the double range)
+  const auto &s = std::get<reference_double>(h.solution);
+  h.zone_resolution = std::numeric_limits<double>::denorm_min();
+  h.unresolved = int(core::zone_unresolved(s.d1() / sc.a, h.zone_resolution)) +
+                 int(core::zone_unresolved(s.d2() / sc.a, h.zone_resolution));
+  if (sc.q == 0 && sc.s == 0) h.zone_resolution = 0, h.unresolved = 0;  // stuck: exact
 }
 
 // HS_MODEL_AUTO: cheapest first; each model is accepted when its estimate
@@ -156,10 +177,10 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
               const reference_input &ref) {
   const double tol = r.rtol;
   if (tol > 0 && (sc.q != 0 || sc.s != 0)) {
-    const auto est = core::asymptotic_estimate(pressure_of(h), sc).value();
-    if (est <= tol) {
+    const auto ae = core::asymptotic_estimate(pressure_of(h), sc);
+    if (ae.value() <= tol && ae.unresolved == 0) {
       try {
-        run_asymptotic(h, sc, est);
+        run_asymptotic(h, sc);
         return;
       } catch (const core::error &e) {
         if (e.code() != core::status::not_applicable) throw;  // zones cover the contact: go on
@@ -183,7 +204,10 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
     if (!run_quadrature_or_asymptotic(h, sc, r.max_iterations, rt) && h.error_estimate > tol && rt > 0)
       run_quadrature_or_asymptotic(h, sc, r.max_iterations, 0);
   }
-  if (tol == 0 || h.error_estimate <= tol) return;
+  // a relative tolerance is met only where every zone is resolved (issue 13:
+  // at the regime boundary a zone below the resolution has no relative error
+  // bound at all; the reference resolves it)
+  if (tol == 0 || (h.error_estimate <= tol && h.unresolved == 0)) return;
   if (ref.available) {
     run_reference(h, sc, r, ref);
     return;

@@ -146,7 +146,11 @@ struct hs_solution {
                hs::core::edge_solution<double>, hs::capi::reference_double, hs::capi::history_state>
       solution;
   int model_used = 0;  // HS_MODEL_*
-  double error_estimate = 0;
+  double error_estimate = 0;  // relative, of the resolved zones (core/select.hpp)
+  // issue 13: the model's zone resolution (units of a; 0: none, e.g. a load-history
+  // state) and the number of zones at or below it
+  double zone_resolution = 0;
+  int unresolved = 0;
   // issue 15: p and q cached on graded panels for the stresses, built on the
   // first field evaluation that needs them (thread-safe; null: closed forms)
   mutable std::once_flag panels_once;

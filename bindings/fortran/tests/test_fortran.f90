@@ -50,7 +50,7 @@ program test_fortran
   end interface
 
   ! Same order as kValues in header_values.c.
-  integer(c_int), parameter :: kConstants(59) = [ &
+  integer(c_int), parameter :: kConstants(60) = [ &
     HS_VERSION_MAJOR, HS_VERSION_MINOR, HS_VERSION_PATCH, &
     HS_OK, HS_ERR_NULL_POINTER, HS_ERR_STRUCT_SIZE, HS_ERR_NOT_FINITE, HS_ERR_BAD_SIZE, &
     HS_ERR_BAD_FRICTION, HS_ERR_GROSS_SLIDING, HS_ERR_BAD_GEOMETRY, HS_ERR_POINT_OUTSIDE, &
@@ -60,7 +60,7 @@ program test_fortran
     HS_MODEL_REFERENCE, &
     HS_GEOMETRY_HERTZ, HS_GEOMETRY_FLAT_ROUNDED, HS_GEOMETRY_POWER_LAW, HS_GEOMETRY_SAMPLES, &
     HS_GEOMETRY_CALLBACK, &
-    HS_REGIME_STUCK, HS_REGIME_SAME_SIGN, HS_REGIME_OPPOSITE_SIGN, &
+    HS_REGIME_STUCK, HS_REGIME_SAME_SIGN, HS_REGIME_OPPOSITE_SIGN, HS_REGIME_BOUNDARY, &
     HS_REF_B1, HS_REF_B2, HS_REF_D1, HS_REF_D2, HS_REF_ENERGY1, HS_REF_ENERGY2, HS_REF_A, HS_REF_P0, &
     HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_WORK, HS_REF_EVAL_PRESSURE, &
     HS_RAMP_SIGMA_FIRST, HS_RAMP_TOGETHER, HS_RAMP_Q_FIRST, HS_FIELD_TRACTION, HS_FIELD_SLIP, &
@@ -74,6 +74,7 @@ program test_fortran
   call test_version_and_messages()
   call test_same_sign()
   call test_opposite_sign()
+  call test_regime_boundary()
   call test_errors()
   call test_hertz_loads()
   call test_geometries()
@@ -286,6 +287,21 @@ contains
     call expect(h(1) < 0 .and. h(2) > 0, 'slip has the sign of the zone direction')
     call hs_solution_free(sol)
   end subroutine test_opposite_sign
+
+  ! issue 13: a zone below the model's zone resolution has direction 0, regime BOUNDARY
+  subroutine test_regime_boundary()
+    type(hs_solution_t) :: sol
+    type(hs_summary) :: sm
+    integer :: ierr
+    call hs_solve(scene_qs(-0.45989658854377635_c_double, -1.0603308717987363_c_double), sol, ierr=ierr)
+    call expect_code(ierr, HS_OK, 'boundary solve')
+    call hs_solution_summary(sol, sm)
+    call expect(sm%regime == HS_REGIME_BOUNDARY, 'boundary regime')
+    call expect(sm%slip_dir1 == 0 .and. sm%slip_dir2 == -1, 'boundary slip directions')
+    call expect(sm%zone_resolution > 0 .and. sm%zone_resolution < 1e-14_c_double, 'zone resolution')
+    call expect(sm%d1 <= sm%zone_resolution, 'zone 1 unresolved')
+    call hs_solution_free(sol)
+  end subroutine test_regime_boundary
 
   subroutine test_errors()
     type(hs_scene) :: sc

@@ -133,11 +133,13 @@ class Regime(_NamedInt):
     STUCK = 0
     SAME_SIGN = 1
     OPPOSITE_SIGN = 2
+    BOUNDARY = 3  # one zone at or below the model's zone_resolution (issue 13)
 
 
 REGIME_STUCK = Regime.STUCK
 REGIME_SAME_SIGN = Regime.SAME_SIGN
 REGIME_OPPOSITE_SIGN = Regime.OPPOSITE_SIGN
+REGIME_BOUNDARY = Regime.BOUNDARY
 
 _REGIME_NAMES = {r: str(r) for r in Regime}
 
@@ -612,14 +614,16 @@ class Solution(_Handle):
 
     # summary
     regime = property(lambda self: _enum_or_int(Regime, self._s.regime),
-                      doc="a Regime (an int): STUCK, SAME_SIGN or OPPOSITE_SIGN; str() gives its name")
+                      doc="a Regime (an int): STUCK, SAME_SIGN, OPPOSITE_SIGN or BOUNDARY (one zone at or "
+                          "below zone_resolution); str() gives its name")
     regime_name = property(lambda self: _REGIME_NAMES.get(self._s.regime, "unknown"))
     a = property(lambda self: self._s.a, doc="contact half-width")
     b1 = property(lambda self: self._s.b1, doc="the stick zone is (-b2, b1)")
     b2 = property(lambda self: self._s.b2)
     d1 = property(lambda self: self._s.d1, doc="a - b1, to full relative accuracy")
     d2 = property(lambda self: self._s.d2, doc="a - b2")
-    slip_dir1 = property(lambda self: self._s.slip_dir1, doc="+1, -1, or 0 if zone 1 is empty")
+    slip_dir1 = property(lambda self: self._s.slip_dir1,
+                         doc="+1, -1, or 0 if zone 1 is empty or not resolved (d1 <= zone_resolution)")
     slip_dir2 = property(lambda self: self._s.slip_dir2)
     iterations = property(lambda self: self._s.iterations, doc="Newton iterations (0 for closed forms)")
     p0 = property(lambda self: self._s.p0, doc="reference pressure 2P/(pi a) used")
@@ -629,7 +633,11 @@ class Solution(_Handle):
                      doc="the Model used (an int: ASYMPTOTIC, CLOSED_FORM, QUADRATURE, REFERENCE); str() gives its name")
     model_name = property(lambda self: str(self.model), doc='"asymptotic", "closed-form", "quadrature" or "reference"')
     error_estimate = property(lambda self: self._s.error_estimate,
-                              doc="estimated largest relative error of d1, d2 and the zone energies")
+                              doc="estimated largest relative error of d1, d2 and the zone energies "
+                                  "(zones longer than zone_resolution)")
+    zone_resolution = property(lambda self: self._s.zone_resolution,
+                               doc="the model's bound on the absolute error of d1 and d2 (units of a); a zone "
+                                   "at or below it is unresolved: slip direction 0, regime BOUNDARY (issue 13)")
 
     def _handle(self):
         if not self._h:

@@ -61,6 +61,7 @@ class Summary(ctypes.Structure):
         ("quadrature_order", c_int),
         ("model", c_int),  # since 0.3
         ("error_estimate", c_double),
+        ("zone_resolution", c_double),  # after 0.4 (issue 13)
     ]
 
 

@@ -83,7 +83,7 @@ class TestLibraryAndVersion(unittest.TestCase):
     def test_struct_layouts(self):
         # halfslip.h on LP64: size_t, int (+pad), doubles / pointers
         self.assertEqual(ctypes.sizeof(halfslip._clib.Scene), 2 * 8 + 6 * 8)
-        self.assertEqual(ctypes.sizeof(halfslip._clib.Summary), 8 + 4 * 4 + 6 * 8 + 4 + 4 + 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.Summary), 8 + 4 * 4 + 6 * 8 + 4 + 4 + 8 + 8)
         self.assertEqual(ctypes.sizeof(halfslip._clib.Options), 8 + 4 + 4 + 8 + 4 + 4)
         self.assertEqual(ctypes.sizeof(halfslip._clib.Geometry), 8 + 4 + 4 + 2 * 8 + 8 + 4 * 8)
         self.assertEqual(ctypes.sizeof(halfslip._clib.RefScene), 2 * 8 + 12 * ctypes.sizeof(ctypes.c_void_p))
@@ -171,6 +171,20 @@ class TestSolve(unittest.TestCase):
             self.assertGreaterEqual(sol.iterations, 1)
             h = sol.slip([0.95, -0.95])
             self.assertTrue(h[0] < 0 < h[1])
+
+    def test_regime_boundary(self):
+        # issue 13: a zone below the model's resolution has no direction; the regime is BOUNDARY
+        with halfslip.solve(Q_over_fP=-0.45989658854377635, sigma_over_fp0=-1.0603308717987363) as sol:
+            self.assertIs(sol.regime, halfslip.Regime.BOUNDARY)
+            self.assertEqual(sol.regime, halfslip.REGIME_BOUNDARY)
+            self.assertEqual(str(sol.regime), "boundary")
+            self.assertEqual(sol.regime_name, "boundary")
+            self.assertEqual((sol.slip_dir1, sol.slip_dir2), (0, -1))
+            self.assertTrue(0 < sol.zone_resolution < 1e-14)
+            self.assertLessEqual(sol.d1, sol.zone_resolution)
+        with halfslip.solve(Q_over_fP=0.3, sigma_over_fp0=2) as sol:
+            self.assertTrue(0 < sol.zone_resolution < 1e-14)
+            self.assertGreater(sol.d1, sol.zone_resolution)
 
     def test_stuck(self):
         with halfslip.solve(Q_over_fP=0, sigma_over_fp0=0) as sol:

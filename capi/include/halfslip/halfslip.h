@@ -91,6 +91,12 @@ HS_EXPORT const char *hs_strerror(int status);
 #define HS_REGIME_STUCK         0  /* Q = sigma = 0: no slip */
 #define HS_REGIME_SAME_SIGN     1  /* slip zones slip in the same direction */
 #define HS_REGIME_OPPOSITE_SIGN 2  /* slip zones slip in opposite directions */
+/* After 0.4 (issue 13): a slip zone is at or below the model's zone resolution
+   (hs_summary.zone_resolution): it may be empty or slip either way, so the model
+   cannot tell the regimes apart (the scene is at their boundary to within its
+   accuracy); such a zone's slip direction is reported as 0. (Both zones of
+   length exactly 0, e.g. loads that underflow: STUCK.) */
+#define HS_REGIME_BOUNDARY      3
 
 /* ---- scene -----------------------------------------------------------------
  * Dimensionless load ratios are the primary inputs, so that ratios close to
@@ -134,8 +140,9 @@ HS_EXPORT int hs_scene_from_flat_rounded_loads(double P, double R, double flat_w
 
 /* ---- options ---------------------------------------------------------------- */
 /* Models (docs/models.md). The error of a solution is the largest relative
- * error of the slip-zone lengths d1, d2 and the zone energies (nonempty zones);
- * every model reports an estimate of it (hs_summary.error_estimate). */
+ * error of the slip-zone lengths d1, d2 and the zone energies (resolved zones:
+ * longer than the model's hs_summary.zone_resolution); every model reports an
+ * estimate of it (hs_summary.error_estimate). */
 #define HS_MODEL_DEFAULT     0  /* closed forms (Hertz) or quadrature at rtol (other geometries) */
 #define HS_MODEL_AUTO        1  /* the cheapest model whose error estimate is <= rtol, tried in
                                    the order asymptotic, closed form / quadrature, reference */
@@ -191,7 +198,11 @@ typedef struct hs_summary {
   int quadrature_order; /* Gauss-Legendre order per panel (0: closed forms, or stuck) */
   /* since 0.3 (struct_size = offsetof(hs_summary, model) is accepted too) */
   int model;            /* HS_MODEL_* actually used (never DEFAULT or AUTO) */
-  double error_estimate;/* estimated largest relative error of d1, d2, E1, E2 */
+  double error_estimate;/* estimated largest relative error of d1, d2, E1, E2 (resolved zones) */
+  /* after 0.4, issue 13 (struct_size = offsetof(hs_summary, zone_resolution) is accepted too) */
+  double zone_resolution;/* the model's bound on the absolute error of d1 and d2, in the units
+                            of a; a zone with d <= zone_resolution is unresolved: slip direction
+                            0, left out of error_estimate, regime BOUNDARY (STUCK if d1 = d2 = 0) */
 } hs_summary;
 
 HS_EXPORT int hs_solution_summary(const hs_solution *sol, hs_summary *out);

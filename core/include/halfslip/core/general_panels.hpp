@@ -251,4 +251,22 @@ template <class T> zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, in
   return z;
 }
 
+// Drops the leading panels of z that end at or below theta_c, with their nodes
+// (the outer rule of the energies and slips, issue 13): at large sigma the
+// panels graded towards the stick edge reach down to theta ~ sqrt(e/d), 480 of
+// them at e = 1e-291, while those below theta_c = eps theta_top carry a part
+// of the zone integral of order (u_c/d) = eps^2 relative (u = d sin^2 theta is the
+// distance from the stick edge, and the integrands are bounded there). The
+// inner rules keep every panel: the Cauchy integrals need them (each carries
+// ~ln 2 of the density's log). Nothing is dropped unless e/d < ~eps^2.
+template <class T> void drop_outer_panels_below(zone_nodes<T> &z, const T &theta_c) {
+  std::size_t k = 0;
+  while (k < z.panels.size() && !(z.panels[k].hi > theta_c)) ++k;
+  if (k == 0) return;
+  const auto cut = std::ptrdiff_t(k * std::size_t(z.n));
+  z.panels.erase(z.panels.begin(), z.panels.begin() + std::ptrdiff_t(k));
+  for (auto *v : {&z.s2, &z.c2, &z.w, &z.jac, &z.H, &z.p}) v->erase(v->begin(), v->begin() + cut);
+  z.graded.erase(z.graded.begin(), z.graded.begin() + cut);
+}
+
 }}}  // namespace hs::core::gdetail

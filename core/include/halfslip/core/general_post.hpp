@@ -403,7 +403,8 @@ template <class T> class general_solution : public canonical_solution<general_so
     const T d = zone_length(z);
     if (!(d > 0)) return T(0);
     if (const knot_view<T> kv = knot_path(M)) return energy_hat_knots(kv, z, M);
-    const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
+    auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
+    gdetail::drop_outer_panels_below(O, T(eps<T>() * pi<T>() / 2));
     const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1);
     const auto IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1);
     const int Kg = graded_inner_order(M);
@@ -444,7 +445,8 @@ template <class T> class general_solution : public canonical_solution<general_so
     const T half_pi = pi<T>() / 2;
     const T thx = dl >= d ? half_pi : (2 * dl <= d ? T(asin(sqrt(dl / d))) : half_pi - asin(sqrt((d - dl) / d)));
     if (const knot_view<T> kv = knot_path(M)) return hhat_knots(kv, z, thx, M);
-    const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M, &thx);
+    auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M, &thx);
+    gdetail::drop_outer_panels_below(O, T(eps<T>() * thx));
     std::size_t np = 0;
     while (np < O.panels.size() && !(O.panels[np].hi > thx)) ++np;
     const auto IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1, z > 0 ? &thx : nullptr);

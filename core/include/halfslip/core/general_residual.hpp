@@ -203,6 +203,13 @@ zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, c
 template <class T> struct general_eval {
   T F1, F2;
   T J11, J12, J21, J22;  // dF/dx1, dF/dln e
+  // (with the Jacobian) the grain of |F1| + |F2| in the state: the change of
+  // the residual across one rounding of x1 (eps |x1|), of ln e (eps) and of the
+  // far zone d2 = 2 - d1 - e at fixed d1 and e, which is formed to ~2 eps
+  // absolute (issue 13:
+  // flat punch b_f/a = 0.999, Q/fP = 0.3, sigma = 0, zones of 2e-4 a, where
+  // |J| ~ 2e3 and no representable state had |F| below the fixed floor)
+  T grain{0};
 };
 
 template <class T> struct general_state {
@@ -234,6 +241,11 @@ template <class T> general_eval<T> general_residual(const pressure_model<T> &pm,
   r.J21 = -sg * L.I2d - R.I2d;
   r.J12 = L.I1le - sR * R.I1le - e * L.I1d;
   r.J22 = L.I2le - sR * R.I2le - e * L.I2d;
+  {
+    using std::abs;
+    const T ep = eps<T>();
+    r.grain = ep * ((abs(r.J11) + abs(r.J21)) * d1 + abs(r.J12) + abs(r.J22) + 2 * (abs(L.I1d) + abs(L.I2d)));
+  }
   return r;
 }
 

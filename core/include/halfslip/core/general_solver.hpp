@@ -49,7 +49,12 @@ template <class T> struct general_problem {
     noise_floor = 64 * eps<T>() * pi<T>() * (1 + s);
   }
   eval residual(const state &st) const { return general_residual(pm, q, s, st, n, true); }
-  T floor(const eval &) const { return noise_floor; }
+  // the rounding floor of |F1| + |F2|: the quadrature's own (64 eps pi (1 + s))
+  // or, where larger, 4 grains of the state (general_eval::grain)
+  T floor(const eval &r) const {
+    using std::max;
+    return max(noise_floor, T(4 * r.grain));
+  }
   jacobian2<T> jacobian(const state &, const eval &r) const { return {r.J11, r.J12, r.J21, r.J22}; }
   // a full step below the step tolerance after a converging one: take it
   // without evaluating the residual there (it would only confirm the step)
@@ -365,7 +370,7 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
   // with one Newton step on the 2n residual.
   for (;;) {
     const general_eval<T> r2 = general_residual(P, q, s, st, 2 * n, true);
-    if (gdetail::residual_norm(r2) <= qtol) {
+    if (gdetail::residual_norm(r2) <= max(qtol, T(4 * r2.grain))) {
       const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
       if (x.det != 0) {
         using std::exp;

@@ -177,22 +177,110 @@ template <class T> T pressure_unit(const T &P, const T &a) { return 2 * P / (pi<
 // with ep = acos(beta), beta = b_f/a. (Normalisation and the sqrt edge
 // behaviour verified with mpmath at 30 digits.) p' is log-singular at
 // x = +-beta: graded breakpoints.
+//
+// Evaluation (issue 13). The bracket above is a sum of terms of size ~1 whose
+// result is ~g c: as b_f -> a it cancelled ~4/g of its digits (3.5e4 eps at
+// b_f/a = 0.999, 1.6e6 eps at 0.9999, measured against 50 digits), and the
+// solver lost the stick zone at large sigma. It is evaluated instead from the
+// inversion integral of the profile, written in the angle tau = acos(t) of the
+// rounded part (mpmath: equal to the bracket to 1e-36):
+//   phi(x) = [T(|x|) + T(-|x|)] / g,
+//   T(X) = int_0^ep (cos tau - cos ep)/(cos tau - X) dtau   (principal value for X > cos ep).
+// The integrand is positive for X < cos ep (the flat, and the X = -|x| term).
+// With tau* = acos X, a = (tau* + ep)/2, b = (tau* - ep)/2 and r = tau*/ep:
+//   r >= 2: Gauss-Legendre in tau (the integrand is even in tau, poles at
+//     +-tau*: the rule of order N on [-ep, ep] errs by ~rho^(-2N), rho = r + sqrt(r^2 - 1);
+//     the order is the smallest of a ladder with rho^(-2N) <= eps/64), every
+//     term positive;
+//   1 < r < 2 (the flat next to the kink): T = ep - (2 sin a sin b / sin tau*) ln(sin a / sin b),
+//     which cancels at most a factor ~6 (r = 2);
+//   r < 1 (the rounded corner, principal value):
+//     T = ep + 2 cos(ep/2) sin(a) L(u) / cos(tau*/2),  u = 2 cos(ep/2) sin(tau*/2) / sin(-b),
+//     L(u) = ln(1 + u)/u: both terms positive;
+//   r = 1 (the kink): T = ep.
+// X = +-|x| enters only through cos tau - X = D - (1 - cos tau), D = 1 - |x| (X = |x|)
+// or 1 + |x| (X = -|x|), formed from the exact distance to the nearer edge.
+// phi' (Newton Jacobians only, accurate to ~eps^(3/4)): dT/dX by the same rule
+// (int (cos tau - cos ep)/(cos tau - X)^2) for r >= 2; for 1 < r < 2
+//   dT/dX = [ln(sin a/sin b)(1 - cos ep cos tau*) - sin ep sin tau*] / sin^3 tau*;
+// in the corner -(dT/dtau*)/sin tau* from the product above, and below
+// tau* = ep eps^(1/4) the even series T = T0 + T2 tau*^2 + T4 tau*^4 (sympy):
+//   T2 = sin(ep)/6 - cot(ep/2)/3,
+//   T4 = 7 sin(ep)/360 - cot(ep/2)/18 - cos(ep/2) cos(ep) / (60 sin^3(ep/2)).
 template <class T> class flat_rounded_pressure final : public pressure_model<T> {
  public:
   // beta = b_f / a in [0, 1)
   explicit flat_rounded_pressure(const T &beta) : beta_(beta) {
-    using std::acos;
+    using std::acosh;
     using std::asin;
+    using std::cos;
+    using std::log;
+    using std::pow;
+    using std::sin;
     using std::sqrt;
     if (!(beta >= 0) || !(beta < 1)) throw error(status::bad_geometry, "flat punch: need 0 <= b_f/a < 1");
-    phi0_ = asin(beta);
-    c0_ = sqrt((1 - beta) * (1 + beta));
-    t0_ = beta / c0_;
     g_ = load_factor(beta);
+    if (beta == 0) return;
+    // ep = acos(beta); sin and cos of ep/2 from 1 -+ beta (1 - beta exact for
+    // beta >= 1/2): no loss as beta -> 1, and at the kink dist = 1 - beta
+    // sin(b) = sin(tau*/2) cos(ep/2) - cos(tau*/2) sin(ep/2) is exactly 0
+    omb_ = 1 - beta;
+    se2_ = sqrt(omb_ / 2);
+    ce2_ = sqrt((1 + beta) / 2);
+    ep_ = 2 * asin(se2_);
+    sep_ = 2 * se2_ * ce2_;
+    cep_ = beta;
     {
-      using std::cbrt;
-      kthr_ = cbrt(eps<T>());
+      // the corner's even series in tau* (sympy; c = cos(ep/2), s = sin(ep/2), every term < 0):
+      //   T2 = -c^3/(3 s),  T4 = -c^5/(60 s^3) - c^3/(18 s),
+      //   T6 = -c^7/(560 s^5) - c^5/(180 s^3) - 17 c^3/(2160 s),
+      //   T8 = -c^9/(4032 s^7) - c^7/(1120 s^5) - c^5/(800 s^3) - 31 c^3/(30240 s);
+      // in x = (tau*/ep)^2 the terms fall by ~x each (measured): the derivative
+      // from them errs by ~x^4 relative, the product rule above by ~eps/sqrt(x):
+      // balanced at x = eps^(2/9) (tau* = ep/55 in double; both sides within ~60 eps)
+      const T c = ce2_, s = se2_, c2 = c * c, s2 = s * s;
+      const T k = c2 / s2;
+      t2_ = -c2 * c / (3 * s);
+      t4_ = t2_ * (k / 20 + T(1) / 6);
+      t6_ = -c2 * c / s * (k * k / 560 + k / 180 + T(17) / 2160);
+      t8_ = -c2 * c / s * (k * k * k / 4032 + k * k / 1120 + k / 800 + T(31) / 30240);
+      tau_series_ = ep_ * pow(eps<T>(), T(1) / 9);
     }
+    // the Gauss ladder: order N serves r >= rmin(N), the smallest r >= 2 with
+    // (2r)^(-2N)-like truncation below eps/64 relative: rho(r)^(-2N) 16 r^2 <= eps/64
+    // (the factor r^2: the integrand's pole part is ~r^2 times the integral,
+    // which is small because cos tau - cos ep vanishes at the end)
+    const T L = log(1024 / eps<T>());
+    auto need = [&](const T &r) { return (L + 2 * log(r)) / (2 * acosh(r)); };
+    for (int N : {4, 6, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96, 112, 128, 160, 192, 256}) {
+      rung r;
+      if (!(need(T(2)) > N)) r.rmin = 2;
+      else {
+        T lo = 2, hi = 2;
+        while (need(hi) > N) hi *= 2;
+        for (int it = 0; it < 200 && hi - lo > hi / 64; ++it) {
+          const T m = (lo + hi) / 2;
+          (need(m) > N ? lo : hi) = m;
+        }
+        r.rmin = hi;
+      }
+      const auto rule = gauss_legendre<T>(N);
+      for (int k = 0; k < N; ++k) {
+        if (!(rule->x[k] > 0)) continue;
+        const T tau = ep_ * rule->x[k];
+        const T sh = sin(tau / 2);
+        r.w.push_back(ep_ * rule->w[k]);
+        r.vers.push_back(2 * sh * sh);                                       // 1 - cos tau
+        r.delta.push_back(2 * sin((ep_ + tau) / 2) * sin((ep_ - tau) / 2));  // cos tau - cos ep
+      }
+      r.dmin = vers_of(r.rmin * ep_);
+      ladder_.push_back(std::move(r));
+      if (!(ladder_.back().rmin > 2)) break;
+    }
+    dclosed_ = vers_of(closed_form_limit() * ep_);
+    dseries_ = vers_of(tau_series_);
+    if (ladder_.back().rmin > 2)
+      throw error(status::bad_option, "flat punch: precision beyond the Gauss ladder of the pressure");
   }
   // g(beta) = pi - 2 asin(beta) - sin(2 asin beta) = 2ep - sin(2ep), ep = acos(beta)
   static T load_factor(const T &beta) {
@@ -248,75 +336,136 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     c = reduced_load_half_width(beta_, q);
     return true;
   }
+  // the edge coefficient phi(+-1) = (ep + sin ep + T(-1)) / g, exactly (the
+  // default extrapolation errs by ~(h/(1 - beta))^3: 3e-9 at beta = 0.999)
+  T edge_phi(int) const override {
+    if (beta_ == 0) return T(1);
+    return eval(T(1), T(2), T(0), nullptr);
+  }
   T beta() const { return beta_; }
+  // The switches of the evaluation (tests/test_switches.cpp), each a threshold
+  // in D = 1 - X (X = |x| or -|x|, see above): the closed forms below
+  // closed_form_distance() (tau* = 2 ep), the Gauss ladder above, with the
+  // order of rung j from ladder_distances()[j] up (the rungs by increasing
+  // order); below series_distance() the corner's derivative takes its series.
+  static T closed_form_limit() { return T(2); }
+  T closed_form_distance() const { return dclosed_; }
+  std::vector<T> ladder_distances() const {
+    std::vector<T> v;
+    for (const auto &r : ladder_) v.push_back(r.dmin);
+    return v;
+  }
+  std::vector<int> ladder_orders() const {
+    std::vector<int> v;
+    for (const auto &r : ladder_) v.push_back(int(2 * r.w.size()));
+    return v;
+  }
+  T series_distance() const { return dseries_; }
 
  private:
-  // phi and (if d) phi' = d phi / dx (analytic).
-  T eval(const T &x, const T &dm, const T &dp, T *d) const {
+  struct rung {
+    T rmin, dmin;  // r = tau*/ep from which the rung serves, and 1 - cos(rmin ep) (> 2: never)
+    std::vector<T> w, vers, delta;
+  };
+  // T(X) and (if d) dT/dX, from D = 1 - X = 1 - cos tau* and Dc = 1 + X (each
+  // formed by the caller from the exact edge distance). 1 - cos tau* grows with
+  // tau* on [0, pi], so every switch in r = tau*/ep is a threshold in D.
+  T term(const T &D, const T &Dc, T *d) const {
     using std::abs;
+    using std::asin;
     using std::log;
-    using std::min;
+    using std::log1p;
     using std::sqrt;
-    const T ax = abs(x);
-    const T dist = min(dm, dp);           // distance to the nearer edge
-    const T c = sqrt(dist * (2 - dist));  // sqrt(1 - x^2), cos(phi)
-    const T s0 = beta_;
-    if (s0 == 0) {
+    if (D >= dclosed_) {
+      std::size_t j = 0;
+      while (j + 1 < ladder_.size() && ladder_[j].dmin > D) ++j;
+      const rung &R = ladder_[j];
+      T s = 0, sd = 0;
+      for (std::size_t k = 0; k < R.w.size(); ++k) {
+        const T inv = 1 / (D - R.vers[k]);
+        const T f = R.w[k] * R.delta[k] * inv;
+        s += f;
+        sd += f * inv;
+      }
+      if (d) *d = sd;
+      return s;
+    }
+    // sin and cos of tau*/2 from D = 1 - cos tau* and Dc = 1 + cos tau*; then
+    // sin a, sin b, cos a, cos b by the addition theorems (no trigonometric call)
+    // (at the kink D = 1 - beta exactly: sin b = 0, T = ep)
+    const T sh = sqrt(D / 2), ch = sqrt(Dc / 2);
+    // sin b = (sin^2(tau*/2) - sin^2(ep/2))/sin a = (D - (1 - beta))/(2 sin a): the
+    // difference D - (1 - beta) of two numbers known exactly near the kink (Sterbenz)
+    const T sa = sh * ce2_ + ch * se2_, sb = (D - omb_) / (2 * sa);
+    const T st = 2 * sh * ch;         // sin tau*
+    const T omcc = omb_ + beta_ * D;  // 1 - cos ep cos tau*, without cancellation
+    if (sb > 0) {
+      const T lam = log1p(2 * ch * se2_ / sb);  // ln(sin a / sin b)
+      if (d) *d = (lam * omcc - sep_ * st) / (st * st * st);
+      return ep_ - sa * sb / (sh * ch) * lam;
+    }
+    if (sb == 0) {
+      // the kink: T = ep; dT/dX is log-singular there, its finite part is returned
+      if (d) *d = (log(sa) * omcc - sep_ * st) / (st * st * st);
+      return ep_;
+    }
+    const T nb = -sb;  // sin(-b) > 0
+    const T u = 2 * ce2_ * sh / nb;
+    T L, Lp;  // ln(1 + u)/u and its derivative
+    if (u < T(0.125)) {
+      // L = sum_k (-u)^k/(k+1), L' = sum_{k>=1} k (-1)^k u^(k-1)/(k+1): alternating, |u| < 1/8
+      L = 1;
+      Lp = 0;
+      T pk = 1;  // (-1)^(k-1) u^(k-1)
+      int k = 1;
+      for (; k < 1000; ++k) {
+        const T tl = -pk * u / T(k + 1), tp = -pk * T(k) / T(k + 1);
+        L += tl;
+        Lp += tp;
+        if (!(abs(tp) > eps<T>() * abs(Lp) / 8)) break;
+        pk *= -u;
+      }
+      check_iterations(k, 1000, "flat punch: the series of ln(1+u)/u did not converge");
+    } else {
+      L = log1p(u) / u;
+      Lp = (1 / (1 + u) - L) / u;
+    }
+    const T val = ep_ + 2 * ce2_ * sa * L / ch;
+    if (d) {
+      if (D < dseries_) {
+        // even series in tau*: dT/dX = -(dT/dtau*)/sin tau*
+        //   = -(2 T2 + 4 T4 tau*^2 + 6 T6 tau*^4 + 8 T8 tau*^6) tau*/sin tau*
+        const T ts = 2 * asin(sh), t2 = ts * ts;
+        *d = -(2 * t2_ + t2 * (4 * t4_ + t2 * (6 * t6_ + t2 * 8 * t8_))) * (st > 0 ? T(ts / st) : T(1));
+      } else {
+        // dT/dtau* = 2 cos(ep/2) [cos(a)/2 L/ch + sin(a) L' u' / ch + sin(a) L sh/(2 ch^2)],
+        // u' = du/dtau* = 2 cos(ep/2) [ch/(2 nb) + sh cos(-b)/(2 nb^2)]
+        const T ca = ch * ce2_ - sh * se2_, cb = ch * ce2_ + sh * se2_;
+        const T up = ce2_ * (ch / nb + sh * cb / (nb * nb));
+        const T dts = 2 * ce2_ * (ca * L / (2 * ch) + sa * Lp * up / ch + sa * L * sh / (2 * ch * ch));
+        *d = -dts / st;
+      }
+    }
+    return val;
+  }
+  // phi and (if d) phi' = d phi / dx.
+  T eval(const T &x, const T &dm, const T &dp, T *d) const {
+    using std::min;
+    if (beta_ == 0) {
       if (d) *d = 0;
       return T(1);
     }
-    const T pf = pi<T>() - 2 * phi0_;
-    if (ax > s0 && 2 * c <= c0_) {
-      // near the edges: bracket/c = (pi - 2phi0) + 2 t0 [h(z1) - h(z2)], h(z) = atanh(z)/z,
-      // z1 = t0 c/|x|, z2 = c/c0 (both <= 1/2 here). With h'(z) = z k(z):
-      // d/d|x| [h(z1) - h(z2)] = -t0^2 k(z1)/|x|^3 + |x| k(z2)/c0^2.
-      const T z1 = t0_ * c / ax, z2 = c / c0_;
-      const T h1 = atanh_ratio(z1), h2 = atanh_ratio(z2);
-      if (d) {
-        const T dd = 2 * t0_ * (-t0_ * t0_ * k_ratio(z1, h1) / (ax * ax * ax) + ax * k_ratio(z2, h2) / (c0_ * c0_)) /
-                     g_;
-        *d = x < 0 ? -dd : dd;
-      }
-      return (pf + 2 * t0_ * (h1 - h2)) / g_;
-    }
-    // kink-safe form: with A = sin(phi+phi0), D = sin(phi-phi0),
-    // bracket = (pi - 2phi0) c + |x| ln A - (|x| - s0) ln|D| + s0 ln(sin((phi+phi0)/2)/cos(delta/2)) - s0 ln(c0 + c),
-    // where sin((phi+phi0)/2)/cos((phi-phi0)/2) = (|x| + s0)/(1 + c c0 + |x| s0) (all terms positive).
-    // d bracket/d|x| = -(pi - 2phi0) |x|/c + ln|A/D| (the remaining terms cancel).
-    const T A = ax * c0_ + s0 * c;
-    const T D = ax * c0_ - s0 * c;
-    const T lA = log(A);
-    const T lD = D != 0 ? T(log(abs(D))) : T(0);
-    const T br = pf * c + ax * lA + s0 * log((ax + s0) / ((1 + c * c0_ + ax * s0) * (c0_ + c))) - (ax - s0) * lD;
-    const T ph = br / (c * g_);
+    const T dist = min(dm, dp);  // 1 - |x|
+    T dpl = 0, dmi = 0;
+    // X = |x|: 1 - X = dist; X = -|x|: 1 - X = 2 - dist
+    const T tp = term(dist, 2 - dist, d ? &dpl : nullptr);
+    const T tm = term(2 - dist, dist, d ? &dmi : nullptr);
     if (d) {
-      // phi = br/(c g): phi' = br'/(c g) + |x| phi / c^2 (c >= c0/2 here)
-      const T dbr = -pf * ax / c + lA - lD;
-      const T dd = dbr / (c * g_) + ax * ph / (c * c);
+      // d/d|x| [T(|x|) + T(-|x|)] = T'(|x|) - T'(-|x|)
+      const T dd = (dpl - dmi) / g_;
       *d = x < 0 ? -dd : dd;
     }
-    return ph;
-  }
-  // k(z) = h'(z)/z = sum_{j>=1} 2j/(2j+1) z^(2j-2) for 0 <= z <= 1/2, h = h(z) = atanh(z)/z.
-  // Only for Jacobians: the closed form is used down to z^2 = cbrt(eps) (it loses
-  // at most a factor 1/z^2 to cancellation: still eps^(2/3) accurate), the series below.
-  T k_ratio(const T &z, const T &h) const {
-    const T z2 = z * z;
-    if (z2 >= kthr_) return (1 / (1 - z2) - h) / z2;
-    T sum = T(2) / 3, term = 1;
-    int j = 2;
-    for (; j < 10000; ++j) {
-      term *= z2;
-      const T t = term * T(2 * j) / T(2 * j + 1);
-      sum += t;
-      if (!(t > eps<T>() * sum / 4)) break;
-    }
-    check_iterations(j, 10000, "flat punch: the series of k(z) did not converge");
-    return sum;
-  }
-  static T atanh_ratio(const T &z) {
-    using std::atanh;
-    return z == 0 ? T(1) : atanh(z) / z;
+    return (tp + tm) / g_;
   }
   // beta in (0, 1) with g(beta)/beta^2 = target (decreasing in beta from +inf to 0)
   static T solve_ratio(const T &target) {
@@ -339,7 +488,19 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     check_iterations(it, 400, "flat punch: the half-width from the load did not converge");
     return b;
   }
-  T beta_, phi0_, c0_, t0_, g_, kthr_;
+  T beta_, g_;
+  T ep_{0}, ce2_{0}, se2_{0}, sep_{0}, cep_{0};      // acos(beta); cos, sin of ep/2; sin, cos of ep
+  T omb_{0};                                         // 1 - beta
+  T tau_series_{0}, t2_{0}, t4_{0}, t6_{0}, t8_{0};  // corner derivative: switch and series coefficients
+  T dclosed_{0}, dseries_{0};                        // the switches tau* = 2 ep and tau* = tau_series_ in D
+  // 1 - cos(tau) for tau in [0, pi]; 3 (above every D) beyond pi
+  static T vers_of(const T &tau) {
+    using std::sin;
+    if (!(tau <= pi<T>())) return T(3);
+    const T s = sin(tau / 2);
+    return 2 * s * s;
+  }
+  std::vector<rung> ladder_;
 };
 
 // ---------------------------------------------------------------------------
@@ -415,10 +576,26 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     const T z = dist * (2 - dist);  // 1 - x^2
     return n_ / 2 * F(x, z);
   }
+  // x = 0 (graded unless n is even); for large n also plain splits at the
+  // distances 2^k/n from each edge (k >= 0, up to 1/4): phi rises from ~1/2 in
+  // the middle to n/2 at the edges across an edge layer of width ~1/n (a pole of
+  // phi at distance ~ -1/n), which one panel reaching to the edge resolved only at
+  // orders of several hundred (issue 13: n = 999 at sigma/fp0 = 100 ran 18 s and
+  // failed; the quadrature of F2 at orders 32 and 64 differed by 3e-4)
   std::vector<breakpoint<T>> breakpoints() const override {
-    if (even_) return {};
-    return {{T(0), true}};
+    std::vector<breakpoint<T>> b;
+    if (n_ >= edge_split_min()) {
+      for (T dist = 1 / n_; dist <= T(0.25); dist *= 2) {
+        b.push_back({dist - 1, false});
+        b.push_back({1 - dist, false});
+      }
+    }
+    if (!even_) b.push_back({T(0), true});
+    std::sort(b.begin(), b.end(), [](const breakpoint<T> &u, const breakpoint<T> &v) { return u.x < v.x; });
+    return b;
   }
+  // the exponent from which the edge layer gets its splits
+  static T edge_split_min() { return T(16); }
   bool symmetric() const override { return true; }
   T accuracy_eps() const override { return n_ > 4 ? n_ : T(4); }
   T edge_phi(int) const override { return n_ / 2; }  // F(+-1) = 2F1(..; 0) = 1

@@ -36,8 +36,10 @@
 //     rel_d = 32 eps + 16 eps min(1, |q| + |s|/4) a / d_min,  rel_E = 3 rel_d + 16 eps.
 //   (the a/d term is the conditioning of d = m - s/4 near the regime boundary)
 // * quadrature (general.hpp) at tolerance rt (0: full precision), with
-//   w = (b1 + b2)/a the stick-zone width:
-//     rel_d = 16 (eps + rt)(1 + a/d_min + 1/max(w, sqrt(1 - |q|)/4)),  rel_E = 3 rel_d.
+//   w = (b1 + b2)/a the stick-zone width and acc the pressure's accuracy in
+//   units of eps (pressure_model::accuracy_eps: 4 for the closed forms, n for
+//   the power law):
+//     rel_d = 16 (eps max(1, acc/4) + rt)(1 + a/d_min + 1/max(w, sqrt(1 - |q|)/4)),  rel_E = 3 rel_d.
 //   The 1/w term is the conditioning near sliding (w -> 0): at 1 - Q/fP = 1e-8
 //   (w = 2e-4) the error in d is 1.2e-12 (tests/test_select.cpp). A stick zone
 //   made narrow by a large sigma (w ~ exp(-c s)) is not ill conditioned: the
@@ -61,8 +63,13 @@
 namespace hs { namespace core {
 
 template <class T> struct error_estimate {
-  T slip_zone{0};  // relative error of d1, d2
-  T energy{0};     // relative error of E1, E2
+  T slip_zone{0};  // relative error of d1, d2 (resolved zones)
+  T energy{0};     // relative error of E1, E2 (resolved zones)
+  // issue 13 (item 3): the model's resolution r, a bound on the absolute error
+  // of either zone length (units of a), and the number of zones at or below it
+  // (zone_unresolved): those are left out of the relative errors above
+  T resolution{0};
+  int unresolved{0};
   T value() const {
     using std::max;
     return max(slip_zone, energy);
@@ -70,6 +77,26 @@ template <class T> struct error_estimate {
 };
 
 template <class T> T infinite() { return std::numeric_limits<T>::infinity(); }
+
+// Zone resolution (issue 13, item 3). Each model bounds the error of a zone
+// length (units of a) by |d_i - d_i,true| <= rel d_i + r: r, its resolution,
+// is the absolute part of the bound (the closed forms' d_i = m -+ s/4 cancelling
+// at the regime boundary; the quadrature's state resolving lengths to ~eps;
+// the asymptotic model's own error). A zone with d_i <= r (d_i = 0 included) is
+// not resolved: it may be empty or not, and slip either way (the regime
+// boundary, where one zone closes and changes direction). Such a zone is left
+// out of the relative estimate, and the C ABI reports it with slip direction 0
+// (regime HS_REGIME_BOUNDARY when it is the only one, STUCK when both are).
+// r = 0: the model is exact for empty zones (a stuck scene).
+template <class T> bool zone_unresolved(const T &d, const T &r) { return r > 0 && !(d > r); }
+// d if resolved, else 0 (counted in n)
+template <class T> T resolved_zone(const T &d, const T &r, int &n) {
+  if (!zone_unresolved(d, r)) return d;
+  ++n;
+  return T(0);
+}
+// a length below the spacing of the smallest numbers cannot be resolved
+template <class T> T length_floor() { return 4 * boost::math::tools::min_value<T>() * eps<T>(); }
 
 // Floors for lengths and energies near the bottom of T's range (issue 13): a
 // zone length d (units of a) is known at best to the spacing of the smallest
@@ -109,13 +136,19 @@ template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T>
     w[i] = om;
   }
   const T Dm = max(D[0], D[1]);
-  if (!(d[0] > 0) && !(d[1] > 0)) return e;  // both zones empty (the loads underflow): stuck, as the model says
+  T ab[2];
   for (int i = 0; i < 2; ++i) {
-    const T ab = 2 * Dm * Dm + 32 * D[i] * w[i] + 16 * eps<T>() * D[i];
-    const T rd = d[i] > 0 ? ab / d[i] + tiny_length_floor(d[i]) : infinite<T>();
+    ab[i] = 2 * Dm * Dm + 32 * D[i] * w[i] + 16 * eps<T>() * D[i];
+    e.resolution = max(e.resolution, T(ab[i] + length_floor<T>()));
+  }
+  for (int i = 0; i < 2; ++i) d[i] = resolved_zone(d[i], e.resolution, e.unresolved);
+  if (!(d[0] > 0) && !(d[1] > 0)) return e;  // no zone resolved (the loads underflow): nothing to bound relatively
+  for (int i = 0; i < 2; ++i) {
+    if (!(d[i] > 0)) continue;
+    const T rd = ab[i] / d[i] + tiny_length_floor(d[i]);
     const T r2 = (1 + rd) * (1 + rd), re = r2 * r2 - 1;
     e.slip_zone = max(e.slip_zone, rd);
-    e.energy = max(e.energy, d[i] > 0 ? re + tiny_energy_floor(d[i]) : re);
+    e.energy = max(e.energy, T(re + tiny_energy_floor(d[i])));
   }
   return e;
 }
@@ -131,31 +164,40 @@ template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &
   using std::abs;
   using std::min;
   error_estimate<T> e;
-  const T dm = smallest_zone(d1, d2);
-  if (!(dm > 0)) return e;  // stuck
   const T ep = eps<T>();
   // d_i = m -+ s/4 (m ~ q/2): rounding of the two terms, relative to d_i
   const T scale = min(T(1), T(abs(q) + abs(s) / 4));
+  e.resolution = (q == 0 && s == 0) ? T(0) : T(16 * ep * scale + length_floor<T>());
+  const T dm = smallest_zone(resolved_zone(d1, e.resolution, e.unresolved),
+                             resolved_zone(d2, e.resolution, e.unresolved));
+  if (!(dm > 0)) return e;  // stuck, or no zone resolved
   e.slip_zone = 32 * ep + 16 * ep * scale / dm + tiny_length_floor(dm);
   e.energy = 3 * e.slip_zone + 16 * ep + tiny_energy_floor(dm);
   return e;
 }
 
-template <class T>
-error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, const T &width, const T &q) {
+// acc: the pressure's accuracy in units of eps (pressure_model::accuracy_eps;
+// 4 for the closed forms): the eps term grows with it beyond 4 (issue 13: the
+// power law at n = 999, Q/fP = 0.3, sigma/fp0 = -3 erred by 4.2e-13 in d2
+// against an estimate of 6.6e-14 that assumed a pressure good to a few eps)
+template <class T> error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, const T &width,
+                                                         const T &q, const T &acc = T(4)) {
+  using std::max;
   error_estimate<T> e;
-  const T dm = smallest_zone(d1, d2);
-  if (!(dm > 0)) return e;
+  const T pe = eps<T>() * max(T(1), T(acc / 4));
+  e.resolution = (d1 == 0 && d2 == 0 && q == 0) ? T(0) : T(16 * (pe + rt) + length_floor<T>());
+  const T dm = smallest_zone(resolved_zone(d1, e.resolution, e.unresolved),
+                             resolved_zone(d2, e.resolution, e.unresolved));
+  if (!(dm > 0)) return e;  // stuck, or no zone resolved
   // conditioning near sliding: the stick zone is narrow because q -> 1 (then
   // width ~ 2 sqrt(1 - q)), not when large sigma shrinks it onto the sliding
   // stick point, where d1, d2 are well conditioned (issue 13: at sigma/fp0 =
   // 50, width 7e-12 gave an estimate of 1.4e-3 for a result good to 1e-15)
   using std::abs;
-  using std::max;
   using std::sqrt;
   // (/4: margin for pressures whose shear-only stick zone is narrower than Hertz's)
   const T wc = max(width, T(sqrt(T(abs(1 - abs(q)))) / 4));
-  e.slip_zone = 16 * (eps<T>() + rt) * (1 + 1 / dm + 1 / wc) + tiny_length_floor(dm);
+  e.slip_zone = 16 * (pe + rt) * (1 + 1 / dm + 1 / wc) + tiny_length_floor(dm);
   e.energy = 3 * e.slip_zone + tiny_energy_floor(dm);
   return e;
 }
