@@ -504,9 +504,9 @@ TEST_CASE("eq (12): the integrands need the factor s (erratum E10)") {
 // (opposite_start_table). Its accuracy decides only how many Newton steps
 // precede the hand-off to the long-double step, never the result: here the
 // count, over the table's whole domain (Q/fP to 0.999, sigma from 1e-12 past
-// the regime boundary to far beyond saturation). Measured: mean 1.83, 98.9 %
+// the regime boundary to far beyond saturation). Measured: mean 1.82, 99 %
 // of scenes within 3; a few of the closest to the boundary (sigma - sigma_b
-// ~ 1e-11) take up to 9 (d1 is then a difference of the inputs, and the
+// ~ 1e-11) take up to 7 (d1 is then a difference of the inputs, and the
 // steps in it stay at the rounding noise until the residual is at its floor).
 TEST_CASE("issue 16: Newton from the stored start hands off after about two steps") {
   hs_test::rng r(16);
