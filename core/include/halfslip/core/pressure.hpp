@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -674,8 +675,10 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
     if (kq_) kq_->set_scale(scale_);
   }
   // the interior-sample count from which the knot quadrature is used
-  // (test_switches.cpp)
-  static constexpr std::size_t knot_tree_min = 256;
+  // (test_switches.cpp); double only: its rules (16 points, eta = 2) and the
+  // energies' fast sums (24 terms) are accurate to ~1e-16, not to the rounding
+  // of a longer type, which keeps the panel path
+  static constexpr std::size_t knot_tree_min = std::numeric_limits<T>::digits <= 53 ? 256 : std::size_t(-1);
   T phi(const T &x, const T &, const T &) const override { return scale_ * interp(x, false); }
   T dphi(const T &x, const T &, const T &) const override { return scale_ * interp(x, true); }
   std::vector<breakpoint<T>> breakpoints() const override {
