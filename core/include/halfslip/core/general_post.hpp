@@ -134,6 +134,23 @@ template <class T> class general_solution : public canonical_solution<general_so
       thxc = ratio >= 1 ? T(0) : half_pi - thx;
       Hx = H(thx, thxc);
       grade.push_back(thx);
+      // The quotient (H - Hx)/(sin^2 theta - sin^2 theta_x) on a piece next to
+      // the target's: H there is the neighbouring segment's cubic, whose value at
+      // theta_x differs from Hx by ~J delta^2 (J: the jump of phi'' at the knot
+      // between them, delta: the target's distance from it), a pole at theta_x
+      // that a fixed rule resolves only on panels graded towards the knot (for
+      // rough samples J delta^2 is not small: 7e-11 in B_x at 1e-3 noise). Cuts
+      // at theta_x +- delta 2^j, delta the distance to the nearest knot.
+      T delta = half_pi;
+      for (const auto &pc : pieces) {
+        const T a = theta(Z > 0 ? pc.first : pc.second), b = theta(Z > 0 ? pc.second : pc.first);
+        if (a <= thx && thx <= b) delta = std::min(delta, std::min(T(thx - a), T(b - thx)));
+      }
+      if (delta > 0)
+        for (T g = delta; g < half_pi; g *= 2) {
+          if (thx - g > 0) grade.push_back(thx - g);
+          if (thx + g < half_pi) grade.push_back(thx + g);
+        }
     }
     std::sort(grade.begin(), grade.end());
     T lsum = 0;
