@@ -7,13 +7,14 @@
 #   bench/results/methods.csv, stability.csv  every model: speed, accuracy, stability (issue 5);
 #     charts docs/figures/speed_accuracy.svg, docs/figures/stability.svg (docs/benchmarks.md)
 #   bench/results/fields.csv, fields_accuracy.csv  stresses (issue 15; Google Benchmark)
-#   bench/results/samples.csv    sampled pressure: time and accuracy against the sample count (issue 13)
+#   bench/results/samples.csv, samples_cli.csv  sampled pressure: time, peak memory and accuracy against
+#                                the sample count, C ABI and CLI (issue 13; scripts/bench_samples.sh)
 #   bench/results/opposite.csv   opposite-sign slip/energies old vs new, hs_solve_batch vs a loop (issue 16)
 # The charts are drawn by halfslip.plot (matplotlib): Debian's /usr/bin/python3 with
 # python3-matplotlib (HS_PYTHON overrides it).
 set -euo pipefail
 export HS_BENCH=ON
-export HS_EXTRA_PACKAGES="libbenchmark-dev python3-matplotlib"
+export HS_EXTRA_PACKAGES="libbenchmark-dev python3-matplotlib time"
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
 mkdir -p "$HS_ROOT/bench/results"
 "$HS_BUILD/bench/bench_hertz" "$HS_ROOT/bench/results/hertz.csv"
@@ -31,8 +32,8 @@ plot "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$HS_
 "$HS_BUILD/bench/bench_history" "$HS_ROOT/bench/results/history.csv" | tee "$HS_ROOT/bench/results/history_summary.md"
 # point evaluations and energies on the general path
 "$HS_BUILD/bench/bench_points" | tee "$HS_ROOT/bench/results/points.txt"
-# sampled pressure against the sample count, 10^3 to 10^6 (issue 13 item 4)
-"$HS_BUILD/bench/bench_samples" | tee "$HS_ROOT/bench/results/samples.csv"
+# sampled pressure against the sample count, 10^3 to 10^6: time and peak memory, C ABI and CLI (issue 13 item 4)
+HS_BUILD="$HS_BUILD" HS_ROOT="$HS_ROOT" bash "$HS_ROOT/scripts/bench_samples.sh"
 # stresses (issue 15): surface and subsurface speed (Google Benchmark), accuracy vs quadrature from scratch
 if [ -x "$HS_BUILD/bench/bench_fields" ]; then
   "$HS_BUILD/bench/bench_fields" "$HS_ROOT/bench/results/fields_accuracy.csv" --benchmark_repetitions=5 \

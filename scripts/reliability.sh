@@ -3,7 +3,8 @@
 #   1. the whole ctest suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 #   2. the threaded tests built with ThreadSanitizer
 #   3. valgrind memcheck on the C ABI test program
-#   4. a bounded libFuzzer run (clang) of the double and the reference C ABI
+#   4. a bounded libFuzzer run (clang) of the double and the reference C ABI, of sampled
+#      pressures through the C ABI and of the CLI's pressure-file parser (issue 13)
 # Sanitizer and fuzz builds use a short precision ladder (HALFSLIP_REF_TIERS)
 # to keep build time down. HS_FUZZ_SECONDS sets the time per fuzz target.
 set -euo pipefail
@@ -34,9 +35,9 @@ valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=de
 echo "== reliability 4/4: libFuzzer, ${HS_FUZZ_SECONDS:-20} s per target"
 cmake -S . -B build-fuzz "${common[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DHALFSLIP_FUZZ=ON \
   -DHALFSLIP_BUILD_TESTS=OFF -DHALFSLIP_BUILD_CLI=OFF -DHALFSLIP_SANITIZE=address,undefined >/dev/null
-cmake --build build-fuzz -j "$jobs" --target fuzz_solve fuzz_ref fuzz_history >/dev/null
+cmake --build build-fuzz -j "$jobs" --target fuzz_solve fuzz_ref fuzz_samples fuzz_pressure_file fuzz_history >/dev/null
 mkdir -p tests/fuzz/crashes
-for t in solve ref history; do
+for t in solve ref samples pressure_file history; do
   work="$(mktemp -d)"
   cp tests/fuzz/corpus/$t/* "$work/"
   # crash inputs are written to tests/fuzz/crashes/: copy them into corpus/$t to keep them as regression tests

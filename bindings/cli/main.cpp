@@ -3,6 +3,8 @@
 //   halfslip table [options]   high-precision benchmark table over a grid (reference)
 #include <halfslip/halfslip.h>
 
+#include "pressure_file.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -305,64 +307,14 @@ const std::vector<std::string> kSolveKeys = {"--geometry",
                                              "--nu",
                                              "--fields-at"};  // issue 15
 
-// Pressure samples (--pressure-file): two columns x p per line, separated by
-// whitespace or one comma; '#' starts a comment; blank lines are skipped; the
-// first non-comment line may be a header (its first field is not a number).
-// Every rejection names the file, the line and the rule broken.
-struct samples {
-  std::string path;
-  std::vector<double> x, p;
-  std::vector<int> line;  // line number of each sample
-  int last_line = 0;      // number of lines in the file
-};
-
-[[noreturn]] void bad_sample(const samples &s, int ln, const std::string &rule) {
-  die("bad --pressure-file '" + s.path + "', line " + std::to_string(ln) + ": " + rule);
-}
-
-std::string trim(const std::string &t) {
-  const size_t b = t.find_first_not_of(" \t"), e = t.find_last_not_of(" \t");
-  return b == std::string::npos ? "" : t.substr(b, e - b + 1);
-}
-
-// The content of a line of an input file, in place: no CR, no '#' comment, no
-// surrounding blanks; false if nothing is left.
-bool content_of_line(std::string &t) {
-  if (!t.empty() && t.back() == '\r') t.pop_back();
-  const size_t hash = t.find('#');
-  if (hash != std::string::npos) t.erase(hash);
-  t = trim(t);
-  return !t.empty();
-}
-
-// Fields of one line: comma-separated if it has a comma, else whitespace-separated.
-std::vector<std::string> split_fields(const std::string &t) {
-  std::vector<std::string> out;
-  if (t.find(',') != std::string::npos) {
-    size_t b = 0;
-    for (;;) {
-      const size_t c = t.find(',', b);
-      out.push_back(trim(t.substr(b, c == std::string::npos ? std::string::npos : c - b)));
-      if (c == std::string::npos) break;
-      b = c + 1;
-    }
-  } else {
-    size_t b = 0;
-    while ((b = t.find_first_not_of(" \t", b)) != std::string::npos) {
-      const size_t e = t.find_first_of(" \t", b);
-      out.push_back(t.substr(b, e == std::string::npos ? std::string::npos : e - b));
-      b = e;
-    }
-  }
-  return out;
-}
-
-bool is_number(const std::string &t, double &v) {
-  if (t.empty()) return false;
-  char *end = nullptr;
-  v = std::strtod(t.c_str(), &end);
-  return *end == '\0';
-}
+// Pressure samples (--pressure-file): the parser and its rules are in
+// pressure_file.cpp (shared with its fuzz target, tests/fuzz/fuzz_pressure_file.cpp);
+// a rejection there is a pressure_file_error naming the file, the line and the rule.
+using halfslip_cli::content_of_line;
+using halfslip_cli::is_number;
+using halfslip_cli::samples;
+using halfslip_cli::split_fields;
+using halfslip_cli::trim;
 
 // The whole file named by the option flag (or die naming both).
 std::string read_whole_file(const std::string &path, const char *flag) {
@@ -376,70 +328,23 @@ std::string read_whole_file(const std::string &path, const char *flag) {
 }
 
 samples read_samples(const std::string &path) {
-  samples s;
-  s.path = path;
-  std::string all = read_whole_file(path, "--pressure-file");
-  if (all.compare(0, 3, "\xEF\xBB\xBF") == 0) all.erase(0, 3);  // UTF-8 byte order mark
-  bool header_allowed = true;
-  size_t pos = 0;
-  while (pos < all.size()) {
-    size_t nl = all.find('\n', pos);
-    if (nl == std::string::npos) nl = all.size();
-    std::string t = all.substr(pos, nl - pos);
-    pos = nl + 1;
-    const int ln = ++s.last_line;
-    if (!content_of_line(t)) continue;
-    const std::vector<std::string> fl = split_fields(t);
-    double x = 0, p = 0;
-    const bool xnum = is_number(fl[0], x);
-    if (!xnum && header_allowed && fl.size() >= 2) {  // a header such as "x p" or "x [m],p [Pa]"
-      header_allowed = false;
-      continue;
-    }
-    header_allowed = false;
-    if (fl.size() != 2)
-      bad_sample(s, ln,
-                 std::to_string(fl.size()) + " column" + (fl.size() == 1 ? "" : "s") +
-                     ", expected 2 (x p, separated by spaces, tabs or one comma)");
-    if (!xnum) bad_sample(s, ln, "x '" + fl[0] + "' is not a number");
-    if (!is_number(fl[1], p)) bad_sample(s, ln, "p '" + fl[1] + "' is not a number");
-    if (std::isnan(x) || std::isnan(p)) bad_sample(s, ln, std::string(std::isnan(x) ? "x" : "p") + " is NaN");
-    if (!std::isfinite(x) || !std::isfinite(p))
-      bad_sample(s, ln, std::string(!std::isfinite(x) ? "x" : "p") + " is not finite");
-    if (p < 0) bad_sample(s, ln, "negative pressure p = " + fl[1] + " (p must be >= 0)");
-    if (!s.x.empty() && !(x > s.x.back()))
-      bad_sample(s, ln,
-                 "x = " + fl[0] + " does not increase (previous sample, line " + std::to_string(s.line.back()) +
-                     ": x = " + g10(s.x.back()) + "; x must increase strictly)");
-    s.x.push_back(x);
-    s.p.push_back(p);
-    s.line.push_back(ln);
+  try {
+    return halfslip_cli::parse_samples(read_whole_file(path, "--pressure-file"), path);
+  } catch (const halfslip_cli::pressure_file_error &e) {
+    die(e.what());
   }
-  if (s.x.empty())
-    bad_sample(s, std::max(1, s.last_line),
-               std::string(s.last_line ? "end of file, no samples (only blank, comment or header lines)"
-                                       : "the file is empty") +
-                   "; need at least 6 lines x p");
-  if (s.x.size() < 6)
-    bad_sample(s, s.last_line, "end of file after " + std::to_string(s.x.size()) + " samples; need at least 6");
-  return s;
 }
 
-// The rules that depend on the contact half-width a: x in [-a, a], p > 0
-// inside the contact and p = 0 at an edge sample (sqrt edge behaviour).
-void check_samples(const samples &s, double a) {
-  double pmax = 0;
-  for (double p : s.p) pmax = std::max(pmax, p);
-  for (size_t i = 0; i < s.x.size(); ++i) {
-    const double x = s.x[i], p = s.p[i];
-    if (!(x >= -a && x <= a))
-      bad_sample(s, s.line[i],
-                 "x = " + g10(x) + " is outside the contact [-a, a] = [" + g10(-a) + ", " + g10(a) + "]");
-    if ((x == -a || x == a) && p > 64 * 2.220446049250313e-16 * pmax)
-      bad_sample(s, s.line[i], "p = " + g10(p) + " at the contact edge x = " + g10(x) + " (p must vanish there)");
-    if (x > -a && x < a && !(p > 0))
-      bad_sample(s, s.line[i], "p = 0 inside the contact at x = " + g10(x) + " (p must be > 0 for |x| < a)");
+void check_samples_or_die(const samples &s, double a) {
+  try {
+    halfslip_cli::check_samples(s, a);
+  } catch (const halfslip_cli::pressure_file_error &e) {
+    die(e.what());
   }
+}
+
+[[noreturn]] void bad_sample(const samples &s, int ln, const std::string &rule) {
+  die(halfslip_cli::pressure_file_error(s, ln, rule).what());
 }
 
 bool is_dimensional(const Args &args) {
@@ -875,7 +780,7 @@ void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::v
     // the samples' rules are checked here, against a, to name the file's line
     if (geometry == "samples") {
       if (!(scene.a > 0)) die("bad value for --a: must be > 0");
-      check_samples(samp, scene.a);
+      check_samples_or_die(samp, scene.a);
       // the library's remaining rules (the sqrt edge behaviour), with the sample they are about
       int verdict = HS_OK;
       size_t at = 0;

@@ -449,8 +449,12 @@ template <class T> contact_state<T> general_state_of(const general_solution<T> &
     st.no_panels = true;
     std::shared_ptr<stick_series<T>> ser;
     if (st.stick_hi > st.stick_lo) {
+      // a higher degree than make_panels allows (q costs O(log n) here, and
+      // without the series every Cauchy integral needs ~10^3 values of q), and
+      // a tail of 256 eps: q comes from tanh-sinh terminated at eps^(2/3), and
+      // its coefficients level off at ~4e-14 for rough samples (1e-6 noise)
       ser = std::make_shared<stick_series<T>>([&sol](const T &x) { return sol.traction(x); }, st.stick_lo,
-                                              st.stick_hi);
+                                              st.stick_hi, 2048, 256);
       if (!ser->ok()) ser.reset();
     }
     st.numeric = [&sol, ser](const std::complex<T> &z, cauchy_pair<T> &P, cauchy_pair<T> &Q) {
@@ -477,7 +481,9 @@ template <class T> contact_state<T> general_state_of(const general_solution<T> &
 // singularity near the real theta axis), ok() is false and q is used directly.
 template <class T> class stick_series {
  public:
-  template <class Q> stick_series(const Q &q, const T &lo, const T &hi, int max_degree = 256) : lo_(lo), hi_(hi) {
+  // tail_eps: the last quarter of the coefficients must fall below tail_eps eps of the largest
+  template <class Q>
+  stick_series(const Q &q, const T &lo, const T &hi, int max_degree = 256, int tail_eps = 64) : lo_(lo), hi_(hi) {
     using std::abs;
     using std::cos;
     m_ = (lo + hi) / 2;
@@ -503,7 +509,7 @@ template <class T> class stick_series {
       for (int k = 0; k <= N; ++k) big = std::max(big, T(abs(c_[k])));
       for (int k = 3 * N / 4; k <= N; ++k) tail = std::max(tail, T(abs(c_[k])));
       tail_ = tail / big;
-      if (tail <= 64 * eps<T>() * big) {
+      if (tail <= tail_eps * eps<T>() * big) {
         ok_ = true;
         return;
       }

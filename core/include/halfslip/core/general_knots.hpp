@@ -97,11 +97,14 @@ std::vector<kpanel<T>> knot_panels(const knot_view<T> &kv, int side, const T &d,
   const T ltarget = std::min(T(2 * M * lr0), lfloor);
   // A knot where phi'' jumps by J puts a pole of residue ~J delta^2/2 into the
   // principal-value quotient on the neighbouring panel (delta: the target's
-  // distance from the knot, ~L/k^2 for the nodes next to it), which a rule of
-  // order k integrates to ~J L^2/k^4 relative to phi (the outer rule's error
-  // from the (t - knot)^2 log|t - knot| it puts into h' is smaller). A panel
-  // whose knots would make that exceed 1e-14 at order k (data rough on the
-  // panel's scale) takes k = M: the energies' order control then checks it.
+  // distance from the knot, ~L/k^2 for the outer nodes next to it), which a
+  // rule of order k integrates to ~J delta^2 ~ J L^2/k^4 relative to phi at
+  // those nodes; their weights, ~L/k^2, make it ~J L^2/k^6 of the panel's part
+  // of the energy (the outer rule's error from the (t - knot)^2 log|t - knot|
+  // the knot puts into h' is smaller). A panel whose knots would make that
+  // exceed 1e-13 at order k (data rough on the panel's scale) takes the order
+  // that brings it there, at most M (and from M on, the energies' order control
+  // checks it).
   auto order_of = [&](const T &lo, const T &hi, const T &r) {
     const T L = hi - lo;
     const T D = std::min(T(sqrt(lo * lo + sing * sing)), T(half_pi - hi));
@@ -109,7 +112,11 @@ std::vector<kpanel<T>> knot_panels(const knot_view<T> &kv, int side, const T &d,
     if (!(z > 3)) return M;
     const T rho = z + sqrt((z - 1) * (z + 1));
     const int k = std::max(2, int(ceil(ltarget / (2 * log(rho)))));
-    if (r > T(1e-14) * k * k * k * k) return M;
+    if (r > T(1e-13) * k * k * k * k * k * k) {
+      using std::pow;
+      const int kr = int(ceil(pow(r / T(1e-13), T(1) / 6)));
+      return std::min(M, std::max(k, kr));
+    }
     return std::min(M, k);
   };
   std::size_t ei = 0;

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -815,8 +816,12 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
            "(p must vanish like sqrt(distance) there)");
     // a panel end at every knot (phi is only C^1 there), built once: the
     // quadratures ask for the list per Cauchy integral (issue 13 item 4)
-    bps_.reserve(n);
-    for (const T &x : x_) bps_.push_back({x, false});
+    // (on the knot path built on demand instead: only the slow reference
+    // evaluations and the load histories ask for them there)
+    if (n < tree_min) {
+      bps_.reserve(n);
+      for (const T &x : x_) bps_.push_back({x, false});
+    }
     // from knot_tree_min knots on, the product quadrature over the knots
     // (knots.hpp): linear cost in n; below, the quadrature with a panel end at
     // every knot, as before (results unchanged)
@@ -847,11 +852,19 @@ template <class T> class sampled_pressure final : public pressure_model<T> {
     if (kq_) kq_->set_scale(scale_);
   }
   // the interior-sample count from which the knot quadrature is used
-  // (test_switches.cpp)
-  static constexpr std::size_t knot_tree_min = 256;
+  // (test_switches.cpp); double only: its rules (16 points, eta = 2) and the
+  // energies' fast sums (24 terms) are accurate to ~1e-16, not to the rounding
+  // of a longer type, which keeps the panel path
+  static constexpr std::size_t knot_tree_min = std::numeric_limits<T>::digits <= 53 ? 256 : std::size_t(-1);
   T phi(const T &x, const T &, const T &) const override { return scale_ * interp(x, false); }
   T dphi(const T &x, const T &, const T &) const override { return scale_ * interp(x, true); }
-  std::vector<breakpoint<T>> breakpoints() const override { return bps_; }
+  std::vector<breakpoint<T>> breakpoints() const override {
+    if (!kq_) return bps_;
+    std::vector<breakpoint<T>> v;
+    v.reserve(x_.size());
+    for (const T &x : x_) v.push_back({x, false});
+    return v;
+  }
   knot_view<T> knots() const override { return {kq_.get(), false}; }
   T tail(int side, const T &c) const override { return kq_ ? kq_->tail(side, c) : pressure_model<T>::tail(side, c); }
   std::size_t knot_count() const { return x_.size(); }
