@@ -39,6 +39,8 @@ template <class T> class general_solution : public canonical_solution<general_so
   using base::width;
   int continuation_steps = 0;
   int order = 0;  // Gauss-Legendre order per panel of the accepted residual
+  // the zone lengths' sensitivity to the residuals' tolerance, units of a (general_solver.hpp)
+  T conditioning = 0;
   // ln(width) (issue 13): below tiny_width() the width may underflow to 0, and
   // every zone quantity is continued linearly in ln(width) from the widths
   // tiny_width() and tiny_width_b() (general_residual.hpp)

@@ -371,6 +371,19 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     const general_eval<T> r2 = general_residual(P, q, s, st, 2 * n, true);
     if (gdetail::residual_norm(r2) <= max(qtol, T(4 * r2.grain))) {
       const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
+      // the zones' conditioning (issue 13): residuals known to n1 (F1, with its
+      // pi s/4 term) and n2 (F2, the moment: no s), each the step tolerance
+      // (acc eps) in units of its terms, move x1 and ln e by J^-1 of them; d1 = |x1|
+      // and d2 = 2 - d1 - e then by dx1 + e dln e. Large when the sliding stick
+      // point nears an edge (Q -> fP at large sigma: the moment fixes x1 alone,
+      // through J21 ~ p_hat(x0) -> 0; Hertz, 1 - Q/fP = 1e-12, sigma/fp0 = 100:
+      // d1 = 8.9e-9 a off by 2e-4 against an estimate of 1.2e-6)
+      if (x.det != 0) {
+        const T n1 = tol_step * pi<T>() * (1 + s), n2 = tol_step * pi<T>();
+        const T ad = abs(x.det);
+        sol.conditioning =
+            (abs(r2.J22) * n1 + abs(r2.J12) * n2) / ad + st.e * (abs(r2.J21) * n1 + abs(r2.J11) * n2) / ad;
+      }
       if (x.det != 0) {
         using std::exp;
         const T dx = -x.x1, dy = -x.x2;
