@@ -89,7 +89,7 @@ void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, cons
   o.rtol = r.rtol;
   const auto &s = h.solution.emplace<core::hertz_solution<double>>(core::solve_hertz<double>(sc, o));
   h.model_used = HS_MODEL_CLOSED_FORM;
-  take_estimate(h, core::closed_form_estimate(s.d1() / sc.a, s.d2() / sc.a, sc.q, sc.s));
+  take_estimate(h, core::closed_form_estimate(s.d1() / sc.a, s.d2() / sc.a, sc.q, sc.s, s.width));
   // rtol > 0 relaxes the quadrature of the opposite-sign slip and energies
   if (16 * r.rtol > h.error_estimate) h.error_estimate = 16 * r.rtol;
 }
@@ -101,7 +101,8 @@ void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int m
   const auto &pm = pressure_of(h);
   const auto &s = h.solution.emplace<core::general_solution<double>>(core::solve_general<double>(pm, sc, o));
   h.model_used = HS_MODEL_QUADRATURE;
-  take_estimate(h, core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q, pm.accuracy_eps()));
+  take_estimate(h, core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q, pm.accuracy_eps(),
+                                             s.conditioning));
 }
 
 // The quadrature, or the asymptotic edge model where that is more accurate:

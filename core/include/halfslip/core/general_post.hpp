@@ -12,6 +12,7 @@
 #include "gauss.hpp"
 #include "general_knots.hpp"
 #include "general_panels.hpp"
+#include "general_residual.hpp"
 #include "hertz.hpp"
 #include "numerics.hpp"
 #include "pressure.hpp"
@@ -38,7 +39,26 @@ template <class T> class general_solution : public canonical_solution<general_so
   using base::sign;
   using base::width;
   int continuation_steps = 0;
-  int order = 0;         // Gauss-Legendre order per panel of the accepted residual
+  int order = 0;  // Gauss-Legendre order per panel of the accepted residual
+  // the zone lengths' sensitivity to the residuals' tolerance, units of a (general_solver.hpp)
+  T conditioning = 0;
+  // ln(width) (issue 13): below tiny_width() the width may underflow to 0, and
+  // every zone quantity is continued linearly in ln(width) from the widths
+  // tiny_width() and tiny_width_b() (general_residual.hpp)
+  T log_width = 0;
+  bool at_given_width = false;  // the two evaluations of continued(): no continuation
+  bool point_stick() const { return !at_given_width && reg != regime::stuck && width < tiny_width<T>(); }
+  // f(solution) continued to log_width from the two widths of the point-stick limit
+  template <class F> T continued(const F &f) const {
+    using std::log;
+    general_solution a = *this, b = *this;
+    a.width = tiny_width<T>();
+    b.width = tiny_width_b<T>();
+    a.at_given_width = b.at_given_width = true;
+    const T la = log(a.width), lb = log(b.width);
+    const T fa = f(a), fb = f(b);
+    return fa + (log_width - la) / (la - lb) * (fa - fb);
+  }
   int max_order = 1024;  // largest order of the energies and slips (general_options::max_order)
   std::shared_ptr<const pressure_model<T>> owned;  // mirrored view, if any
   const pressure_model<T> *pm = nullptr;           // canonical pressure (must outlive)
@@ -261,6 +281,7 @@ template <class T> class general_solution : public canonical_solution<general_so
   T bhat(int z, const T &dl) const {
     using std::sqrt;
     if (!(dl > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.bhat(z, dl); });
     const T Rx = sqrt(dl * (width + dl));
     const T br = dirR * cauchy(+1, z, dl) - dirL * cauchy(-1, z, dl);
     return (z > 0 ? -2 : 2) * Rx * br / pi<T>();
@@ -283,6 +304,7 @@ template <class T> class general_solution : public canonical_solution<general_so
   // adaptive tanh-sinh
   T hhat_adaptive(int z, const T &dl) const {
     if (!(dl > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.hhat_adaptive(z, dl); });
     std::vector<T> cuts;
     for (const T &k : kink_distances(z))
       if (k < dl) cuts.push_back(k / dl);
@@ -493,6 +515,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     using std::abs;
     const T d = zone_length(z);
     if (!(d > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.energy_hat_adaptive(z); });
     std::vector<T> cuts;
     for (const T &k : kink_distances(z)) cuts.push_back(k);
     // c: distance to the contact edge
@@ -538,10 +561,12 @@ template <class T> class general_solution : public canonical_solution<general_so
   }
   T energy_hat(int z) const {
     if (!(zone_length(z) > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.energy_hat(z); });
     return by_order([&](int M) { return energy_hat_order(z, M); });
   }
   T hhat(int z, const T &dl) const {
     if (!(dl > 0) || !(zone_length(z) > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.hhat(z, dl); });
     return by_order([&](int M) { return hhat_order(z, dl, M); });
   }
 

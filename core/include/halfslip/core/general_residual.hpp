@@ -3,6 +3,7 @@
 // system in (x1, ln e).
 #pragma once
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -214,17 +215,45 @@ template <class T> struct general_eval {
 
 template <class T> struct general_state {
   T x1;  // +d1 (same sign), -d1 (opposite sign)
-  T e;   // b1 + b2
+  T e;   // b1 + b2 (underflows to 0 at large sigma: then ln_e carries it)
+  // ln e, when set (NaN: not set, ln e = log(e)). Set by every step, so that the
+  // width can follow a large sigma below the range of T (issue 13)
+  T ln_e = std::numeric_limits<T>::quiet_NaN();
   T d1() const {
     using std::abs;
     return abs(x1);
   }
   T d2() const { return 2 - d1() - e; }
   int sR() const { return x1 < 0 ? -1 : 1; }
+  T lw() const {
+    using std::log;
+    return ln_e == ln_e ? ln_e : T(log(e));
+  }
+  static general_state from_log(const T &x1, const T &le) {
+    using std::exp;
+    return {x1, T(exp(le)), le};
+  }
+  // the step (dx, dy) in (x1, ln e)
+  general_state step(const T &dx, const T &dy) const { return from_log(x1 + dx, lw() + dy); }
 };
 
-template <class T> general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const T &s,
-                                                    const general_state<T> &st, int n, bool jac) {
+// Widths below tiny_width() = eps^3 (units of a) are the point-stick limit:
+// every zone integral of the side conditions (and every slip and energy) is
+// A + B ln e + O(e ln(1/e)/l), l the distance to the nearest pressure kink or
+// scale (the density's 1/sqrt(e + d sin^2) near the stick edge contributes
+// B ln(1/e) and the rest converges), so they are evaluated at the two widths
+// eps^3 and eps^4 and continued linearly in ln e. Exact to ~eps^3 ln(1/eps)/l,
+// far below eps; the width itself may be below the range of T (sigma/fp0 of
+// order 1e3 and beyond; issue 13: the quadrature returned OVERFLOW there).
+template <class T> T tiny_width() {
+  const T e = eps<T>();
+  return e * e * e;
+}
+template <class T> T tiny_width_b() { return tiny_width<T>() * eps<T>(); }
+
+// The residual at the stick width st.e itself.
+template <class T> general_eval<T> general_residual_at(const pressure_model<T> &pm, const T &q, const T &s,
+                                                       const general_state<T> &st, int n, bool jac) {
   const T pi_ = pi<T>();
   const T d1 = st.d1(), d2 = st.d2(), e = st.e;
   const int sR = st.sR();
@@ -247,6 +276,37 @@ template <class T> general_eval<T> general_residual(const pressure_model<T> &pm,
     r.grain = ep * ((abs(r.J11) + abs(r.J21)) * d1 + abs(r.J12) + abs(r.J22) + 2 * (abs(L.I1d) + abs(L.I2d)));
   }
   return r;
+}
+
+template <class T> general_eval<T> general_residual(const pressure_model<T> &pm, const T &q, const T &s,
+                                                    const general_state<T> &st, int n, bool jac) {
+  if (st.e < tiny_width<T>()) {
+    // the point-stick limit: linear in ln e from the widths eps^3 and eps^4 (above)
+    using std::abs;
+    using std::log;
+    using std::max;
+    const T la = log(tiny_width<T>()), lb = log(tiny_width_b<T>());
+    // (at s = 0: the zone integrals alone are continued; - pi s/4 is added
+    // after, else it swamps them at large s: at sigma/fp0 = 1e16 it left one ulp,
+    // ~1, of a difference ~50, and ln e 2% off)
+    const general_eval<T> ra = general_residual_at(pm, q, T(0), general_state<T>{st.x1, tiny_width<T>()}, n, jac);
+    const general_eval<T> rb = general_residual_at(pm, q, T(0), general_state<T>{st.x1, tiny_width_b<T>()}, n, jac);
+    const T t = (st.lw() - la) / (la - lb);
+    general_eval<T> r;
+    r.F1 = ra.F1 + t * (ra.F1 - rb.F1) - pi<T>() * s / 4;
+    // F2, the moment about the stick centre, has no ln e term (its weight t - c
+    // vanishes at the stick zone): F2 = F2(eps^3) + O(eps^3), and continuing it
+    // would only multiply its rounding by t (~1e10 at sigma/fp0 = 1e12)
+    r.F2 = ra.F2;
+    if (!jac) return r;
+    r.J11 = ra.J11 + t * (ra.J11 - rb.J11);
+    r.J21 = ra.J21;
+    r.J12 = (ra.F1 - rb.F1) / (la - lb);
+    r.J22 = (ra.F2 - rb.F2) / (la - lb);
+    r.grain = max(ra.grain, rb.grain) * (1 + abs(t));
+    return r;
+  }
+  return general_residual_at(pm, q, s, st, n, jac);
 }
 
 }}  // namespace hs::core

@@ -41,11 +41,10 @@ template <class T> struct general_problem {
   const T &q, &s;
   int n;
   const T &tol_step;
-  T tiny, noise_floor;
+  T noise_floor;
 
   general_problem(const pressure_model<T> &pm_, const T &q_, const T &s_, int n_, const T &tol_step_)
       : pm(pm_), q(q_), s(s_), n(n_), tol_step(tol_step_) {
-    tiny = boost::math::tools::min_value<T>() / eps<T>();
     noise_floor = 64 * eps<T>() * pi<T>() * (1 + s);
   }
   eval residual(const state &st) const { return general_residual(pm, q, s, st, n, true); }
@@ -63,8 +62,7 @@ template <class T> struct general_problem {
     using std::exp;
     using std::max;
     if (prev_step >= 0 && max(abs(dx), abs(dy)) <= tol_step && max(abs(dx), abs(dy)) <= prev_step) {
-      st.x1 += dx;
-      st.e *= exp(dy);
+      st = st.step(dx, dy);
       return true;
     }
     return false;
@@ -78,11 +76,10 @@ template <class T> struct general_problem {
     }
   }
   bool trial(const state &st, const T &lam, const T &dx, const T &dy, state &nst) const {
-    using std::exp;
-    nst.x1 = st.x1 + lam * dx;
-    nst.e = st.e * exp(lam * dy);
+    nst = st.step(lam * dx, lam * dy);
     const T nd2 = nst.d2();
-    return nst.e > tiny && nd2 > st.d2() / 4 && nst.d1() < 2;
+    // (the width may leave the range of T: ln e carries it, issue 13)
+    return nst.ln_e == nst.ln_e && nst.ln_e < 1 && nd2 > st.d2() / 4 && nst.d1() < 2;
   }
   newton_steps<T> steps(const state &, const T &lam, const T &dx, const T &dy) const {
     using std::abs;
@@ -176,11 +173,10 @@ template <class T> bool sliding_point(const pressure_model<T> &pm, const T &q, T
 // ln e once e << 1 (the zone integrals grow like ln(1/e)): secant steps in
 // ln e from two small widths. Newton in (x1, ln e) then follows x0 and the
 // width on a log scale. False if no such start exists (the stick zone would
-// be below the range of T: tiny_le is ln of the smallest width allowed).
-// below_range is set when the width would be below exp(tiny_le). The secant
+// be below the range of T: then ln e carries it, general_state). The secant
 // limit is not an error: the result is only a start, validated by Newton.
-template <class T> bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int n,
-                                          const T &tiny_le, general_state<T> &out, bool &below_range) {
+template <class T>
+bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int n, general_state<T> &out) {
   using std::abs;
   using std::exp;
   using std::log;
@@ -188,30 +184,34 @@ template <class T> bool large_sigma_start(const pressure_model<T> &pm, const T &
   using std::min;
   T d_inf;
   if (!sliding_point(pm, q, d_inf) || !(d_inf > 0 && d_inf < 2)) return false;
-  auto F1 = [&](const T &le) {
+  // F1 = G - pi s/4 with G the zone integrals (F1 at s = 0): the secant on G
+  // against pi s/4, so that a large s does not swamp the differences of G
+  // (at sigma/fp0 = 1e20 one ulp of pi s/4 is 16384)
+  auto G = [&](const T &le) {
     const T e = exp(le);
-    return general_residual(pm, q, s, general_state<T>{-(d_inf - e / 2), e}, n, false).F1;
+    return general_residual(pm, q, T(0), general_state<T>::from_log(-(d_inf - e / 2), le), n, false).F1;
   };
+  const T target = pi<T>() * s / 4;
   const T cap = log(min(min(T(1), T(d_inf / 2)), T((2 - d_inf) / 2)));
   T l0 = min(T(-8), cap), l1 = l0 - 8;
-  T f0 = F1(l0), f1 = F1(l1);
+  T g0 = G(l0), g1 = G(l1);
   for (int it = 0; it < 30; ++it) {
-    if (!(f1 != f0) || !(f0 == f0) || !(f1 == f1)) return false;
-    T l2 = l1 - f1 * (l1 - l0) / (f1 - f0);
+    if (!(g1 != g0) || !(g0 == g0) || !(g1 == g1)) return false;
+    // (the slope first: no overflow at huge s; a step beyond the range of T is
+    // cut to half of it, sigma/fp0 ~ 1e308)
+    T l2 = l1 - (g1 - target) / ((g1 - g0) / (l1 - l0));
+    if (!(l2 >= -boost::math::tools::max_value<T>())) l2 = -boost::math::tools::max_value<T>() / 2;
     l2 = min(l2, cap);
-    if (!(l2 > tiny_le)) {
-      below_range = l2 <= tiny_le;
-      return false;
-    }
-    const T f2 = F1(l2);
+    if (!(abs(l2) <= boost::math::tools::max_value<T>())) return false;
+    const T g2 = G(l2);
     l0 = l1;
-    f0 = f1;
+    g0 = g1;
     l1 = l2;
-    f1 = f2;
+    g1 = g2;
     if (abs(l1 - l0) <= T(1e-3) * (1 + abs(l1))) break;
   }
   const T e = exp(l1);
-  out = {-(d_inf - e / 2), e};
+  out = general_state<T>::from_log(-(d_inf - e / 2), l1);
   return out.d2() > 0;
 }
 
@@ -228,7 +228,6 @@ template <class T> bool continuation(const pressure_model<T> &pm, const T &q, co
   T h = s / 4;
   if (!(h > 0)) h = s;
   const T hmin = s * ldexp(T(1), -40);
-  const T tiny = boost::math::tools::min_value<T>() / eps<T>();
   while (sc < s) {
     if (!(h > 0) || h < hmin) return false;
     const T sn = (s - sc <= h || !(sc + h > sc)) ? s : sc + h;
@@ -241,8 +240,8 @@ template <class T> bool continuation(const pressure_model<T> &pm, const T &q, co
     const auto x = solve2x2(r.J11, r.J12, r.J21, r.J22, Fs1, Fs2);
     if (x.det != 0) {
       const T dx = -x.x1, dy = -x.x2;
-      general_state<T> p2{st.x1 + ds * dx, st.e * exp(ds * dy)};
-      if (p2.e > tiny && p2.d2() > 0 && p2.d1() < 2) pred = p2;
+      const general_state<T> p2 = st.step(ds * dx, ds * dy);
+      if (p2.ln_e == p2.ln_e && p2.d2() > 0 && p2.d1() < 2) pred = p2;
     }
     int its = 0;
     general_state<T> trial = pred;
@@ -310,7 +309,17 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     hertz_scene<T> hs;
     hs.q = q;
     hs.s = s;
-    const auto h = solve_hertz(hs);
+    hertz_solution<T> h;
+    try {
+      h = solve_hertz(hs);
+    } catch (const error &) {
+      // the closed forms' own limits (sigma/fp0 above ~1e10, or next to sliding):
+      // start at a narrow stick zone at the sliding point instead (large_sigma_start)
+      h.reg = regime::opposite_sign;
+      h.delta1 = T(0.5);
+      h.delta2 = T(1.5) - eps<T>();
+      h.width = eps<T>();
+    }
     // Both slip zones below the resolution of the state (x1, ln e), in which the
     // far zone is d2 = 2 - |x1| - e and so known only to ~eps: Newton cannot
     // represent them, and a continuation in sigma found a spurious root instead
@@ -343,18 +352,8 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
   bool ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
   if (!ok && st.x1 < 0 && st.e < T(0.1)) {
     // large sigma: start from the sliding stick point (issue 13)
-    using std::log;
-    const T tiny_le = log(boost::math::tools::min_value<T>() / eps<T>());
-    bool below = false;
-    if (gdetail::large_sigma_start(P, q, s, n, tiny_le, trial, below))
+    if (gdetail::large_sigma_start(P, q, s, n, trial))
       ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
-    else if (below) {
-      // the quadrature needs the width itself: a clear error, not seconds of
-      // continuation that cannot succeed (docs/models.md, domain)
-      throw error(status::overflow,
-                  "general solver: sigma/(f p0) too large: the stick zone would be narrower than the range of the "
-                  "floating-point type (1e-292 a in double)");
-    }
   }
   if (!ok) {
     // fallback: continuation in s from the shear-only solution
@@ -372,12 +371,26 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     const general_eval<T> r2 = general_residual(P, q, s, st, 2 * n, true);
     if (gdetail::residual_norm(r2) <= max(qtol, T(4 * r2.grain))) {
       const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
+      // the zones' conditioning (issue 13): residuals known to n1 (F1, with its
+      // pi s/4 term) and n2 (F2, the moment: no s), each the step tolerance
+      // (acc eps) in units of its terms, move x1 and ln e by J^-1 of them; d1 = |x1|
+      // and d2 = 2 - d1 - e then by dx1 + e dln e. Large when the sliding stick
+      // point nears an edge (Q -> fP at large sigma: the moment fixes x1 alone,
+      // through J21 ~ p_hat(x0) -> 0; Hertz, 1 - Q/fP = 1e-12, sigma/fp0 = 100:
+      // d1 = 8.9e-9 a off by 2e-4 against an estimate of 1.2e-6)
+      if (x.det != 0) {
+        const T n1 = tol_step * pi<T>() * (1 + s), n2 = tol_step * pi<T>();
+        const T ad = abs(x.det);
+        sol.conditioning =
+            (abs(r2.J22) * n1 + abs(r2.J12) * n2) / ad + st.e * (abs(r2.J21) * n1 + abs(r2.J11) * n2) / ad;
+      }
       if (x.det != 0) {
         using std::exp;
         const T dx = -x.x1, dy = -x.x2;
-        general_state<T> ns{st.x1 + dx, st.e * exp(dy)};
+        const general_state<T> ns = st.step(dx, dy);
         // keep the regime of the accepted state unless the state sits on the boundary
-        if (ns.d2() > 0 && ns.e > 0 && (ns.x1 == 0 || (ns.x1 > 0) == (st.x1 > 0) || abs(st.x1) <= qtol)) st = ns;
+        if (ns.d2() > 0 && ns.ln_e == ns.ln_e && (ns.x1 == 0 || (ns.x1 > 0) == (st.x1 > 0) || abs(st.x1) <= qtol))
+          st = ns;
       }
       n *= 2;
       break;
@@ -392,6 +405,7 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
   sol.order = n;
   sol.delta1 = st.d1();
   sol.width = st.e;
+  sol.log_width = st.lw();
   sol.delta2 = st.d2();
   sol.beta1 = 1 - sol.delta1;
   sol.beta2 = 1 - sol.delta2;

@@ -160,9 +160,19 @@ template <class T> T smallest_zone(const T &d1, const T &d2) {
   return d1 > 0 ? d1 : d2;
 }
 
-template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &d2, const T &q, const T &s) {
+// width: the stick width (b1 + b2)/a (2: not known). Where it is below the smaller
+// zone, the stick zone sits at the sliding stick point x0 (large sigma), whose
+// position the moment condition alone fixes, with slope 2 p_hat(x0) =
+// 2 sqrt(d1 d2): a rounding of ~4 pi eps in it moves x0 by 4 pi eps/(2 sqrt(d1 d2)),
+// large next to an edge (issue 13: 1 - Q/fP = 1e-12, sigma/fp0 = 5 to 100, d1 =
+// 8.9e-9 a off by 1.1e-4 against an estimate of 1.2e-6; the same term as the
+// quadrature's conditioning, general_solver.hpp).
+template <class T>
+error_estimate<T> closed_form_estimate(const T &d1, const T &d2, const T &q, const T &s, const T &width = T(2)) {
   using std::abs;
+  using std::max;
   using std::min;
+  using std::sqrt;
   error_estimate<T> e;
   const T ep = eps<T>();
   // d_i = m -+ s/4 (m ~ q/2): rounding of the two terms, relative to d_i
@@ -172,6 +182,8 @@ template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &
                              resolved_zone(d2, e.resolution, e.unresolved));
   if (!(dm > 0)) return e;  // stuck, or no zone resolved
   e.slip_zone = 32 * ep + 16 * ep * scale / dm + tiny_length_floor(dm);
+  if (width < dm && d1 > 0 && d2 > 0)
+    e.slip_zone = max(e.slip_zone, T(4 * pi<T>() * ep / (2 * sqrt(d1 * d2) * dm) + tiny_length_floor(dm)));
   e.energy = 3 * e.slip_zone + 16 * ep + tiny_energy_floor(dm);
   return e;
 }
@@ -179,9 +191,12 @@ template <class T> error_estimate<T> closed_form_estimate(const T &d1, const T &
 // acc: the pressure's accuracy in units of eps (pressure_model::accuracy_eps;
 // 4 for the closed forms): the eps term grows with it beyond 4 (issue 13: the
 // power law at n = 999, Q/fP = 0.3, sigma/fp0 = -3 erred by 4.2e-13 in d2
-// against an estimate of 6.6e-14 that assumed a pressure good to a few eps)
+// against an estimate of 6.6e-14 that assumed a pressure good to a few eps).
+// conditioning: the solution's own bound on the zone lengths' absolute error
+// from its Jacobian (general_solution::conditioning, units of a; 0: not known)
 template <class T> error_estimate<T> quadrature_estimate(const T &rt, const T &d1, const T &d2, const T &width,
-                                                         const T &q, const T &acc = T(4)) {
+                                                         const T &q, const T &acc = T(4),
+                                                         const T &conditioning = T(0)) {
   using std::max;
   error_estimate<T> e;
   const T pe = eps<T>() * max(T(1), T(acc / 4));
@@ -197,7 +212,9 @@ template <class T> error_estimate<T> quadrature_estimate(const T &rt, const T &d
   using std::sqrt;
   // (/4: margin for pressures whose shear-only stick zone is narrower than Hertz's)
   const T wc = max(width, T(sqrt(T(abs(1 - abs(q)))) / 4));
-  e.slip_zone = 16 * (pe + rt) * (1 + 1 / dm + 1 / wc) + tiny_length_floor(dm);
+  // or, where larger, the solution's conditioning (the sliding stick point next to an
+  // edge, Q -> fP at large sigma, issue 13)
+  e.slip_zone = max(T(16 * (pe + rt) * (1 + 1 / dm + 1 / wc)), T(conditioning / dm)) + tiny_length_floor(dm);
   e.energy = 3 * e.slip_zone + tiny_energy_floor(dm);
   return e;
 }
