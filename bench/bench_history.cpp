@@ -16,6 +16,8 @@
 #include <random>
 #include <vector>
 
+#include <halfslip/halfslip.h>
+
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/history.hpp"
 #include "halfslip/reference/bem_history.hpp"
@@ -119,6 +121,84 @@ int main(int argc, char **argv) {
       });
       std::fprintf(csv, "steady_cycle,march rtol %g,,%zu,%.6g,0,%.3g,%.3g,0\n", rtol, steps, t, err, est);
       std::printf("| | march, rtol %g (2 cycles) | %.3g ms | %.1e (estimate %.1e) |\n", rtol, t * 1e3, err, est);
+    }
+  }
+
+  // 1a. paths along one ray (issue 14): the superposition of monotonic solutions
+  // through the C ABI (hs_history_*), exact, against the march of the same path
+  // (rtol 1e-8). Random turning points t in [-0.6, 0.6] on the ray (Q/fP, sigma/fp0)
+  // = t (1, 0.5) (Hertz, same sign) and t (1, 1) (flat-rounded punch b_f/a = 0.5).
+  for (int geo = 0; geo < 2; ++geo) {
+    const double us = geo == 0 ? 0.5 : 1.0;
+    for (int n : {20, 100}) {
+      std::mt19937 g(7 + n);
+      std::uniform_real_distribution<double> u(-0.6, 0.6);
+      std::vector<double> qs, ss;
+      for (int i = 0; i < n; ++i) {
+        const double t = u(g);
+        qs.push_back(t);
+        ss.push_back(us * t);
+      }
+      hs_scene sc;
+      hs_scene_default(&sc);
+      sc.a = sc.p0 = sc.f = sc.E_star = 1;
+      hs_geometry gm;
+      hs_geometry_default(&gm);
+      gm.kind = HS_GEOMETRY_FLAT_ROUNDED;
+      gm.flat_over_a = 0.5;
+      std::vector<hs_history_vertex> sup(n);
+      int st = 0;
+      const double t_sup = median_time([&] {
+        hs_history *h = nullptr;
+        st = hs_history_new(&sc, geo == 0 ? nullptr : &gm, nullptr, &h);
+        if (st == 0) st = hs_history_add_vertices(h, n, qs.data(), ss.data());
+        for (int i = 0; st == 0 && i < n; ++i) {
+          sup[i].struct_size = sizeof sup[i];
+          st = hs_history_vertex_get(h, i, &sup[i]);
+        }
+        hs_history_free(h);
+      });
+      const char *name = geo == 0 ? "hertz" : "flat";
+      if (st != 0) {
+        std::fprintf(csv, "%s_ray%d,superposition,,0,%.6g,nan,nan,0,0\n", name, n, t_sup);
+        std::printf("| %s ray, %d vertices | superposition | failed (status %d) | |\n", name, n, st);
+        continue;
+      }
+      double est = 0;
+      for (const auto &v : sup) est = std::max(est, v.error_estimate);
+      std::fprintf(csv, "%s_ray%d,superposition (C ABI),,0,%.6g,0,0,%.3g,0\n", name, n, t_sup, est);
+      std::printf("| %s ray, %d vertices | superposition (C ABI) | %.3g ms | exact (estimate %.1e) |\n", name, n,
+                  t_sup * 1e3, est);
+      if (n > 20) continue;  // the march of 100 vertices takes minutes
+      std::shared_ptr<const pressure_model<double>> pm;
+      if (geo == 0) pm = hertz;
+      else pm = std::make_shared<flat_rounded_pressure<double>>(0.5);
+      result rm;
+      size_t steps = 0;
+      double mest = 0;
+      const double t_m = median_time(
+          [&] {
+            history_options<double> o;
+            o.max_step = 1.0 / 32;
+            refined_history<double> h(pm, o, 1e-8);
+            for (int i = 0; i < n; ++i) h.add_vertex(qs[i], ss[i]);
+            rm = of(h.fine().vertices());
+            steps = h.fine().step_count();
+            mest = h.error_estimate();
+          },
+          1);
+      result rs;
+      for (const auto &v : sup) {
+        rs.b1.push_back(v.b1);
+        rs.b2.push_back(v.b2);
+        rs.e1.push_back(v.energy1);
+        rs.e2.push_back(v.energy2);
+      }
+      double eb = 0, ee = 0;
+      errors(rm, rs, eb, ee);
+      std::fprintf(csv, "%s_ray%d,march rtol 1e-8,,%zu,%.6g,%.3g,%.3g,%.3g,0\n", name, n, steps, t_m, eb, ee, mest);
+      std::printf("| | march, rtol 1e-8 | %.3g s | zones %.1e a, energies %.1e (estimate %.1e) |\n", t_m, eb, ee,
+                  mest);
     }
   }
 

@@ -3,6 +3,7 @@
 // against the march (core/history.hpp, a different method: stuck-interval
 // traction rates integrated in load steps) and against closed forms.
 #include <doctest/doctest.h>
+#include <boost/multiprecision/mpfr.hpp>
 #include <halfslip/halfslip.h>
 
 #include <cmath>
@@ -286,4 +287,64 @@ TEST_CASE("ray histories: the same templates in long double (closed forms to its
   // at 0.7, past every turning point: the virgin curve alone
   CHECK(path.vertices().back().terms.size() == 1);
   CHECK(path.vertices().back().terms[0].coef == 1);
+}
+
+TEST_CASE("ray histories: certified digits from the reference backend (hs_ref_history)") {
+  using M = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<80>,
+                                          boost::multiprecision::et_off>;
+  hs_ref_scene sc;
+  REQUIRE(hs_ref_scene_default(&sc) == HS_OK);
+  hs_ref_history *h = nullptr;
+  const int digits = 40;
+  REQUIRE(hs_ref_history_new(&sc, digits, &h) == HS_OK);
+  // Hertz, sigma = 0: virgin 0.6, unload to 0.2, reload to 0.5, past 0.6 to 0.7 (Masing)
+  const char *q[] = {"0.6", "0.2", "0.5", "0.7"}, *s[] = {"0", "0", "0", "0"};
+  REQUIRE(hs_ref_history_add_vertices(h, 4, q, s) == HS_OK);
+  const M expect[] = {sqrt(M("0.4")), sqrt(1 - M("0.4") / 2), sqrt(1 - M("0.3") / 2), sqrt(M("0.3"))};
+  char buf[128];
+  for (int i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    int cd = 0;
+    REQUIRE(hs_ref_history_value(h, i, HS_REF_B1, buf, sizeof buf, nullptr, &cd) == HS_OK);
+    CHECK(cd == digits);
+    CHECK(abs(M(buf) - expect[i]) <= M("1e-39") * expect[i]);
+    int d1 = 0, d2 = 0;
+    REQUIRE(hs_ref_history_slip_dirs(h, i, &d1, &d2) == HS_OK);
+    CHECK(d1 == (i == 1 ? -1 : 1));
+  }
+  // the energies against the double route (superposition of the closed forms), and
+  // the segment past the turning points: 2 E(0.2) (back up the branch of 0.2 to 0.6)
+  // + E(0.7) - E(0.6), each certified
+  hist_handle dh;
+  new_history(dh, 0);
+  add(dh, {{0.6, 0}, {0.2, 0}, {0.5, 0}, {0.7, 0}});
+  for (int i = 0; i < 4; ++i) {
+    CAPTURE(i);
+    int cd = 0;
+    REQUIRE(hs_ref_history_value(h, i, HS_REF_ENERGY1, buf, sizeof buf, nullptr, &cd) == HS_OK);
+    CHECK(cd >= digits - 2);
+    const double e = vertex(dh, i).energy1;
+    CHECK(std::abs(double(M(buf)) - e) <= 64 * eps<double>() * std::abs(e));
+  }
+  // errors: off the ray, a receding ramp, bad numbers; the history keeps its vertices
+  const char *qo[] = {"0.3"}, *so[] = {"0.1"};
+  CHECK(hs_ref_history_add_vertices(h, 1, qo, so) == HS_ERR_NOT_APPLICABLE);
+  const char *qb[] = {"0.x"};
+  CHECK(hs_ref_history_add_vertices(h, 1, qb, s) == HS_ERR_BAD_NUMBER);
+  const char *qg[] = {"1"};
+  CHECK(hs_ref_history_add_vertices(h, 1, qg, s) == HS_ERR_GROSS_SLIDING);
+  size_t n = 0;
+  REQUIRE(hs_ref_history_vertex_count(h, &n) == HS_OK);
+  CHECK(n == 4);
+  CHECK(hs_ref_history_value(h, 4, HS_REF_B1, buf, sizeof buf, nullptr, nullptr) == HS_ERR_BAD_OPTION);
+  CHECK(hs_ref_history_value(h, 0, HS_REF_D1, buf, sizeof buf, nullptr, nullptr) == HS_ERR_BAD_OPTION);
+  hs_ref_history_free(h);
+  hs_ref_history *r = nullptr;
+  REQUIRE(hs_ref_history_new(&sc, 30, &r) == HS_OK);
+  const char *qr[] = {"0.88"}, *sr[] = {"2.64"};  // sigma/fp0 = 3 Q/fP recedes before 0.88
+  CHECK(hs_ref_history_add_vertices(r, 1, qr, sr) == HS_ERR_NOT_APPLICABLE);
+  const char *qk[] = {"0.4", "-0.2"}, *sk[] = {"1.2", "-0.6"};  // below the recede point: certified
+  CHECK(hs_ref_history_add_vertices(r, 2, qk, sk) == HS_OK);
+  hs_ref_history_free(r);
+  CHECK(hs_ref_history_new(&sc, 0, &r) == HS_ERR_BAD_OPTION);
 }

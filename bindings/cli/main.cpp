@@ -90,6 +90,8 @@ const char *kUsage =
     "  straight segments to each vertex; or periodic Q = Qm + Qa sin wt, sigma = Sm + Sa sin(wt + phase).\n"
     "  Loads are ratios Q/fP, sigma/(f p0), or forces per unit length and stresses with the dimensional\n"
     "  options (--P --R --E-star --f; no --Q/--sigma). Geometry and scale options as for solve.\n"
+    "  A path along one ray through the origin is solved by superposition (no march, \"method\").\n"
+    "  --digits N              certified digits (reference backend) for a --path along one ray\n"
     "  --cycles N              number of cycles (default 10)\n"
     "  --ramp R                how the cycle is reached from zero: sigma-first (default), together, q-first\n"
     "  --segments-per-cycle M  chords per cycle when Q and sigma are out of phase (default 64)\n"
@@ -980,6 +982,7 @@ const std::vector<std::string> kHistoryKeys = {"--geometry",
                                                "--exponent",
                                                "--pressure-file",
                                                "--path",
+                                               "--digits",
                                                "--cycle",
                                                "--cycles",
                                                "--ramp",
@@ -1013,9 +1016,108 @@ std::vector<std::pair<double, double>> parse_path(const std::string &t) {
   return out;
 }
 
+// "Q1,S1;Q2,S2;..." -> the decimal texts of each vertex (for the reference backend)
+std::vector<std::pair<std::string, std::string>> path_texts(const std::string &t) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const auto nums = parse_path(t);  // the same checks and messages as the double path
+  size_t p = 0;
+  for (size_t i = 0; i < nums.size(); ++i) {
+    const size_t q = t.find(';', p);
+    const std::string v = t.substr(p, q == std::string::npos ? std::string::npos : q - p);
+    const size_t c = v.find(',');
+    auto trim = [](std::string x) {
+      const size_t a = x.find_first_not_of(" \t"), b = x.find_last_not_of(" \t");
+      return a == std::string::npos ? std::string() : x.substr(a, b - a + 1);
+    };
+    out.emplace_back(trim(v.substr(0, c)), trim(v.substr(c + 1)));
+    p = q + 1;
+  }
+  return out;
+}
+
+// history --digits N --path ...: certified states along one ray (hs_ref_history_*)
+int history_reference(const Args &args, bool json) {
+  for (const char *k : {"--cycle", "--points", "--fields", "--surface-stress", "--max-step", "--rtol", "--pad-bulk",
+                        "--nu"})
+    if (args.count(k))
+      die(std::string(k) + " is not available with --digits (certified histories: --path along one ray only)");
+  if (!args.count("--path")) die("history --digits needs --path (a path along one ray through the origin)");
+  const int kind = ref_geometry_kind(args, "--digits");
+  if (is_dimensional(args) || args.count("--flat-width"))
+    die("history --digits takes the ratios (--path of Q/fP, sigma/fp0) and --a, --p0, --f, --E-star");
+  const int digits = parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits());
+  check_ref_digits(kind, digits, "--digits");
+  std::map<std::string, std::string> in;
+  hs_ref_scene sc;
+  hs_ref_scene_default(&sc);
+  sc.geometry = kind;
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED) {
+    in["flat_over_a"] = decimal_arg(args, "--flat-over-a", "0.5");
+    sc.flat_over_a = in["flat_over_a"].c_str();
+  } else if (kind == HS_GEOMETRY_POWER_LAW) {
+    in["exponent"] = decimal_arg(args, "--exponent", "2");
+    sc.exponent = in["exponent"].c_str();
+  }
+  in["f"] = decimal_arg(args, "--f", "1");
+  in["E_star"] = decimal_arg(args, "--E-star", "1");
+  in["a"] = decimal_arg(args, "--a", "1");
+  in["p0"] = decimal_arg(args, "--p0", "1");
+  sc.f = in["f"].c_str();
+  sc.E_star = in["E_star"].c_str();
+  sc.a = in["a"].c_str();
+  sc.p0 = in["p0"].c_str();
+  const auto path = path_texts(args.at("--path"));
+  hs_ref_history *h = nullptr;
+  check_input(hs_ref_history_new(&sc, digits, &h), args, "reference history");
+  for (size_t i = 0; i < path.size(); ++i) {
+    const char *q = path[i].first.c_str(), *s = path[i].second.c_str();
+    const int st = hs_ref_history_add_vertices(h, 1, &q, &s);
+    if (st != HS_OK) {
+      hs_ref_history_free(h);
+      die("history --digits: vertex " + std::to_string(i + 1) + " (Q/fP = " + path[i].first +
+          ", sigma/fp0 = " + path[i].second + "): " + hs_strerror(st) +
+          (st == HS_ERR_NOT_APPLICABLE ? " (certified histories follow paths along one ray through the origin, "
+                                         "with no zone receding on the ramp; drop --digits to march the path)"
+                                       : ""));
+    }
+  }
+  static const char *const keys[4] = {"b1", "b2", "energy1", "energy2"};
+  static const int ids[4] = {HS_REF_B1, HS_REF_B2, HS_REF_ENERGY1, HS_REF_ENERGY2};
+  std::vector<char> buf(size_t(digits) + 64);
+  if (json)
+    std::printf("{\"geometry\": \"%s\", \"digits\": %d, \"method\": \"superposition\", \"vertices\": [",
+                ref_geometry_name(kind), digits);
+  else {
+    std::printf("halfslip %s reference backend: load history along one ray, %s contact, %d significant digits\n",
+                hs_version_string(), kind == HS_GEOMETRY_HERTZ ? "Hertz" : ref_geometry_name(kind), digits);
+    std::printf("  states are sums of certified monotonic solutions (docs/history.md); [n] = certified digits\n");
+  }
+  for (size_t i = 0; i < path.size(); ++i) {
+    int d1 = 0, d2 = 0;
+    check(hs_ref_history_slip_dirs(h, i, &d1, &d2), "slip directions");
+    if (json)
+      std::printf("%s{\"Q_over_fP\": %s, \"sigma_over_fp0\": %s, \"slip_dir1\": %d, \"slip_dir2\": %d",
+                  i ? ", " : "", json_str(path[i].first).c_str(), json_str(path[i].second).c_str(), d1, d2);
+    else
+      std::printf("vertex %zu: Q/fP = %s, sigma/fp0 = %s, slip directions %+d, %+d\n", i + 1, path[i].first.c_str(),
+                  path[i].second.c_str(), d1, d2);
+    for (int k = 0; k < 4; ++k) {
+      int cd = 0;
+      check(hs_ref_history_value(h, i, ids[k], buf.data(), buf.size(), nullptr, &cd), keys[k]);
+      if (json) std::printf(", \"%s\": %s, \"%s_digits\": %d", keys[k], json_str(buf.data()).c_str(), keys[k], cd);
+      else std::printf("  %-8s = %s   [%d]\n", keys[k], buf.data(), cd);
+    }
+    if (json) std::printf("}");
+  }
+  if (json) std::printf("]}\n");
+  hs_ref_history_free(h);
+  return 0;
+}
+
 int cmd_history(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2, kHistoryKeys, {"--json", "--surface-stress"});
   const bool json = args.count("--json") > 0;
+  if (args.count("--digits")) return history_reference(args, json);
   const bool want_surface = args.count("--surface-stress") > 0;
   for (const char *k : {"--fields-vertex", "--fields-at"})
     if (args.count(k) && !args.count("--fields")) die(std::string(k) + " needs --fields FILE (the output)");
@@ -1129,6 +1231,10 @@ int cmd_history(int argc, char **argv) {
                  args.count("--fields-at") ? args.at("--fields-at") : "");
     hs_solution_free(st);
   }
+  // every vertex without a load step: the path lies on one ray and its states are
+  // sums of monotonic solutions (docs/history.md); the march always has a step
+  bool superposed = nv > 0;
+  for (const auto &v : vs) superposed = superposed && v.step == 0 && v.steps == 0;
   if (json) {
     // whole-path figures: the smallest step and the largest (per-segment) estimate
     double smin = nv ? vs[0].step : ho.max_step, emax = 0;
@@ -1138,9 +1244,10 @@ int cmd_history(int argc, char **argv) {
     }
     std::printf(
         "{\"geometry\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, \"E_star\": %s, "
-        "\"rtol\": %s, \"step\": %s, \"error_estimate\": %s, \"vertices\": [",
+        "\"rtol\": %s, \"method\": \"%s\", \"step\": %s, \"error_estimate\": %s, \"vertices\": [",
         geometry.c_str(), num(scene.a).c_str(), num(scene.p0).c_str(), num(P).c_str(), num(scene.f).c_str(),
-        num(scene.E_star).c_str(), num(ho.rtol).c_str(), num(smin).c_str(), num(emax).c_str());
+        num(scene.E_star).c_str(), num(ho.rtol).c_str(), superposed ? "superposition" : "march", num(smin).c_str(),
+        num(emax).c_str());
     for (size_t i = 0; i < nv; ++i) {
       const auto &v = vs[i];
       std::printf(
@@ -1197,7 +1304,14 @@ int cmd_history(int argc, char **argv) {
     std::printf("  a = %.10g, p0 = %.10g, P = %.10g (per unit length), f = %.10g, E* = %.10g\n", scene.a, scene.p0, P,
                 scene.f, scene.E_star);
     std::printf("  energies per unit length; stick zone (-b2, b1); slip direction 0: that edge does not slip\n");
-    if (nv) {
+    if (nv && superposed) {
+      double emax = 0;
+      for (const auto &v : vs) emax = std::max(emax, v.error_estimate);
+      std::printf(
+          "  a path along one ray: states by superposition of monotonic solutions (no march), estimated error "
+          "%.2g\n",
+          emax);
+    } else if (nv) {
       double smin = vs[0].step, smax = vs[0].step, emax = 0;
       for (const auto &v : vs) {
         smin = std::min(smin, v.step);

@@ -21,6 +21,7 @@
 #include "halfslip/core/fields.hpp"
 #include "halfslip/core/history_fields.hpp"
 #include "halfslip/core/ray_fields.hpp"
+#include "halfslip/reference/ray_history.hpp"
 
 namespace core = hs::core;
 
@@ -699,43 +700,97 @@ int hs_ref_max_digits_geometry(int geometry) {
   return hs::reference::max_digits(geometry);
 }
 
+namespace {
+// The reference backend's text scene of an hs_ref_scene (struct_size, geometry
+// and dimensional input checked).
+hs::reference::text_scene text_of(const hs_ref_scene *scene) {
+  // 0.2 callers pass the size without the geometry parameters: Hertz only
+  const bool v02 = scene->struct_size == offsetof(hs_ref_scene, flat_over_a);
+  require(scene->struct_size == sizeof(hs_ref_scene) || v02, core::status::struct_size, "scene struct_size");
+  require(scene->geometry == HS_GEOMETRY_HERTZ ||
+              (!v02 && (scene->geometry == HS_GEOMETRY_FLAT_ROUNDED || scene->geometry == HS_GEOMETRY_POWER_LAW)),
+          core::status::bad_geometry, "unknown geometry");
+  hs::reference::text_scene t;
+  auto take = [](std::string &dst, const char *src) {
+    if (src) dst = src;
+  };
+  t.geometry = scene->geometry;
+  if (!v02) {
+    take(t.flat_over_a, scene->flat_over_a);
+    take(t.exponent, scene->exponent);
+  }
+  take(t.a, scene->a);
+  take(t.p0, scene->p0);
+  take(t.f, scene->f);
+  take(t.Estar, scene->E_star);
+  take(t.q, scene->Q_over_fP);
+  take(t.s, scene->sigma_over_fp0);
+  if (scene->P) {
+    require(scene->R && scene->Q && scene->sigma, core::status::null_pointer,
+            "dimensional input needs P, R, Q and sigma");
+    t.P = scene->P;
+    t.R = scene->R;
+    t.Q = scene->Q;
+    t.sigma = scene->sigma;
+  }
+  return t;
+}
+}  // namespace
+
 int hs_ref_solve(const hs_ref_scene *scene, int digits, hs_ref_solution **out) {
   return guard([&] {
     require(scene != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
-    // 0.2 callers pass the size without the geometry parameters: Hertz only
-    const bool v02 = scene->struct_size == offsetof(hs_ref_scene, flat_over_a);
-    require(scene->struct_size == sizeof(hs_ref_scene) || v02, core::status::struct_size, "scene struct_size");
-    require(scene->geometry == HS_GEOMETRY_HERTZ ||
-                (!v02 && (scene->geometry == HS_GEOMETRY_FLAT_ROUNDED || scene->geometry == HS_GEOMETRY_POWER_LAW)),
-            core::status::bad_geometry, "unknown geometry");
-    hs::reference::text_scene t;
-    auto take = [](std::string &dst, const char *src) {
-      if (src) dst = src;
-    };
-    t.geometry = scene->geometry;
-    if (!v02) {
-      take(t.flat_over_a, scene->flat_over_a);
-      take(t.exponent, scene->exponent);
-    }
-    take(t.a, scene->a);
-    take(t.p0, scene->p0);
-    take(t.f, scene->f);
-    take(t.Estar, scene->E_star);
-    take(t.q, scene->Q_over_fP);
-    take(t.s, scene->sigma_over_fp0);
-    if (scene->P) {
-      require(scene->R && scene->Q && scene->sigma, core::status::null_pointer,
-              "dimensional input needs P, R, Q and sigma");
-      t.P = scene->P;
-      t.R = scene->R;
-      t.Q = scene->Q;
-      t.sigma = scene->sigma;
-    }
+    const hs::reference::text_scene t = text_of(scene);
     *out = new hs_ref_solution{hs::reference::solution(t, digits)};
   });
 }
 
 void hs_ref_solution_free(hs_ref_solution *sol) { delete sol; }
+
+// issue 14: certified load histories along one ray (reference/ray_history.hpp)
+struct hs_ref_history {
+  std::unique_ptr<hs::reference::ray_history> h;
+};
+
+int hs_ref_history_new(const hs_ref_scene *scene, int digits, hs_ref_history **out) {
+  return guard([&] {
+    require(scene != nullptr && out != nullptr, core::status::null_pointer, "NULL argument");
+    auto r = std::make_unique<hs_ref_history>();
+    r->h = std::make_unique<hs::reference::ray_history>(text_of(scene), digits);
+    *out = r.release();
+  });
+}
+
+void hs_ref_history_free(hs_ref_history *h) { delete h; }
+
+int hs_ref_history_add_vertices(hs_ref_history *h, size_t n, const char *const *Q_over_fP,
+                                const char *const *sigma_over_fp0) {
+  return guard([&] {
+    require(h != nullptr && (n == 0 || (Q_over_fP != nullptr && sigma_over_fp0 != nullptr)),
+            core::status::null_pointer, "NULL argument");
+    for (size_t i = 0; i < n; ++i) {
+      require(Q_over_fP[i] != nullptr && sigma_over_fp0[i] != nullptr, core::status::null_pointer,
+              "NULL vertex string");
+      h->h->add(Q_over_fP[i], sigma_over_fp0[i]);
+    }
+  });
+}
+
+int hs_ref_history_vertex_count(const hs_ref_history *h, size_t *n) {
+  return guard([&] {
+    require(h != nullptr && n != nullptr, core::status::null_pointer, "NULL argument");
+    *n = h->h->size();
+  });
+}
+
+int hs_ref_history_slip_dirs(const hs_ref_history *h, size_t vertex, int *dir1, int *dir2) {
+  return guard([&] {
+    require(h != nullptr && dir1 != nullptr && dir2 != nullptr, core::status::null_pointer, "NULL argument");
+    const int d1 = h->h->dir1(vertex), d2 = h->h->dir2(vertex);
+    *dir1 = d1;
+    *dir2 = d2;
+  });
+}
 
 int hs_ref_solution_summary(const hs_ref_solution *sol, hs_ref_summary *out) {
   return guard([&] {
@@ -771,6 +826,16 @@ int hs_ref_value(const hs_ref_solution *sol, int quantity, char *buf, size_t siz
     require(sol != nullptr, core::status::null_pointer, "solution is NULL");
     require(quantity >= HS_REF_B1 && quantity <= HS_REF_P0, core::status::bad_option, "unknown quantity");
     put_text(sol->sol.value(hs::reference::quantity(quantity)), buf, size, needed, certified);
+  });
+}
+
+int hs_ref_history_value(const hs_ref_history *h, size_t vertex, int quantity, char *buf, size_t size, size_t *needed,
+                         int *certified) {
+  return guard([&] {
+    require(h != nullptr, core::status::null_pointer, "history is NULL");
+    require(quantity == HS_REF_B1 || quantity == HS_REF_B2 || quantity == HS_REF_ENERGY1 || quantity == HS_REF_ENERGY2,
+            core::status::bad_option, "quantity: HS_REF_B1, HS_REF_B2, HS_REF_ENERGY1 or HS_REF_ENERGY2");
+    put_text(h->h->value(vertex, hs::reference::quantity(quantity)), buf, size, needed, certified);
   });
 }
 

@@ -111,6 +111,12 @@ certified solution::value(quantity q) const {
   return certify(work_->value(q, digits_), check_->value(q, int(check_->digits10())));
 }
 
+std::string solution::raw(quantity q, bool check) const {
+  release_mpfr_thread_caches on_exit;
+  const auto &t = check ? check_ : work_;
+  return t->value(q, int(t->digits10()));
+}
+
 certified solution::eval(point_eval what, const std::string &x) const {
   release_mpfr_thread_caches on_exit;
   return certify(work_->eval(what, x, digits_), check_->eval(what, x, int(check_->digits10())));

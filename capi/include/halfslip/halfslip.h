@@ -387,6 +387,32 @@ HS_EXPORT int hs_ref_solution_summary(const hs_ref_solution *sol, hs_ref_summary
 HS_EXPORT int hs_ref_value(const hs_ref_solution *sol, int quantity, char *buf, size_t size, size_t *needed,
                            int *certified);
 
+/* ---- certified load histories along one ray (issue 14, added after 0.4.0) ----
+ * A load path whose vertices all lie on one ray through the origin (unloading,
+ * reloading, proportional cycles of any amplitudes), with no slip zone receding
+ * on the ramp to the farthest vertex: each state is a sum of monotonic
+ * solutions (Jager's memory rule; docs/history.md), each certified by the
+ * reference backend. Vertices are decimal strings, as hs_ref_scene's ratios;
+ * the scene gives the contact (geometry, a, p0, f, E*; dimensional input is not
+ * taken: HS_ERR_BAD_OPTION) and its Q/fP and sigma/fp0 are ignored. A vertex
+ * off the ray, or a ramp on which a zone recedes, gives HS_ERR_NOT_APPLICABLE
+ * (march the path in double, hs_history_*); |Q/fP| >= 1 HS_ERR_GROSS_SLIDING.
+ * On error the history keeps the vertices added before. */
+typedef struct hs_ref_history hs_ref_history;
+HS_EXPORT int hs_ref_history_new(const hs_ref_scene *scene, int digits, hs_ref_history **out);
+HS_EXPORT void hs_ref_history_free(hs_ref_history *h); /* NULL is a no-op */
+HS_EXPORT int hs_ref_history_add_vertices(hs_ref_history *h, size_t n, const char *const *Q_over_fP,
+                                          const char *const *sigma_over_fp0);
+HS_EXPORT int hs_ref_history_vertex_count(const hs_ref_history *h, size_t *n);
+/* HS_REF_B1, HS_REF_B2 (stick zone (-b2, b1) after the vertex), HS_REF_ENERGY1,
+ * HS_REF_ENERGY2 (dissipated in each zone over the segment ending at the vertex),
+ * as hs_ref_value: the energies are sums of differences of monotonic energies,
+ * formed at the work and the check tier and certified by their agreement. */
+HS_EXPORT int hs_ref_history_value(const hs_ref_history *h, size_t vertex, int quantity, char *buf, size_t size,
+                                   size_t *needed, int *certified);
+/* slip directions after the vertex (+1, -1; 0 where that edge does not slip) */
+HS_EXPORT int hs_ref_history_slip_dirs(const hs_ref_history *h, size_t vertex, int *dir1, int *dir2);
+
 #define HS_REF_EVAL_BX       1
 #define HS_REF_EVAL_SLIP     2
 #define HS_REF_EVAL_WORK     3

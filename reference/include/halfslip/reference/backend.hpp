@@ -103,6 +103,9 @@ class solution {
   certified eval(point_eval what, const std::string &x) const;
   certified stress(int body, const std::string &bulk2, stress_component c, const std::string &x,
                    const std::string &y) const;
+  // a quantity at all the digits of the work (check = false) or check tier,
+  // for sums of solutions certified by the same two tiers (ray_history.hpp)
+  std::string raw(quantity q, bool check) const;
 
  private:
   certified certify(const std::string &work, const std::string &check) const;
