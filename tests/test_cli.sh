@@ -316,6 +316,28 @@ v = json.load(sys.stdin)["vertices"]
 assert abs(v[0]["surface_stress"]["body1"]["max"] - 2 * math.sqrt(0.6)) < 1e-6, v[0]
 assert "surface_stress" in v[1]' && ok || ko "history --surface-stress (peak 2 f p0 sqrt(Q/fP) at the first vertex)"
 "$cli" history --path "0.6,0" --json | grep -q surface_stress && ko "surface_stress without --surface-stress" || ok
+# issue 14: a path along one ray is solved by superposition (exact), one off it by the march
+js=$("$cli" history --path "0.6,0;0.2,0" --json) && echo "$js" | python3 -c '
+import json, math, sys
+d = json.load(sys.stdin)
+assert d["method"] == "superposition", d["method"]
+v = d["vertices"]
+assert abs(v[1]["b1"] - math.sqrt(1 - 0.4 / 2)) <= 4 * 2.0 ** -52, v[1]["b1"]
+assert v[1]["steps"] == 0 and v[1]["slip_dir1"] == -1' && ok || ko "history along one ray: superposition"
+"$cli" history --path "0.6,0;0.2,0.3" --json | grep -q '"method": "march"' && ok || ko "history off the ray: march"
+js=$("$cli" history --digits 30 --path "0.6,0;0.2,0" --json) && echo "$js" | python3 -c '
+import json, sys
+from decimal import Decimal, getcontext
+getcontext().prec = 40
+d = json.load(sys.stdin)
+v = d["vertices"][1]
+c = (1 - Decimal("0.4") / 2).sqrt()
+assert abs(Decimal(v["b1"]) - c) < Decimal("1e-29") and v["b1_digits"] == 30, v
+assert v["energy1_digits"] >= 28 and v["slip_dir1"] == -1, v' && ok || ko "history --digits (certified, along one ray)"
+err=$("$cli" history --digits 30 --path "0.6,0;0.2,0.3" 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q "vertex 2" && echo "$err" | grep -q "one ray" && ok || ko "history --digits off the ray: $err"
+err=$("$cli" history --digits 30 --cycle 0,0.3,0,0,0 2>&1 >/dev/null); rc=$?
+[ $rc -ne 0 ] && echo "$err" | grep -q -- "--cycle" && ok || ko "history --digits --cycle: $err"
 err=$("$cli" history --path "0.6,0" --fields "$dir/x.csv" --fields-vertex 2 2>&1 >/dev/null); rc=$?
 [ $rc -ne 0 ] && echo "$err" | grep -q -- "--fields-vertex" && ok || ko "history --fields-vertex out of range: $err"
 err=$("$cli" history --path "0.6,0" --fields-vertex 1 2>&1 >/dev/null); rc=$?
