@@ -27,7 +27,7 @@ import ctypes
 import decimal
 import enum
 import sys
-from ctypes import byref, c_double, c_int, c_size_t
+from ctypes import byref, c_char_p, c_double, c_int, c_size_t
 
 from . import _clib
 
@@ -36,6 +36,7 @@ __all__ = [
     "HalfslipError", "Scene", "Solution", "ReferenceSolution", "Certified", "Model", "Regime", "History",
     "HistoryVertex", "CycleSummary", "Ramp",
     "solve", "solve_batch", "from_hertz_loads", "from_power_law_loads", "from_flat_rounded_loads", "solve_reference", "ref_max_digits",
+    "ReferenceHistory", "history_reference",
     "version", "library_version", "library_path", "strerror",
 ]
 
@@ -1091,6 +1092,84 @@ def solve_reference(digits, Q_over_fP=None, sigma_over_fp0=None, *, a=None, p0=N
                             % (digits, ref_max_digits(c.geometry)))
     _check(st, "hs_ref_solve", values)
     return ReferenceSolution(h)
+
+
+def history_reference(digits, path, *, a=None, p0=None, f=None, E_star=None, geometry=None, flat_over_a=None,
+                      exponent=None):
+    """Certified load history along one ray through the origin (issue 14): path
+    is a list of (Q/fP, sigma/fp0) vertices (decimal strings, or numbers
+    converted with str()), all on one ray through the origin, with no zone
+    receding on the ramp to the farthest one; each state is a sum of monotonic
+    solutions of the reference backend (docs/history.md). Other paths raise
+    HalfslipError (HS_ERR_NOT_APPLICABLE): march them in double with History.
+    Returns a ReferenceHistory."""
+    c = _clib.RefScene()
+    _check(_lib.hs_ref_scene_default(byref(c)), "hs_ref_scene_default")
+    if isinstance(digits, bool) or not isinstance(digits, int):
+        raise ValueError("halfslip.history_reference: digits=%r is not an integer" % (digits,))
+    keep = {}
+    for k, v in dict(a=a, p0=p0, f=f, E_star=E_star, flat_over_a=flat_over_a, exponent=exponent).items():
+        if v is not None:
+            keep[k] = _decimal(v, k, "history_reference")
+            setattr(c, k, keep[k])
+    kind = _geometry_kind(geometry, flat_over_a, exponent, None, None)
+    if kind is not None:
+        c.geometry = kind
+    h = _clib.RefHistoryP()
+    _check(_lib.hs_ref_history_new(byref(c), digits, byref(h)), "hs_ref_history_new",
+           dict(digits=digits, geometry=geometry))
+    r = ReferenceHistory(h)
+    try:
+        for i, (q, s) in enumerate(path):
+            qs, ss = _decimal(q, "Q_over_fP", "history_reference"), _decimal(s, "sigma_over_fp0", "history_reference")
+            qa, sa = (c_char_p * 1)(qs), (c_char_p * 1)(ss)
+            _check(_lib.hs_ref_history_add_vertices(h, 1, qa, sa), "hs_ref_history_add_vertices",
+                   {"vertex": i + 1, "Q_over_fP": q, "sigma_over_fp0": s})
+    except BaseException:
+        r.close()
+        raise
+    return r
+
+
+class ReferenceHistory(_Handle):
+    """A certified load history along one ray (history_reference). For vertex i:
+    value(i, 'b1' | 'b2' | 'energy1' | 'energy2') is a Certified string (the
+    stick zone after the vertex, the energy of the segment ending there) and
+    slip_dirs(i) the directions (+1, -1, 0)."""
+
+    def __init__(self, handle):
+        self._h = handle
+
+    def _handle(self):
+        if not self._h:
+            raise ValueError("halfslip: the reference history has been closed")
+        return self._h
+
+    def _release(self, h):
+        if h:
+            _lib.hs_ref_history_free(h)
+
+    @property
+    def vertex_count(self):
+        n = c_size_t(0)
+        _check(_lib.hs_ref_history_vertex_count(self._handle(), byref(n)), "hs_ref_history_vertex_count")
+        return n.value
+
+    def value(self, vertex, quantity):
+        q = {"b1": 1, "b2": 2, "energy1": 5, "energy2": 6}.get(quantity)
+        if q is None:
+            raise ValueError("halfslip: quantity %r (one of b1, b2, energy1, energy2)" % (quantity,))
+        return _ref_text(_lib.hs_ref_history_value, "hs_ref_history_value", (self._handle(), vertex, q),
+                         {"vertex": vertex})
+
+    def slip_dirs(self, vertex):
+        d1, d2 = c_int(0), c_int(0)
+        _check(_lib.hs_ref_history_slip_dirs(self._handle(), vertex, byref(d1), byref(d2)),
+               "hs_ref_history_slip_dirs", {"vertex": vertex})
+        return d1.value, d2.value
+
+    def __repr__(self):
+        return "<halfslip.ReferenceHistory, %s>" % ("%d vertices" % self.vertex_count if self._h else "closed")
 
 
 def _ref_text(fn, name, args, values=None):

@@ -205,9 +205,14 @@ class _History(ctypes.Structure):
     """opaque struct hs_history"""
 
 
+class _RefHistory(ctypes.Structure):
+    """opaque struct hs_ref_history (issue 14)"""
+
+
 SolutionP = POINTER(_Solution)
 HistoryP = POINTER(_History)
 RefSolutionP = POINTER(_RefSolution)
+RefHistoryP = POINTER(_RefHistory)
 _DoubleP = POINTER(c_double)
 _CharP = POINTER(ctypes.c_char)  # output buffers (create_string_buffer)
 
@@ -262,6 +267,13 @@ _SIGNATURES = {
     "hs_ref_max_digits_geometry": (c_int, [c_int]),
     "hs_ref_solve": (c_int, [POINTER(RefScene), c_int, POINTER(RefSolutionP)]),
     "hs_ref_solution_free": (None, [RefSolutionP]),
+    "hs_ref_history_new": (c_int, [POINTER(RefScene), c_int, POINTER(RefHistoryP)]),
+    "hs_ref_history_free": (None, [RefHistoryP]),
+    "hs_ref_history_add_vertices": (c_int, [RefHistoryP, c_size_t, POINTER(c_char_p), POINTER(c_char_p)]),
+    "hs_ref_history_vertex_count": (c_int, [RefHistoryP, POINTER(c_size_t)]),
+    "hs_ref_history_value": (c_int, [RefHistoryP, c_size_t, c_int, _CharP, c_size_t, POINTER(c_size_t),
+                                     POINTER(c_int)]),
+    "hs_ref_history_slip_dirs": (c_int, [RefHistoryP, c_size_t, POINTER(c_int), POINTER(c_int)]),
     "hs_ref_solution_summary": (c_int, [RefSolutionP, POINTER(RefSummary)]),
     "hs_ref_value": (c_int, [RefSolutionP, c_int, _CharP, c_size_t, POINTER(c_size_t), POINTER(c_int)]),
     "hs_ref_eval": (c_int, [RefSolutionP, c_int, c_char_p, _CharP, c_size_t, POINTER(c_size_t),

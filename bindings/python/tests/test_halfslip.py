@@ -619,14 +619,27 @@ class TestHistory(unittest.TestCase):
             s = h.slip(1, [0.0, 0.99, -0.99])
             self.assertEqual(s[0], 0.0)
             self.assertTrue(s[1] > 0 and s[2] > 0)   # locked-in forward slip at the edges
-        # a vertex off the ray: the whole path is marched (steps > 0), within its accuracy
-        with halfslip.History() as h:
-            h.add_vertices([0.6, 0.2, 0.2], [0.0, 0.0, 0.5])
-            v0, v1, v2 = h.vertices
-            self.assertTrue(v2.steps > v1.steps > v0.steps > 0)
-            self.assertAlmostEqual(v1.b1, c, delta=1e-5 * c)
             self.assertEqual(len(h.slip(1, [])), 0)
             self.assertIn("2 vertices", repr(h))
+        # certified digits along the ray (reference backend)
+        with halfslip.history_reference(30, [("0.6", "0"), ("0.2", "0")]) as r:
+            self.assertEqual(r.vertex_count, 2)
+            b = r.value(1, "b1")
+            self.assertEqual(b.certified, 30)
+            from decimal import Decimal, getcontext
+            getcontext().prec = 40
+            self.assertLess(abs(Decimal(str(b)) - (1 - Decimal("0.4") / 2).sqrt()), Decimal("1e-29"))
+            self.assertEqual(r.slip_dirs(1), (-1, -1))
+            self.assertAlmostEqual(float(str(r.value(1, "energy1"))), v1.energy1, delta=1e-14)
+        with self.assertRaises(halfslip.HalfslipError) as e:
+            halfslip.history_reference(30, [("0.6", "0"), ("0.2", "0.3")])
+        self.assertEqual(e.exception.status, halfslip.ERR_NOT_APPLICABLE)
+        # a vertex off the ray: the whole path is marched (steps > 0), within its accuracy
+        with halfslip.History() as hm:
+            hm.add_vertices([0.6, 0.2, 0.2], [0.0, 0.0, 0.5])
+            v0, v1, v2 = hm.vertices
+            self.assertTrue(v2.steps > v1.steps > v0.steps > 0)
+            self.assertAlmostEqual(v1.b1, c, delta=1e-5 * c)
 
     def test_state_stresses(self):
         # issue 15: the state after a vertex as a Solution. Unloading 0.6 -> 0.2 (sigma = 0): by
