@@ -25,9 +25,12 @@ namespace {
 
 std::shared_ptr<const pressure_model<double>> hertz_pm() { return std::make_shared<hertz_pressure<double>>(); }
 
+// (interior slip patches merged, as before issue 14 made them an error by default:
+// these tests measure the merge's accuracy against the BEM; the default is tested below)
 history_options<double> opts(double step) {
   history_options<double> o;
   o.max_step = step;
+  o.merge_interior_patches = true;
   return o;
 }
 
@@ -282,6 +285,40 @@ TEST_CASE("history: out-of-phase Q and sigma (vs BEM)") {
   compare_with_bem(path, "out of phase (90 degrees)", true);
 }
 
+TEST_CASE("history: an interior slip patch is a clear status by default (issue 14)") {
+  // the out-of-phase path above opens an interior patch (the BEM's traction shows a third zone):
+  // by default the march stops there with not_applicable, keeping the vertices before; with
+  // merge_interior_patches it merges the patch (counted) and goes on
+  std::vector<std::pair<double, double>> path{{0.0, 1.4}};
+  for (int k = 1; k <= 16; ++k) {
+    const double th = 2 * M_PI * k / 16;
+    path.emplace_back(0.4 * std::sin(th), 0.8 + 0.6 * std::cos(th));
+  }
+  history_options<double> strict = opts(1.0 / 64);
+  strict.merge_interior_patches = false;
+  history<double> a(hertz_pm(), strict), b(hertz_pm(), opts(1.0 / 64));
+  size_t first_merge = path.size();
+  for (size_t i = 0; i < path.size(); ++i) {
+    b.add_vertex(path[i].first, path[i].second);
+    if (b.interior_merges() > 0 && first_merge == path.size()) first_merge = i;
+  }
+  REQUIRE(first_merge < path.size());
+  int st = 0;
+  size_t failed_at = path.size();
+  for (size_t i = 0; i < path.size() && failed_at == path.size(); ++i) {
+    try {
+      a.add_vertex(path[i].first, path[i].second);
+    } catch (const error &e) {
+      st = int(e.code());
+      failed_at = i;
+    }
+  }
+  CHECK(st == int(status::not_applicable));
+  CHECK(failed_at == first_merge);
+  CHECK(a.vertices().size() == first_merge);
+  CHECK(a.interior_merges() == 0);
+}
+
 TEST_CASE("history: degenerate vertices and bad input") {
   history<double> h(hertz_pm(), opts(1.0 / 64));
   h.add_vertex(0.3, 0.2);
@@ -309,6 +346,7 @@ TEST_CASE("history: the same template in long double agrees with double") {
   auto pmd = std::make_shared<hertz_pressure<double>>();
   auto pml = std::make_shared<hertz_pressure<long double>>();
   history_options<long double> ol;
+  ol.merge_interior_patches = true;
   ol.max_step = 1.0L / 64;
   history<double> hd(pmd, opts(1.0 / 64));
   history<long double> hl(pml, ol);

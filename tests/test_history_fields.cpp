@@ -37,6 +37,7 @@ std::shared_ptr<const history<double>> march(int which) {
   auto pm = std::make_shared<hertz_pressure<double>>();
   history_options<double> ho;
   ho.max_step = 1.0 / 32;
+  ho.merge_interior_patches = true;  // the out-of-phase cycles open interior patches
   refined_history<double> rh(pm, ho, 1e-8);
   if (which == 0) {  // unloading (Ciavarella-Jager)
     rh.add_vertex(0.6, 0);

@@ -98,6 +98,8 @@ const char *kUsage =
     "  --max-step H            first load step in max(|dQ/fP|, |dsigma/fp0|/4) (default 1/32)\n"
     "  --rtol R                halve the step until steps h and 2h agree to R (default 1e-8; 0: fixed)\n"
     "  --steady-rtol R         steady when zone ends and energies repeat to R (default 1e-9)\n"
+    "  --interior-patches P    error (default): stop where a third slip zone would open inside the stick\n"
+    "                          zone; merge: merge it with the edge zone (approximate, counted per vertex)\n"
     "  --points N              q(x) and slip h(x) at N points across the contact (and the slip range)\n"
     "  --json                  one object: vertices (b1, b2, slip_dir1/2, energy1/2 per segment),\n"
     "                          cycles_to_steady, energy_per_cycle1/2\n"
@@ -991,6 +993,7 @@ const std::vector<std::string> kHistoryKeys = {"--geometry",
                                                "--points",
                                                "--steady-rtol",
                                                "--rtol",
+                                               "--interior-patches",
                                                "--fields",
                                                "--fields-vertex",
                                                "--fields-at",
@@ -1114,6 +1117,17 @@ int history_reference(const Args &args, bool json) {
   return 0;
 }
 
+// what a failed march most likely met (the C ABI gives the status only)
+std::string history_hint(int st, const hs_history_options &ho) {
+  if (st == HS_ERR_NOT_APPLICABLE && ho.interior_patches == HS_PATCHES_ERROR)
+    return " (here: the friction limit is reached inside the stick zone, away from its ends: a third slip zone "
+           "would open, which the march does not model; --interior-patches merge merges it with the edge zone, "
+           "an approximation counted per vertex; docs/history.md)";
+  if (st == HS_ERR_NO_CONVERGENCE)
+    return " (docs/history.md, Limits: more slip zones than the march models, or the step budget)";
+  return "";
+}
+
 int cmd_history(int argc, char **argv) {
   const Args args = parse_args(argc, argv, 2, kHistoryKeys, {"--json", "--surface-stress"});
   const bool json = args.count("--json") > 0;
@@ -1142,6 +1156,12 @@ int cmd_history(int argc, char **argv) {
   if (args.count("--segments-per-cycle"))
     ho.segments_per_cycle = parse_int("--segments-per-cycle", args.at("--segments-per-cycle"), 4, 100000);
   if (args.count("--steady-rtol")) ho.steady_rtol = parse_number("--steady-rtol", args.at("--steady-rtol").c_str());
+  if (args.count("--interior-patches")) {
+    const std::string r = args.at("--interior-patches");
+    if (r == "error") ho.interior_patches = HS_PATCHES_ERROR;
+    else if (r == "merge") ho.interior_patches = HS_PATCHES_MERGE;
+    else die("bad value for --interior-patches: '" + r + "' (error or merge)");
+  }
   if (args.count("--ramp")) {
     const std::string r = args.at("--ramp");
     if (r == "sigma-first") ho.ramp_order = HS_RAMP_SIGMA_FIRST;
@@ -1159,7 +1179,7 @@ int cmd_history(int argc, char **argv) {
       const int st = hs_history_add_vertices(h, 1, &q, &s);
       if (st != HS_OK)
         die("history: vertex " + std::to_string(i + 1) + " (Q/fP = " + num(q) + ", sigma/fp0 = " + num(s) +
-            "): " + hs_strerror(st));
+            "): " + hs_strerror(st) + history_hint(st, ho));
     }
   } else {
     const std::string t = args.at("--cycle");
@@ -1173,7 +1193,8 @@ int cmd_history(int argc, char **argv) {
     }
     if (c.size() != 5) die("bad value for --cycle: need Qm,Qa,Sm,Sa,phase_deg (5 numbers)");
     const int n = args.count("--cycles") ? parse_int("--cycles", args.at("--cycles"), 1, 100000) : 10;
-    check(hs_history_add_cycles(h, c[0] * qs, c[1] * qs, c[2] * ss, c[3] * ss, c[4], n), "history");
+    const int st = hs_history_add_cycles(h, c[0] * qs, c[1] * qs, c[2] * ss, c[3] * ss, c[4], n);
+    if (st != HS_OK) die(std::string("history: ") + hs_strerror(st) + history_hint(st, ho));
     cyc = true;
     // symmetric proportional cycling (zero means, in phase or anti-phase or one amplitude
     // zero): the closed form (Ciavarella-Jager) of the library, printed beside the march
@@ -1256,7 +1277,8 @@ int cmd_history(int argc, char **argv) {
           i ? ", " : "", num(v.Q_over_fP).c_str(), num(v.sigma_over_fp0).c_str(), num(v.b1).c_str(),
           num(v.b2).c_str(), v.slip_dir1, v.slip_dir2, num(v.energy1).c_str(), num(v.energy2).c_str(), v.cycle,
           v.steps);
-      std::printf(", \"step\": %s, \"error_estimate\": %s", num(v.step).c_str(), num(v.error_estimate).c_str());
+      std::printf(", \"step\": %s, \"error_estimate\": %s, \"interior_merges\": %ld", num(v.step).c_str(),
+                  num(v.error_estimate).c_str(), v.interior_merges);
       if (want_surface) {
         std::printf(", \"surface_stress\": {");
         for (int b = 0; b < 2; ++b)
@@ -1322,6 +1344,10 @@ int cmd_history(int argc, char **argv) {
           "  load steps %.6g to %.6g after refinement per segment, estimated error %.2g (rtol %.2g per segment)\n",
           smin, smax, emax, ho.rtol);
     }
+    if (nv && vs.back().interior_merges > 0)
+      std::printf("  APPROXIMATE: %ld interior slip patches merged with an edge zone (--interior-patches merge; "
+                  "docs/history.md)\n",
+                  vs.back().interior_merges);
     std::printf("%6s %5s %13s %13s %12s %12s %5s %5s %13s %13s %8s", "vertex", "cycle", "Q/fP", "sigma/fp0", "b1/a",
                 "b2/a", "dir1", "dir2", "energy1", "energy2", "steps");
     if (want_surface) std::printf(" %13s %13s", "max sxx(1)", "max sxx(2)");

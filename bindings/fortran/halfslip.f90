@@ -95,6 +95,9 @@ module halfslip
   integer(c_int), parameter, public :: HS_RAMP_SIGMA_FIRST = 0
   integer(c_int), parameter, public :: HS_RAMP_TOGETHER    = 1
   integer(c_int), parameter, public :: HS_RAMP_Q_FIRST     = 2
+  ! interior slip patches (hs_history_options%interior_patches, issue 14)
+  integer(c_int), parameter, public :: HS_PATCHES_ERROR = 0
+  integer(c_int), parameter, public :: HS_PATCHES_MERGE = 1
 
   integer(c_int), parameter, public :: HS_FIELD_TRACTION = 1
   integer(c_int), parameter, public :: HS_FIELD_SLIP     = 2
@@ -189,6 +192,7 @@ module halfslip
     integer(c_int)    :: ramp_order = 0          ! HS_RAMP_*
     real(c_double)    :: steady_rtol = 0         ! steady-cycle tolerance
     real(c_double)    :: rtol = 0                ! march refined until steps h and 2h agree to rtol
+    integer(c_int)    :: interior_patches = 0    ! HS_PATCHES_ERROR (default) or HS_PATCHES_MERGE
   end type hs_history_options
 
   type, bind(c), public :: hs_history_vertex

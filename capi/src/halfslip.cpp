@@ -317,7 +317,8 @@ const char *hs_strerror(int status) {
     case HS_ERR_BAD_NUMBER: return "a decimal number string could not be parsed";
     case HS_ERR_NOT_APPLICABLE:
       return "the requested model or function does not apply (e.g. asymptotic slip zones that cover the contact; "
-             "energies, work or B_x of a load-history state)";
+             "energies, work or B_x of a load-history state; a slip zone opening inside the stick zone of a load "
+             "history; a certified history off one ray)";
     case HS_ERR_TOLERANCE:
       return "no model meets the requested tolerance in double precision (use the reference backend, hs_ref_solve)";
     default: return "unknown halfslip status code";

@@ -3,6 +3,8 @@
 #include <halfslip/halfslip.h>
 
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -67,6 +69,7 @@ int hs_history_options_default(hs_history_options *o) {
     o->segments_per_cycle = 64;
     o->ramp_order = HS_RAMP_SIGMA_FIRST;
     o->steady_rtol = 1e-6;
+    o->interior_patches = HS_PATCHES_ERROR;
   });
 }
 
@@ -78,8 +81,12 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
     auto r = std::make_unique<hs_history>();
     hs_history_options_default(&r->opts);
     if (opts) {
-      require(opts->struct_size == sizeof(hs_history_options), core::status::struct_size, "options struct_size");
-      r->opts = *opts;
+      // a 0.4.0 caller's struct ends before interior_patches (that field keeps its default)
+      const size_t v040 = offsetof(hs_history_options, interior_patches);
+      require(opts->struct_size == sizeof(hs_history_options) || opts->struct_size == v040,
+              core::status::struct_size, "options struct_size");
+      std::memcpy(&r->opts, opts, opts->struct_size);
+      r->opts.struct_size = sizeof(hs_history_options);
     }
     const auto &o = r->opts;
     require(std::isfinite(o.max_step) && o.max_step >= 1e-6 && o.max_step <= 1, core::status::bad_option,
@@ -91,6 +98,8 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
             "ramp_order");
     require(std::isfinite(o.steady_rtol) && o.steady_rtol >= 0, core::status::bad_option, "steady_rtol");
     require(std::isfinite(o.rtol) && o.rtol >= 0, core::status::bad_option, "rtol");
+    require(o.interior_patches == HS_PATCHES_ERROR || o.interior_patches == HS_PATCHES_MERGE,
+            core::status::bad_option, "interior_patches must be HS_PATCHES_ERROR or HS_PATCHES_MERGE");
     std::shared_ptr<const core::pressure_model<double>> pm;
     if (geometry == nullptr || geometry->kind == HS_GEOMETRY_HERTZ) {
       if (geometry) require(geometry->struct_size == sizeof(hs_geometry), core::status::struct_size, "geometry");
@@ -113,6 +122,7 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
     core::history_options<double> ho;
     ho.max_step = o.max_step;
     ho.max_steps = o.max_steps;
+    ho.merge_interior_patches = o.interior_patches == HS_PATCHES_MERGE;
     r->h = std::make_unique<core::refined_history<double>>(pm, ho, o.rtol);
     r->pm = pm;
     r->march_options = ho;

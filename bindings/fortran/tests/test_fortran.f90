@@ -50,7 +50,7 @@ program test_fortran
   end interface
 
   ! Same order as kValues in header_values.c.
-  integer(c_int), parameter :: kConstants(60) = [ &
+  integer(c_int), parameter :: kConstants(62) = [ &
     HS_VERSION_MAJOR, HS_VERSION_MINOR, HS_VERSION_PATCH, &
     HS_OK, HS_ERR_NULL_POINTER, HS_ERR_STRUCT_SIZE, HS_ERR_NOT_FINITE, HS_ERR_BAD_SIZE, &
     HS_ERR_BAD_FRICTION, HS_ERR_GROSS_SLIDING, HS_ERR_BAD_GEOMETRY, HS_ERR_POINT_OUTSIDE, &
@@ -65,7 +65,7 @@ program test_fortran
     HS_REF_EVAL_BX, HS_REF_EVAL_SLIP, HS_REF_EVAL_WORK, HS_REF_EVAL_PRESSURE, &
     HS_RAMP_SIGMA_FIRST, HS_RAMP_TOGETHER, HS_RAMP_Q_FIRST, HS_FIELD_TRACTION, HS_FIELD_SLIP, &
     HS_STRESS_XX, HS_STRESS_YY, HS_STRESS_XY, HS_STRESS_VON_MISES, HS_STRESS_MAX_PRINCIPAL, &
-    HS_STRESS_MIN_PRINCIPAL, HS_STRESS_MAX_SHEAR]
+    HS_STRESS_MIN_PRINCIPAL, HS_STRESS_MAX_SHEAR, HS_PATCHES_ERROR, HS_PATCHES_MERGE]
 
   real(c_double), parameter :: pi = 3.141592653589793238462643383279503_c_double
   integer :: passed = 0, failed = 0

@@ -853,7 +853,8 @@ class History(_Handle):
 
     def __init__(self, *, a=None, p0=None, f=None, E_star=None, scene=None, geometry=None, flat_over_a=None,
                  exponent=None, samples=None, pressure=None, max_step=None, max_steps=None,
-                 segments_per_cycle=None, ramp_order=None, steady_rtol=None, rtol=None):
+                 segments_per_cycle=None, ramp_order=None, steady_rtol=None, rtol=None,
+                 interior_patches=None):
         self._h = None
         self._callback = None
         if scene is None:
@@ -862,7 +863,8 @@ class History(_Handle):
             raise TypeError("History: give either scene or scene values, not both")
         opts = None
         given = dict(max_step=max_step, max_steps=max_steps, segments_per_cycle=segments_per_cycle,
-                     ramp_order=ramp_order, steady_rtol=steady_rtol, rtol=rtol)
+                     ramp_order=ramp_order, steady_rtol=steady_rtol, rtol=rtol,
+                     interior_patches=interior_patches)
         if any(v is not None for v in given.values()):
             o = _clib.HistoryOptions()
             _check(_lib.hs_history_options_default(byref(o)), "hs_history_options_default")
@@ -885,6 +887,13 @@ class History(_Handle):
                 o.steady_rtol = float(steady_rtol)
             if rtol is not None:
                 o.rtol = float(rtol)
+            if interior_patches is not None:
+                # "error" (default): HalfslipError (ERR_NOT_APPLICABLE) where a third slip zone
+                # would open inside the stick zone; "merge": merged with the edge zone (approximate)
+                names = {"error": 0, "merge": 1}
+                if interior_patches not in names:
+                    raise ValueError("halfslip: interior_patches=%r (one of error, merge)" % (interior_patches,))
+                o.interior_patches = names[interior_patches]
             opts = byref(o)
         kind = _geometry_kind(geometry, flat_over_a, exponent, samples, pressure)
         g, arrays, callback = None, None, None

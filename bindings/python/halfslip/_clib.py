@@ -147,6 +147,7 @@ class HistoryOptions(ctypes.Structure):
         ("ramp_order", c_int),
         ("steady_rtol", c_double),
         ("rtol", c_double),
+        ("interior_patches", c_int),  # since issue 14 (after 0.4.0)
     ]
 
 

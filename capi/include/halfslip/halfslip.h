@@ -460,7 +460,17 @@ typedef struct hs_history_options {
   double rtol;              /* the step is halved (path replayed) until steps h and 2h agree to rtol at every
                                vertex (zone ends / a, energies / the largest one); 0: march at max_step
                                only. Default 1e-8. */
+  /* issue 14 (added after 0.4.0; a 0.4.0 caller's smaller struct_size still
+   * works, with the default): where the friction limit is reached inside the
+   * stick zone, away from its ends, a third slip zone would open, which the
+   * march does not model. HS_PATCHES_ERROR (default): HS_ERR_NOT_APPLICABLE at
+   * that vertex; HS_PATCHES_MERGE: the patch and the band between it and the end
+   * slip with the edge zone, an approximation (hs_history_vertex.interior_merges
+   * counts them; docs/history.md). */
+  int interior_patches;
 } hs_history_options;
+#define HS_PATCHES_ERROR 0
+#define HS_PATCHES_MERGE 1
 
 HS_EXPORT int hs_history_options_default(hs_history_options *opts);
 /* A new history of the scene's contact (a, p0, f, E*; its Q/fP and sigma/fp0 are

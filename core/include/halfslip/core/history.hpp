@@ -55,6 +55,12 @@ template <class T> struct history_options {
   int max_steps = 20000;    // total steps over the whole history (the march costs ~ steps^2)
   int max_newton = 60;      // Newton iterations per step
   int grade_steps = 4;      // first steps of each run at 2^-(G-1), 2^-(G-1), ..., 1/4, 1/2 of the step
+  // An interior slip patch (the friction limit reached away from the stick-zone
+  // end) needs a third zone, which the march does not model. false (default):
+  // the march stops with status::not_applicable (issue 14: "detect it and return
+  // a clear status"); true: the patch and the band between it and the end are
+  // merged into the edge zone, an approximation counted in interior_merges.
+  bool merge_interior_patches = false;
 };
 
 // State after a path vertex (canonical frame; b's in units of a).
@@ -1319,6 +1325,11 @@ template <class T> class history {
             }
           }
           if (!patch) break;
+          if (!opt_.merge_interior_patches)
+            throw error(status::not_applicable,
+                        "history: an interior slip zone opens away from the stick-zone end (more zones than the "
+                        "march models; history_options::merge_interior_patches merges it into the edge zone, "
+                        "an approximation)");
           ++interior_merges_;
           continue;
         }
