@@ -87,7 +87,7 @@ class TestLibraryAndVersion(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(halfslip._clib.Options), 8 + 4 + 4 + 8 + 4 + 4)
         self.assertEqual(ctypes.sizeof(halfslip._clib.Geometry), 8 + 4 + 4 + 2 * 8 + 8 + 4 * 8)
         self.assertEqual(ctypes.sizeof(halfslip._clib.RefScene), 2 * 8 + 12 * ctypes.sizeof(ctypes.c_void_p))
-        self.assertEqual(ctypes.sizeof(halfslip._clib.HistoryOptions), 8 + 8 + 3 * 4 + 4 + 8 + 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.HistoryOptions), 8 + 8 + 3 * 4 + 4 + 8 + 8 + 4 + 4)  # interior_patches + padding
         self.assertEqual(ctypes.sizeof(halfslip._clib.HistoryVertex), 8 + 4 * 8 + 2 * 4 + 2 * 8 + 4 + 4 + 8 + 2 * 8 + 8)
         self.assertEqual(ctypes.sizeof(halfslip._clib.CycleSummary), 8 + 3 * 4 + 4 + 2 * 8)
         # a drifted layout is caught at load time: a copy of the package whose

@@ -1756,6 +1756,11 @@ template <class T> class refined_history {
   // it converges erratically); the estimate then stays above rtol.
   refined_history(pressure_ptr pm, const history_options<T> &o, const T &rtol, const T &min_step = T(1) / 512)
       : pm_(std::move(pm)), opt_(o), rtol_(rtol), min_step_(min_step) {
+    // interior patches: every march merges them, and the accepted (finest) march
+    // decides; a coarse march of the refinement can see a patch that the finer
+    // ones do not (near a Masing return), which must not stop the history
+    strict_patches_ = !opt_.merge_interior_patches;
+    opt_.merge_interior_patches = true;
     if (!(rtol_ >= 0)) throw error(status::bad_option, "history: rtol must be >= 0");
     if (!(min_step_ >= history<T>::min_max_step()) || !(min_step_ <= 1))
       throw error(status::bad_option, "history: min_step must be in [1e-6, 1]");
@@ -1772,8 +1777,16 @@ template <class T> class refined_history {
       r->add_vertex(q, s);
       return r;
     };
+    auto check_patches = [&](const history<T> &accepted) {
+      if (strict_patches_ && accepted.interior_merges() > base.interior_merges())
+        throw error(status::not_applicable,
+                    "history: an interior slip zone opens away from the stick-zone end (more zones than the "
+                    "march models; history_options::merge_interior_patches merges it into the edge zone, an "
+                    "approximation)");
+    };
     if (!(rtol_ > 0)) {
       auto r = march(opt_.max_step);
+      check_patches(*r);
       r->note_last_vertex(opt_.max_step, T(0));
       fine_ = std::move(r);
       return;
@@ -1842,6 +1855,7 @@ template <class T> class refined_history {
     // the errors of the segments add up along the path: the vertex reports the sum of
     // the local estimates so far (on a steady cycle at rtol 1e-8 the true error was
     // 6.6e-8 against a largest local estimate of 7.4e-9)
+    check_patches(*cur);
     est_ += est;
     cur->note_last_vertex(h, est_);
     step_ = h;
@@ -1865,6 +1879,7 @@ template <class T> class refined_history {
  private:
   pressure_ptr pm_;
   history_options<T> opt_;
+  bool strict_patches_ = true;  // the caller asked for no merges (its options)
   T rtol_, min_step_;
   std::unique_ptr<history<T>> fine_;
   cycle_result<T> last_cycles_;
