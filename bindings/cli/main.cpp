@@ -523,6 +523,24 @@ std::vector<std::array<certified_text, 3>> reference_fields(const hs_ref_solutio
   return out;
 }
 
+// The reference scene's contact from the arguments: geometry and its parameter,
+// f, E*, as exact decimal texts kept in `in` (sc points into it).
+void ref_contact(const Args &args, int kind, std::map<std::string, std::string> &in, hs_ref_scene &sc) {
+  hs_ref_scene_default(&sc);
+  sc.geometry = kind;
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED) {
+    in["flat_over_a"] = decimal_arg(args, "--flat-over-a", "0.5");
+    sc.flat_over_a = in["flat_over_a"].c_str();
+  } else if (kind == HS_GEOMETRY_POWER_LAW) {
+    in["exponent"] = decimal_arg(args, "--exponent", "2");
+    sc.exponent = in["exponent"].c_str();
+  }
+  in["f"] = decimal_arg(args, "--f", "1");
+  in["E_star"] = decimal_arg(args, "--E-star", "1");
+  sc.f = in["f"].c_str();
+  sc.E_star = in["E_star"].c_str();
+}
+
 int solve_reference(const Args &args, int digits) {
   if (args.count("--points"))
     die("--points is not available with --digits (the C ABI's hs_ref_eval, Python's ReferenceSolution.traction)");
@@ -539,19 +557,7 @@ int solve_reference(const Args &args, int digits) {
   // exact decimal texts of the inputs
   std::map<std::string, std::string> in;
   hs_ref_scene sc;
-  hs_ref_scene_default(&sc);
-  sc.geometry = kind;
-  if (kind == HS_GEOMETRY_FLAT_ROUNDED) {
-    in["flat_over_a"] = decimal_arg(args, "--flat-over-a", "0.5");
-    sc.flat_over_a = in["flat_over_a"].c_str();
-  } else if (kind == HS_GEOMETRY_POWER_LAW) {
-    in["exponent"] = decimal_arg(args, "--exponent", "2");
-    sc.exponent = in["exponent"].c_str();
-  }
-  in["f"] = decimal_arg(args, "--f", "1");
-  in["E_star"] = decimal_arg(args, "--E-star", "1");
-  sc.f = in["f"].c_str();
-  sc.E_star = in["E_star"].c_str();
+  ref_contact(args, kind, in, sc);
   if (is_dimensional(args)) {
     check_dimensional(args);
     for (const char *k : {"--P", "--R", "--Q", "--sigma"}) in[k + 2] = decimal_arg(args, k, "");
@@ -1052,21 +1058,9 @@ int history_reference(const Args &args, bool json) {
   check_ref_digits(kind, digits, "--digits");
   std::map<std::string, std::string> in;
   hs_ref_scene sc;
-  hs_ref_scene_default(&sc);
-  sc.geometry = kind;
-  if (kind == HS_GEOMETRY_FLAT_ROUNDED) {
-    in["flat_over_a"] = decimal_arg(args, "--flat-over-a", "0.5");
-    sc.flat_over_a = in["flat_over_a"].c_str();
-  } else if (kind == HS_GEOMETRY_POWER_LAW) {
-    in["exponent"] = decimal_arg(args, "--exponent", "2");
-    sc.exponent = in["exponent"].c_str();
-  }
-  in["f"] = decimal_arg(args, "--f", "1");
-  in["E_star"] = decimal_arg(args, "--E-star", "1");
+  ref_contact(args, kind, in, sc);
   in["a"] = decimal_arg(args, "--a", "1");
   in["p0"] = decimal_arg(args, "--p0", "1");
-  sc.f = in["f"].c_str();
-  sc.E_star = in["E_star"].c_str();
   sc.a = in["a"].c_str();
   sc.p0 = in["p0"].c_str();
   const auto path = path_texts(args.at("--path"));

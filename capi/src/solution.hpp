@@ -78,23 +78,18 @@ class reference_double {
   double b1_ = 0, b2_ = 0, d1_ = 0, d2_ = 0;
 };
 
-// The state at a vertex of a load history (hs_history_state, issue 15): a
-// read-only solution handle. It shares a copy of the steps up to the vertex
-// (history::prefix), so it outlives the history and does not change when the
-// history grows. Physical units; the functions that have no meaning for a
-// state (monotonic energies, work density W = f p |h|, B_x) report
-// HS_ERR_NOT_APPLICABLE.
-class history_state {
+// What the states of a load history share (history_state, ray_state): the
+// vertex's loads, stick zone and directions, and the monotonic-only quantities
+// that report HS_ERR_NOT_APPLICABLE.
+class vertex_state {
  public:
-  history_state(std::shared_ptr<const core::history<double>> h, const core::general_scene<double> &sc,
-                const core::history_vertex<double> &v)
-      : scene(sc), hist(std::move(h)) {
-    scene.q = v.q;
-    scene.s = v.s;
-    b1_ = sc.a * v.b1;
-    b2_ = sc.a * v.b2;
-    dir1_ = v.b1 < 1 ? v.dir1 : 0;
-    dir2_ = v.b2 < 1 ? v.dir2 : 0;
+  // b1, b2 in the units of length; a direction counts only where its zone is not empty
+  vertex_state(const core::general_scene<double> &sc, double q, double s, double b1, double b2, int dir1, int dir2)
+      : scene(sc), b1_(b1), b2_(b2) {
+    scene.q = q;
+    scene.s = s;
+    dir1_ = b1 < sc.a ? dir1 : 0;
+    dir2_ = b2 < sc.a ? dir2 : 0;
     // regime of a state: stuck without slip zones, opposite sign when the two
     // zones slip in opposite directions, otherwise same sign
     reg = (dir1_ == 0 && dir2_ == 0) ? core::regime::stuck
@@ -104,14 +99,12 @@ class history_state {
   core::general_scene<double> scene;  // a, p0, f, E*; q, s: the vertex's loads
   core::regime reg = core::regime::stuck;
   int iterations = 0;
-  std::shared_ptr<const core::history<double>> hist;  // the steps up to the vertex
   int dir1() const { return dir1_; }
   int dir2() const { return dir2_; }
   double b1() const { return b1_; }
   double b2() const { return b2_; }
   double d1() const { return scene.a - b1_; }
   double d2() const { return scene.a - b2_; }
-  std::size_t nsteps() const { return hist->step_count(); }
   [[noreturn]] static void not_applicable(const char *what) { throw core::error(core::status::not_applicable, what); }
   double energy(int) const {
     not_applicable(
@@ -119,6 +112,23 @@ class history_state {
   }
   double Bx(double) const { not_applicable("B_x is not evaluated for a load-history state (slip: hs_eval_slip)"); }
   double work(double) const { not_applicable("the work density f p |h| is that of monotonic loading only"); }
+
+ private:
+  int dir1_ = 0, dir2_ = 0;
+  double b1_ = 0, b2_ = 0;
+};
+
+// The state at a vertex of a marched load history (hs_history_state, issue 15): a
+// read-only solution handle. It shares a copy of the steps up to the vertex
+// (history::prefix), so it outlives the history and does not change when the
+// history grows. Physical units.
+class history_state : public vertex_state {
+ public:
+  history_state(std::shared_ptr<const core::history<double>> h, const core::general_scene<double> &sc,
+                const core::history_vertex<double> &v)
+      : vertex_state(sc, v.q, v.s, sc.a * v.b1, sc.a * v.b2, v.dir1, v.dir2), hist(std::move(h)) {}
+  std::shared_ptr<const core::history<double>> hist;  // the steps up to the vertex
+  std::size_t nsteps() const { return hist->step_count(); }
   double slip(double x) const {
     return scene.f * scene.p0 * scene.a / scene.Estar * hist->slip(x / scene.a, nsteps());
   }
@@ -126,18 +136,13 @@ class history_state {
   double traction(double x) const {
     return core::history_traction_at(*hist, nsteps(), x, scene.a, scene.p0, scene.f);
   }
-
- private:
-  int dir1_ = 0, dir2_ = 0;
-  double b1_ = 0, b2_ = 0;
 };
 
 // The state at a vertex of a load history along one ray, by superposition of
 // monotonic solutions (core/ray_history.hpp, issue 14): q, h and the stresses
 // are sums c_k (q_k, h_k, ...) of the parts (shared, immutable solutions), so
-// the state outlives the history. Physical units; as history_state, the
-// monotonic-only quantities report HS_ERR_NOT_APPLICABLE.
-class ray_state {
+// the state outlives the history. Physical units.
+class ray_state : public vertex_state {
  public:
   struct part {
     int coef;
@@ -145,40 +150,14 @@ class ray_state {
   };
   ray_state(std::vector<part> parts, const core::general_scene<double> &sc, double q, double s, double b1, double b2,
             int dir1, int dir2)
-      : scene(sc), parts_(std::move(parts)), b1_(b1), b2_(b2) {
-    scene.q = q;
-    scene.s = s;
-    dir1_ = b1 < sc.a ? dir1 : 0;
-    dir2_ = b2 < sc.a ? dir2 : 0;
-    reg = (dir1_ == 0 && dir2_ == 0) ? core::regime::stuck
-          : (dir1_ * dir2_ < 0)      ? core::regime::opposite_sign
-                                     : core::regime::same_sign;
-  }
-  core::general_scene<double> scene;  // a, p0, f, E*; q, s: the vertex's loads
-  core::regime reg = core::regime::stuck;
-  int iterations = 0;
+      : vertex_state(sc, q, s, b1, b2, dir1, dir2), parts_(std::move(parts)) {}
   const std::vector<part> &parts() const { return parts_; }
-  int dir1() const { return dir1_; }
-  int dir2() const { return dir2_; }
-  double b1() const { return b1_; }
-  double b2() const { return b2_; }
-  double d1() const { return scene.a - b1_; }
-  double d2() const { return scene.a - b2_; }
-  [[noreturn]] static void not_applicable(const char *what) { throw core::error(core::status::not_applicable, what); }
-  double energy(int) const {
-    not_applicable(
-        "a load-history state has no monotonic zone energies (hs_history_vertex_get: energies per segment)");
-  }
-  double Bx(double) const { not_applicable("B_x is not evaluated for a load-history state (slip: hs_eval_slip)"); }
-  double work(double) const { not_applicable("the work density f p |h| is that of monotonic loading only"); }
   inline double slip(double x) const;
   inline double pressure(double x) const;
   inline double traction(double x) const;
 
  private:
   std::vector<part> parts_;
-  int dir1_ = 0, dir2_ = 0;
-  double b1_ = 0, b2_ = 0;
 };
 
 // The exact decimal expansion of a double (so that the reference sees the
