@@ -145,8 +145,8 @@ TEST_CASE("ray histories: Hertz zones in closed form (Ciavarella-Jager, Masing),
     CHECK(v.slip_dir1 == dir[i]);
     CHECK(v.slip_dir2 == dir[i]);
   }
-  // a closed loop dissipates the same whatever the path inside it: the energy from
-  // 0.6 down to -0.1 and back up to 0.6 (segments 6 and 7 up to 0.6) is 2 x 2 E(0.35)
+  // the bookkeeping of a Masing wipe (the formula itself is checked against the march
+  // above): the last segment runs up the branch of 0.6 from -0.1 and past 0.6
   hs_solution *m35 = nullptr, *m6 = nullptr, *m7 = nullptr;
   hs_scene sc;
   hs_scene_default(&sc);

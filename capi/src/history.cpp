@@ -160,6 +160,8 @@ double mono_half_width(hs_history &h, double q, double s) {
          (2 * h.scene.a);
 }
 
+bool add_on_ray_solved(hs_history &h, double q, double s, core::ray_path<double> &next);
+
 // Adds (q, s) to the path along one ray; false (nothing changed) when the
 // superposition does not apply: off the ray, or a zone would recede on the
 // ramp to the path's farthest vertex.
@@ -168,6 +170,16 @@ bool add_on_ray(hs_history &h, double q, double s) {
   require(std::fabs(q) < 1, core::status::gross_sliding, "history: |Q| >= fP at a path vertex: gross sliding");
   core::ray_path<double> next = h.ray;
   if (!next.add(q, s)) return false;
+  // a monotonic solve that fails (no convergence of the general solver, say) is not
+  // the path's verdict: the march may still follow it
+  try {
+    return add_on_ray_solved(h, q, s, next);
+  } catch (const core::error &) {
+    return false;
+  }
+}
+
+bool add_on_ray_solved(hs_history &h, double q, double s, core::ray_path<double> &next) {
   const auto far = next.farthest();
   double at = 0;
   if (!far.zero() &&

@@ -4,6 +4,7 @@
 // surface Hilbert transform are the same sums of the parts' own (closed
 // forms, panels or reference quadrature), so no new panels are built.
 #pragma once
+#include <algorithm>
 #include <complex>
 #include <memory>
 #include <utility>
