@@ -348,3 +348,61 @@ TEST_CASE("ray histories: certified digits from the reference backend (hs_ref_hi
   hs_ref_history_free(r);
   CHECK(hs_ref_history_new(&sc, 0, &r) == HS_ERR_BAD_OPTION);
 }
+
+TEST_CASE("ray histories: periodic loading on a ray through the origin by superposition") {
+  // in phase, zero means: +-(0.5, 0.4). The steady cycle in closed form (Ciavarella-Jager:
+  // 4 E_i per cycle, slip range 2 h(x), hs_solution_steady_cycle) and the march
+  hist_handle hh;
+  new_history(hh, 0);
+  REQUIRE(hs_history_add_cycles(hh.h, 0, 0.5, 0, 0.4, 0, 3) == HS_OK);
+  size_t n = 0;
+  REQUIRE(hs_history_vertex_count(hh.h, &n) == HS_OK);
+  REQUIRE(n == 9);
+  for (size_t i = 0; i < n; ++i) CHECK(vertex(hh, i).steps == 0);
+  CHECK(vertex(hh, 8).cycle == 3);
+  hs_cycle_summary cs;
+  cs.struct_size = sizeof cs;
+  REQUIRE(hs_history_cycle_summary(hh.h, &cs) == HS_OK);
+  hs_scene sc;
+  hs_scene_default(&sc);
+  sc.a = sc.p0 = sc.f = sc.E_star = 1;
+  sc.Q_over_fP = 0.5;
+  sc.sigma_over_fp0 = 0.4;
+  hs_solution *m = nullptr;
+  REQUIRE(hs_solve(&sc, nullptr, &m) == HS_OK);
+  hs_steady_cycle st;
+  st.struct_size = sizeof st;
+  REQUIRE(hs_solution_steady_cycle(m, &st) == HS_OK);
+  REQUIRE(st.valid == 1);
+  CHECK(cs.cycles_to_steady == 2);  // cycle 1 holds the first loading from zero
+  CHECK(std::abs(cs.energy_per_cycle1 - st.energy_per_cycle1) <= 64 * eps<double>() * st.energy_per_cycle1);
+  CHECK(std::abs(cs.energy_per_cycle2 - st.energy_per_cycle2) <= 64 * eps<double>() * st.energy_per_cycle2);
+  const std::vector<double> xs = {-0.99, -0.7, 0.0, 0.8, 0.97};
+  std::vector<double> dh(xs.size()), h(xs.size());
+  REQUIRE(hs_history_slip_range(hh.h, xs.size(), xs.data(), dh.data()) == HS_OK);
+  REQUIRE(hs_eval_slip(m, xs.size(), xs.data(), h.data()) == HS_OK);
+  for (size_t k = 0; k < xs.size(); ++k) {
+    CAPTURE(xs[k]);
+    CHECK(std::abs(dh[k] - 2 * std::abs(h[k])) <= 1e-14);
+  }
+  hs_solution_free(m);
+  // the march of the same cycles agrees to its accuracy
+  auto pm = std::make_shared<hertz_pressure<double>>();
+  history_options<double> ho;
+  ho.max_step = 1.0 / 32;
+  refined_history<double> march(pm, ho, 1e-9);
+  const auto r = march.add_cycles(0, 0.5, 0, 0.4, 0, 3, ramp_order::sigma_first, 64, 1e-6);
+  CHECK(std::abs(r.energy1 - cs.energy_per_cycle1) <= 1e-6 * cs.energy_per_cycle1);
+  // a mean bulk tension with shear cycling is not on a ray: marched
+  hist_handle mh;
+  new_history(mh, 0);
+  REQUIRE(hs_history_add_cycles(mh.h, 0, 0.3, 0.5, 0, 0, 2) == HS_OK);
+  CHECK(vertex(mh, 1).steps > 0);
+  // a ray path, then cycles off it: the whole path is replayed in the march
+  hist_handle rh;
+  new_history(rh, 0);
+  add(rh, {{0.3, 0}});
+  CHECK(vertex(rh, 0).steps == 0);
+  REQUIRE(hs_history_add_cycles(rh.h, 0, 0.3, 0.5, 0, 0, 1) == HS_OK);
+  CHECK(vertex(rh, 0).steps > 0);
+}

@@ -25,6 +25,7 @@ struct ray_vertex_rec {
   core::ray_vertex_result<double> r;  // physical units
   double q = 0, s = 0;
   double error_estimate = 0;
+  int cycle = 0;  // as hs_history_vertex.cycle
   std::vector<hs::capi::ray_state::part> parts;
 };
 
@@ -250,9 +251,59 @@ int hs_history_add_vertices(hs_history *h, size_t n, const double *q, const doub
   });
 }
 
+namespace {
+// Periodic loading whose every vertex lies on the path's ray (in phase or one
+// amplitude zero, with means on the same ray, e.g. zero): core::add_cycles on the
+// superposition. The adapter is the history interface add_cycles needs; its
+// vertices are canonical (b / a, energies / f^2 p0^2 a^2 / E*), as the march's.
+struct leave_ray {};
+struct ray_cycles_adapter {
+  struct view {
+    double energy1, energy2, b1, b2;
+  };
+  hs_history &h;
+  std::vector<view> vs;
+  double escale;
+  explicit ray_cycles_adapter(hs_history &hh) : h(hh) {
+    const auto &sc = h.scene;
+    escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
+    for (const auto &v : h.ray_vertices) vs.push_back(of(v));
+  }
+  view of(const ray_vertex_rec &v) const {
+    return {v.r.energy1 / escale, v.r.energy2 / escale, v.r.b1 / h.scene.a, v.r.b2 / h.scene.a};
+  }
+  void add_vertex(double q, double s) {
+    if (!add_on_ray(h, q, s)) throw leave_ray{};
+    h.input.emplace_back(q, s);
+    vs.push_back(of(h.ray_vertices.back()));
+  }
+  const std::vector<view> &vertices() const { return vs; }
+  void tag_last_vertex(int c) { h.ray_vertices.back().cycle = c; }
+  double q() const { return h.input.empty() ? 0.0 : h.input.back().first; }
+  double s() const { return h.input.empty() ? 0.0 : h.input.back().second; }
+};
+}  // namespace
+
 int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double sa, double phase_deg, int cycles) {
   return guard([&] {
     require(h != nullptr, core::status::null_pointer, "NULL history");
+    if (h->ray_mode) {
+      // try the superposition; off the ray, undo and march the whole path
+      const auto ray0 = h->ray;
+      const size_t nv0 = h->ray_vertices.size(), ni0 = h->input.size();
+      try {
+        ray_cycles_adapter ad(*h);
+        h->cycles = core::add_cycles<double>(ad, qm, qa, sm, sa, phase_deg, cycles,
+                                             core::ramp_order(h->opts.ramp_order), h->opts.segments_per_cycle,
+                                             h->opts.steady_rtol);
+        h->has_cycles = true;
+        return;
+      } catch (...) {
+        h->ray = ray0;
+        h->ray_vertices.resize(nv0);
+        h->input.resize(ni0);
+      }
+    }
     to_march(*h);
     h->cycles = h->h->add_cycles(qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h->opts.ramp_order),
                                  h->opts.segments_per_cycle, h->opts.steady_rtol);
@@ -283,7 +334,7 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       out->slip_dir2 = v.r.b2 < sc.a ? v.r.dir2 : 0;
       out->energy1 = v.r.energy1;
       out->energy2 = v.r.energy2;
-      out->cycle = 0;
+      out->cycle = v.cycle;
       out->steps = 0;
       out->step = 0;
       out->error_estimate = v.error_estimate;
@@ -310,6 +361,16 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
 
 namespace {
 
+// q or h at x after vertex i of a path along one ray: the sums over its parts
+double ray_field_at(const hs_history &h, size_t i, int field, double x) {
+  require(std::isfinite(x), core::status::not_finite, "x");
+  require(std::fabs(x) <= h.scene.a, core::status::point_outside, "x outside the contact");
+  double r = 0;
+  for (const auto &p : h.ray_vertices[i].parts)
+    r += p.coef * p.sol->visit([&](const auto &v) { return double(field == HS_FIELD_TRACTION ? v.traction(x) : v.slip(x)); });
+  return r;
+}
+
 double field_at(const hs_history &h, size_t nsteps, int field, double x) {
   const auto &sc = h.scene;
   require(std::isfinite(x), core::status::not_finite, "x");
@@ -328,17 +389,7 @@ int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, con
     require(field == HS_FIELD_TRACTION || field == HS_FIELD_SLIP, core::status::bad_option, "field");
     std::vector<double> tmp(n);
     if (h->ray_mode) {
-      const auto &parts = h->ray_vertices[vertex].parts;
-      for (size_t i = 0; i < n; ++i) {
-        require(std::isfinite(x[i]), core::status::not_finite, "x");
-        require(std::fabs(x[i]) <= h->scene.a, core::status::point_outside, "x outside the contact");
-        double r = 0;
-        for (const auto &p : parts)
-          r += p.coef * p.sol->visit([&](const auto &v) {
-            return double(field == HS_FIELD_TRACTION ? v.traction(x[i]) : v.slip(x[i]));
-          });
-        tmp[i] = r;
-      }
+      for (size_t i = 0; i < n; ++i) tmp[i] = ray_field_at(*h, vertex, field, x[i]);
       std::copy(tmp.begin(), tmp.end(), out);
       return;
     }
@@ -391,8 +442,23 @@ int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double
     require(h != nullptr && (n == 0 || (x != nullptr && out != nullptr)), core::status::null_pointer, "NULL");
     require(h->has_cycles, core::status::not_applicable, "no periodic loading in this history");
     const auto &c = h->cycles;
-    const auto &vs = h->h->fine().vertices();
     std::vector<double> tmp(n);
+    if (h->ray_mode) {  // the slips of the superposed states
+      for (size_t i = 0; i < n; ++i) {
+        double lo = 0, hi = 0;
+        bool first = c.last_cycle_first > 0;
+        for (size_t k = c.last_cycle_first > 0 ? c.last_cycle_first - 1 : 0; k < c.last_cycle_end; ++k) {
+          const double v = ray_field_at(*h, k, HS_FIELD_SLIP, x[i]);
+          if (first || v < lo) lo = v;
+          if (first || v > hi) hi = v;
+          first = false;
+        }
+        tmp[i] = hi - lo;
+      }
+      std::copy(tmp.begin(), tmp.end(), out);
+      return;
+    }
+    const auto &vs = h->h->fine().vertices();
     for (size_t i = 0; i < n; ++i) {
       // from the state before the cycle (the unloaded start when the cycle begins the history)
       double lo = 0, hi = 0;
