@@ -263,6 +263,7 @@ hs_solution *solve_scene(const hs_scene &scene, const hs_geometry *geometry, con
       ref.text.geometry = geometry->kind;
       ref.text.flat_over_a = hs::capi::exact_decimal(geometry->flat_over_a);
       ref.text.exponent = hs::capi::exact_decimal(geometry->exponent);
+      ref.parameter = geometry->kind == HS_GEOMETRY_FLAT_ROUNDED ? geometry->flat_over_a : geometry->exponent;
     }
   }
   hs::capi::solve_models(*h, !geometry, sc, req, ref);

@@ -186,6 +186,9 @@ struct request {
 struct reference_input {
   bool available = false;
   reference::text_scene text;
+  // the geometry's parameter (b_f/a or the exponent) as the caller passed it, for
+  // the a-posteriori estimate's long double solve (issue 16)
+  double parameter = 0;
 };
 
 // Solve into h (h.model set for non-Hertz geometries; hertz = true for the

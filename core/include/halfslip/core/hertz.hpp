@@ -152,6 +152,36 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
     return abs(I);
   }
 
+  // The same on pieces graded away from the stick edge, [0, e], [e, 4e], ...,
+  // [4^k e, L] (e the stick width; issue 16, the a-posteriori estimate): b has
+  // its singularities at dl <= -e, which a zone much longer than e leaves next
+  // to the end of a single tanh-sinh interval (near sliding the tanh-sinh above
+  // stops at ~1e-15 in long double, its own error estimate far lower). err: the
+  // sum of the pieces' error estimates (absolute, of the returned value).
+  T energy_hat_graded(int zone, const T &tol, T &err) const {
+    using std::abs;
+    err = 0;
+    const T L = zone_length(zone);
+    if (!(L > 0)) return T(0);
+    T sum = 0, lo = 0, hi = width > 0 ? T(width) : L;
+    for (int k = 0; k < 200 && lo < L; ++k) {
+      if (!(hi < L) || k == 199) hi = L;
+      T e = 0;
+      const T a = lo, b = hi;
+      sum += integrate_ts<T>(
+          [&](const T &u, const T &uc) {
+            const T dl = (uc < 0 && a == 0) ? -uc : u;
+            const T ce = (uc > 0 && b == L) ? uc : L - u;
+            return pressure_tail(ce) * bhat(zone, dl);
+          },
+          a, b, tol, &e);
+      err += abs(e);
+      lo = hi;
+      hi *= 4;
+    }
+    return abs(sum);
+  }
+
   // Shear traction q(x) on body 1. Same-sign regime: closed form
   // q = sgn(Q) f p0 [sqrt(1 - x^2/a^2) - sqrt((b1 - x)(x + b2))/a] in the stick zone
   // (a Hertz distribution minus a shifted, scaled one); otherwise the generic
