@@ -53,6 +53,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <boost/math/tools/precision.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -225,42 +226,39 @@ template <class T> error_estimate<T> quadrature_estimate(const T &rt, const T &d
 // double result (docs/validation.md); none reaches 1e-15, so HS_MODEL_AUTO at
 // rtol 1e-15 took the reference route (~1 s for the flat punch) on scenes that
 // double solves to 1e-16. The same model solved in W (long double: 11 more
-// bits) has a worst-case bound ew of its own, 2^11 below the double one; the
+// bits) has a worst-case bound of its own, 2^11 below the double one; the
 // double result's true error is then bounded by its distance to the wider
 // result plus that bound:
-//   |d_i - d_i,true| <= A_i = |d_i - d_i,W| + ew.rel d_i,W + ew.r   (units of a)
-//   |E_i - E_i,true| <= |E_i - E_i,W| + ew.energy E_i,W
-// (the wider bound takes the worst-case form at its own epsilon, so this holds
-// wherever the worst-case form holds). Resolution: r = max_i A_i (each zone's
-// length is within r of the truth); a zone with d_i > r is resolved and its
-// relative errors are taken against the truth's lower bounds d_i - A_i and
-// (1 - ew.energy) E_i,W. Every comparison is NaN-safe: a NaN or infinite
-// difference gives an infinite estimate.
-// d, E: the double result (dimensional, as reported); dw, Ew: the wider one;
-// a: the contact half-width; ew: the wider solve's worst-case estimate.
-// rE: the relative error bound of each wider energy (ew.energy: not given)
+//   |d_i - d_i,true| <= A_i = |d_i - d_i,W| + Aw_i             (units of a)
+//   |E_i - E_i,true| <= |E_i - E_i,W| + rE_i E_i,W
+// with Aw_i, rE_i the wider solve's worst-case bounds per zone (the forms
+// above at W's epsilon, closed_form_zone_bounds, quadrature_zone_bounds: their
+// a/d_min terms are absolute errors of every zone, here not divided by the
+// smaller zone and applied to the larger). Resolution: r = max_i A_i (each
+// zone's length is within r of the truth); a zone with d_i > r is resolved
+// and its relative errors are taken against the truth's lower bounds d_i - A_i
+// and (1 - rE_i) E_i,W. NaN-safe: a NaN or infinite difference gives an
+// infinite estimate. d, E: the double result (dimensional, as reported); dw,
+// Ew: the wider one; a: the contact half-width; exact: both solves stuck.
 template <class T, class W>
 error_estimate<T> a_posteriori_estimate(const T (&d)[2], const T (&E)[2], const W (&dw)[2], const W (&Ew)[2],
-                                        const W &a, const error_estimate<W> &ew, const W *rE = nullptr) {
+                                        const W &a, const W (&Aw)[2], const W (&rE)[2], bool exact = false) {
   using std::abs;
   using std::max;
   error_estimate<T> e;
+  if (exact && d[0] == 0 && d[1] == 0) return e;  // stuck: exact
   const W big = W(infinite<T>());
   W A[2], r = 0;
   for (int i = 0; i < 2; ++i) {
-    const W diff = abs(W(d[i]) - dw[i]) / a;
-    A[i] = diff + ew.slip_zone * abs(dw[i]) / a + ew.resolution;
+    A[i] = abs(W(d[i]) - dw[i]) / a + Aw[i];
     if (!(A[i] <= big)) A[i] = big;  // NaN or overflow
     r = max(r, A[i]);
   }
   // rounding the W figures to T: up by a few ulps of T
   const W up = 1 + 4 * W(eps<T>());
+  const W top = W(boost::math::tools::max_value<T>());
   r *= up;
-  e.resolution = r > W(boost::math::tools::max_value<T>()) ? infinite<T>() : T(r);
-  if (!(ew.resolution > 0) && !(ew.slip_zone > 0) && d[0] == 0 && d[1] == 0 && dw[0] == 0 && dw[1] == 0) {
-    e.resolution = 0;  // stuck in both: exact
-    return e;
-  }
+  e.resolution = r > top ? infinite<T>() : T(r);
   W rd = 0, re = 0;
   for (int i = 0; i < 2; ++i) {
     const W di = W(d[i]) / a;
@@ -269,29 +267,56 @@ error_estimate<T> a_posteriori_estimate(const T (&d)[2], const T (&E)[2], const 
       continue;
     }
     rd = max(rd, W(A[i] / (di - A[i])));
-    const W bE = rE ? rE[i] : ew.energy;
-    if (!(bE < W(0.5)) || !(Ew[i] > 0)) {
+    if (!(rE[i] < W(0.5)) || !(Ew[i] > 0)) {
       re = big;
       continue;
     }
-    const W dE = abs(W(E[i]) - Ew[i]);
-    const W rel = (dE + bE * Ew[i]) / ((1 - bE) * Ew[i]);
+    const W rel = (abs(W(E[i]) - Ew[i]) + rE[i] * Ew[i]) / ((1 - rE[i]) * Ew[i]);
     re = max(re, rel <= big ? rel : big);
   }
-  e.slip_zone = rd * up > W(boost::math::tools::max_value<T>()) ? infinite<T>() : T(rd * up);
-  e.energy = re * up > W(boost::math::tools::max_value<T>()) ? infinite<T>() : T(re * up);
+  e.slip_zone = rd * up > top ? infinite<T>() : T(rd * up);
+  e.energy = re * up > top ? infinite<T>() : T(re * up);
   return e;
 }
 
-// The a-posteriori estimates of a double closed-form or quadrature solution
-// (issue 16): the same model in long double, its worst-case bound, and the
-// distance of the two. Throws what the long double solve throws.
-template <class S, class SW>
-error_estimate<double> a_posteriori_of(const S &s, const SW &w, const error_estimate<long double> &ew) {
-  const double d[2] = {s.d1(), s.d2()}, E[2] = {s.energy(1), s.energy(2)};
-  const long double dw[2] = {w.d1(), w.d2()}, Ew[2] = {w.energy(1), w.energy(2)};
-  return a_posteriori_estimate(d, E, dw, Ew, (long double)w.scene.a, ew);
+// closed_form_estimate's bound per zone (d1, d2 in units of a): the absolute
+// error Aw_i of d_i (units of a) and the relative error rE_i of E_i
+template <class T>
+void closed_form_zone_bounds(const T &d1, const T &d2, const T &q, const T &s, const T &width, T (&Aw)[2],
+                             T (&rE)[2]) {
+  using std::abs;
+  using std::min;
+  using std::sqrt;
+  const T ep = eps<T>();
+  const T scale = min(T(1), T(abs(q) + abs(s) / 4));
+  const T dm = smallest_zone(d1, d2);
+  const T d[2] = {d1, d2};
+  for (int i = 0; i < 2; ++i) {
+    Aw[i] = 32 * ep * d[i] + 16 * ep * scale + length_floor<T>();
+    if (width < dm && d1 > 0 && d2 > 0) Aw[i] += 4 * pi<T>() * ep / (2 * sqrt(d1 * d2));
+    rE[i] = d[i] > 0 ? T(3 * Aw[i] / d[i] + 16 * ep + tiny_energy_floor(d[i])) : infinite<T>();
+  }
 }
+
+// quadrature_estimate's bound per zone at rt = 0 (as closed_form_zone_bounds)
+template <class T>
+void quadrature_zone_bounds(const T &d1, const T &d2, const T &width, const T &q, const T &acc,
+                            const T &conditioning, T (&Aw)[2], T (&rE)[2]) {
+  using std::abs;
+  using std::max;
+  using std::sqrt;
+  const T pe = eps<T>() * max(T(1), T(acc / 4));
+  const T wc = max(width, T(sqrt(T(abs(1 - abs(q)))) / 4));
+  const T d[2] = {d1, d2};
+  for (int i = 0; i < 2; ++i) {
+    Aw[i] = max(T(16 * pe * (d[i] + 1 + d[i] / wc)), conditioning) + length_floor<T>();
+    rE[i] = d[i] > 0 ? T(3 * Aw[i] / d[i] + tiny_energy_floor(d[i])) : infinite<T>();
+  }
+}
+
+// The a-posteriori estimates of a double closed-form or quadrature solution
+// (issue 16): the same model in long double, its worst-case bounds, and the
+// distance of the two. Throws what the long double solve throws.
 inline general_scene<long double> widen_scene(const general_scene<double> &sc) {
   general_scene<long double> w;
   w.a = sc.a;
@@ -329,19 +354,24 @@ inline error_estimate<double> a_posteriori_closed_form(const hertz_solution<doub
     w.beta2 = 1 - st.d2;
     if (w.beta1 + w.beta2 < 0) w.beta2 = -w.beta1;  // as finish_opposite
   }
-  const error_estimate<W> ew = closed_form_estimate<W>(w.d1() / sw.a, w.d2() / sw.a, sw.q, sw.s, w.width);
+  W Aw[2], rE[2];
+  closed_form_zone_bounds<W>(w.delta1, w.delta2, abs(sw.q), abs(sw.s), w.width, Aw, rE);
+  if (w.mirror) {
+    std::swap(Aw[0], Aw[1]);
+    std::swap(rE[0], rE[1]);
+  }
   const double d[2] = {s.d1(), s.d2()}, E[2] = {s.energy(1), s.energy(2)};
   const W dw[2] = {w.d1(), w.d2()};
   const W scale = sw.f * sw.f * sw.p0 * sw.p0 * sw.a * sw.a / sw.Estar;
-  W Ew[2], rE[2];
+  W Ew[2];
   for (int i = 0; i < 2; ++i) {
     W err = 0;
     const W eh = w.energy_hat_graded(((i == 0) != w.mirror) ? +1 : -1, 64 * eps<W>(), err);
     Ew[i] = scale * eh;
     // the closed forms' energy bound and the quadrature's own error estimate
-    rE[i] = ew.energy + (eh > 0 ? W(err / eh) : W(0));
+    if (eh > 0) rE[i] += err / eh;
   }
-  return a_posteriori_estimate(d, E, dw, Ew, sw.a, ew, rE);
+  return a_posteriori_estimate(d, E, dw, Ew, sw.a, Aw, rE, w.reg == regime::stuck);
 }
 // pm: the double solution's pressure in long double; s solved at full precision (rtol 0)
 inline error_estimate<double> a_posteriori_quadrature(const general_solution<double> &s,
@@ -352,9 +382,11 @@ inline error_estimate<double> a_posteriori_quadrature(const general_solution<dou
   general_options<W> o;
   o.max_iterations = max_iterations;
   const auto w = solve_general<W>(pm, sw, o);
-  return a_posteriori_of(
-      s, w,
-      quadrature_estimate<W>(W(0), w.d1() / sw.a, w.d2() / sw.a, w.width, sw.q, pm.accuracy_eps(), w.conditioning));
+  W Aw[2], rE[2];
+  quadrature_zone_bounds<W>(w.d1() / sw.a, w.d2() / sw.a, w.width, sw.q, pm.accuracy_eps(), w.conditioning, Aw, rE);
+  const double d[2] = {s.d1(), s.d2()}, E[2] = {s.energy(1), s.energy(2)};
+  const W dw[2] = {w.d1(), w.d2()}, Ew[2] = {w.energy(1), w.energy(2)};
+  return a_posteriori_estimate(d, E, dw, Ew, sw.a, Aw, rE, sw.q == 0 && sw.s == 0);
 }
 
 // The tolerances a caller may ask for (hs_options.rtol): 0 (full precision);
