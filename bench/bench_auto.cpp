@@ -25,7 +25,9 @@ struct scene_def {
 };
 
 // Hertz same sign, Hertz opposite sign, flat punch b_f/a = 0.5, power law n = 3
-const scene_def scenes[] = {{0, 0, 0.3, 0.2}, {0, 0, 0.3, 2.0}, {HS_GEOMETRY_FLAT_ROUNDED, 0.5, 0.4, 0.3},
+const scene_def scenes[] = {{0, 0, 0.3, 0.2},
+                            {0, 0, 0.3, 2.0},
+                            {HS_GEOMETRY_FLAT_ROUNDED, 0.5, 0.4, 0.3},
                             {HS_GEOMETRY_POWER_LAW, 3.0, 0.4, 0.3}};
 const char *scene_names[] = {"hertz_same", "hertz_opposite", "flat_0.5", "power_3"};
 

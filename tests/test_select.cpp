@@ -297,7 +297,7 @@ TEST_CASE(
     hs_solution *sol = nullptr;
     CAPTURE(g.first);
     // issue 16: the reference where the quadrature's a-posteriori estimate misses
-    // rtol too (the flat punch here meets 1e-15 a posteriori: 6.4e-16; the
+    // rtol too (the power law here meets 1e-15 a posteriori: 6.4e-16; the
     // smallest rtol, 2^-53, sends both to the reference unless double is exact)
     const double rtol = std::ldexp(1.0, -53);
     REQUIRE(solve(g.first, g.second, sc, HS_MODEL_AUTO, rtol, &sol) == HS_OK);
@@ -723,7 +723,7 @@ ref_state reference_state(int kind, double par, double q, double s, bool energie
     char buf[128];
     int cert = 0;
     REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, &cert) == HS_OK);
-    const long double v = std::strtold(buf, nullptr);
+    const double v = std::strtod(buf, nullptr);
     CHECK((v == 0 || cert >= 17));
     return v;
   };

@@ -34,6 +34,20 @@ std::string exact_decimal(double v) {
   return mant + ex;
 }
 
+reference::text_scene reference_input::text() const {
+  reference::text_scene t;
+  t.a = exact_decimal(scene.a);
+  t.p0 = exact_decimal(scene.p0);
+  t.f = exact_decimal(scene.f);
+  t.Estar = exact_decimal(scene.Estar);
+  t.q = exact_decimal(scene.q);
+  t.s = exact_decimal(scene.s);
+  t.geometry = geometry;
+  if (geometry == HS_GEOMETRY_FLAT_ROUNDED) t.flat_over_a = exact_decimal(parameter);
+  if (geometry == HS_GEOMETRY_POWER_LAW) t.exponent = exact_decimal(parameter);
+  return t;
+}
+
 reference_double::reference_double(const reference::text_scene &t, const core::general_scene<double> &sc,
                                    int max_iterations)
     : scene(sc) {
@@ -161,7 +175,7 @@ void run_reference(hs_solution &h, const core::general_scene<double> &sc, const 
                    const reference_input &ref) {
   require(ref.available, core::status::bad_geometry,
           "the reference backend supports the Hertz, flat-rounded and power-law geometries only");
-  h.solution.emplace<reference_double>(ref.text, sc, r.max_iterations < 1000 ? 1000 : r.max_iterations);
+  h.solution.emplace<reference_double>(ref.text(), sc, r.max_iterations < 1000 ? 1000 : r.max_iterations);
   h.model_used = HS_MODEL_REFERENCE;
   h.error_estimate = std::ldexp(1.0, -53);
   // certified relative values: a zone is resolved unless it rounds to 0
@@ -183,8 +197,7 @@ void run_reference(hs_solution &h, const core::general_scene<double> &sc, const 
 // a millisecond for the general path), where the alternative is the reference
 // backend (milliseconds to seconds). The geometries with a long double pressure
 // of their own: Hertz, flat-rounded, power law (kind: HS_GEOMETRY_*; -1 other).
-bool refine_estimate(hs_solution &h, const core::general_scene<double> &sc, int kind, double parameter,
-                     int max_iterations) {
+bool refine_estimate(hs_solution &h, int kind, double parameter, int max_iterations) {
   core::error_estimate<double> ap;
   try {
     if (h.model_used == HS_MODEL_CLOSED_FORM) {
@@ -249,8 +262,8 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
   // bound at all; the reference resolves it)
   if (tol == 0 || (h.error_estimate <= tol && h.unresolved == 0)) return;
   // issue 16: the worst-case estimate misses rtol; the a-posteriori one may not
-  if (refine_estimate(h, sc, hertz ? HS_GEOMETRY_HERTZ : ref.available ? ref.text.geometry : -1, ref.parameter, r.max_iterations) &&
-      h.error_estimate <= tol && h.unresolved == 0)
+  const int kind = hertz ? HS_GEOMETRY_HERTZ : ref.available ? ref.geometry : -1;
+  if (refine_estimate(h, kind, ref.parameter, r.max_iterations) && h.error_estimate <= tol && h.unresolved == 0)
     return;
   if (ref.available) {
     run_reference(h, sc, r, ref);

@@ -281,9 +281,8 @@ error_estimate<T> a_posteriori_estimate(const T (&d)[2], const T (&E)[2], const 
 
 // closed_form_estimate's bound per zone (d1, d2 in units of a): the absolute
 // error Aw_i of d_i (units of a) and the relative error rE_i of E_i
-template <class T>
-void closed_form_zone_bounds(const T &d1, const T &d2, const T &q, const T &s, const T &width, T (&Aw)[2],
-                             T (&rE)[2]) {
+template <class T> void closed_form_zone_bounds(const T &d1, const T &d2, const T &q, const T &s, const T &width,
+                                                T (&Aw)[2], T (&rE)[2]) {
   using std::abs;
   using std::min;
   using std::sqrt;
@@ -299,9 +298,8 @@ void closed_form_zone_bounds(const T &d1, const T &d2, const T &q, const T &s, c
 }
 
 // quadrature_estimate's bound per zone at rt = 0 (as closed_form_zone_bounds)
-template <class T>
-void quadrature_zone_bounds(const T &d1, const T &d2, const T &width, const T &q, const T &acc,
-                            const T &conditioning, T (&Aw)[2], T (&rE)[2]) {
+template <class T> void quadrature_zone_bounds(const T &d1, const T &d2, const T &width, const T &q, const T &acc,
+                                               const T &conditioning, T (&Aw)[2], T (&rE)[2]) {
   using std::abs;
   using std::max;
   using std::sqrt;
