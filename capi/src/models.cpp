@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "halfslip/halfslip.h"
@@ -216,8 +217,8 @@ bool refine_estimate(hs_solution &h, int kind, double parameter, int max_iterati
     } else {
       return false;
     }
-  } catch (const core::error &) {
-    return false;  // the wider solve failed: keep the worst-case estimate
+  } catch (const std::exception &) {
+    return false;  // the wider solve failed (any reason): keep the worst-case estimate
   }
   if (!(ap.value() < h.error_estimate) || ap.unresolved > h.unresolved) return false;
   take_estimate(h, ap);
