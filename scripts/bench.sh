@@ -47,3 +47,9 @@ if [ -x "$HS_BUILD/bench/bench_opposite" ]; then
     --benchmark_out="$HS_ROOT/bench/results/opposite.csv" --benchmark_out_format=csv \
     | tee "$HS_ROOT/bench/results/opposite.txt"
 fi
+# issue 16: AUTO at rtol 1e-15 (a-posteriori estimate) against the reference route it replaces, same run
+if [ -x "$HS_BUILD/bench/bench_auto" ]; then
+  "$HS_BUILD/bench/bench_auto" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+    --benchmark_out="$HS_ROOT/bench/results/auto.csv" --benchmark_out_format=csv \
+    | tee "$HS_ROOT/bench/results/auto.txt"
+fi

@@ -1,6 +1,7 @@
 #!/bin/bash
 # Issue 13 estimate sweep (docs/validation.md, "Estimate sweep"): every double result of
-# HS_MODEL_DEFAULT and HS_MODEL_AUTO (rtol 0, 1e-10) against the MPFR reference, per geometry.
+# HS_MODEL_DEFAULT and HS_MODEL_AUTO (rtol 0, 1e-10; AUTO at 1e-15 and the a-posteriori estimate, issue 16)
+# against the MPFR reference, per geometry.
 #   bash scripts/estimate_sweep.sh [N_PER_GEOMETRY=10000] [SECONDS_PER_GEOMETRY=unlimited]
 # One core, niced. Writes bench/results/estimate_sweep.csv and bench/results/estimate_sweep_summary.md.
 # Needs a build with -DHALFSLIP_BUILD_BENCH=ON (target estimate_sweep) in ./build.

@@ -85,16 +85,11 @@ hs::capi::request read_options(const hs_options *opts) {
   return r;
 }
 
-// The scene as the reference backend reads it (exact decimals of the doubles).
+// The scene as the reference backend reads it (written out on use: reference_input::text).
 hs::capi::reference_input reference_of(const core::general_scene<double> &sc) {
   hs::capi::reference_input in;
   in.available = true;
-  in.text.a = hs::capi::exact_decimal(sc.a);
-  in.text.p0 = hs::capi::exact_decimal(sc.p0);
-  in.text.f = hs::capi::exact_decimal(sc.f);
-  in.text.Estar = hs::capi::exact_decimal(sc.Estar);
-  in.text.q = hs::capi::exact_decimal(sc.q);
-  in.text.s = hs::capi::exact_decimal(sc.s);
+  in.scene = sc;
   return in;
 }
 
@@ -270,9 +265,8 @@ hs_solution *solve_scene(const hs_scene &scene, const hs_geometry *geometry, con
     if ((req.model == HS_MODEL_AUTO || req.model == HS_MODEL_REFERENCE) &&
         (geometry->kind == HS_GEOMETRY_FLAT_ROUNDED || geometry->kind == HS_GEOMETRY_POWER_LAW)) {
       ref = reference_of(sc);
-      ref.text.geometry = geometry->kind;
-      ref.text.flat_over_a = hs::capi::exact_decimal(geometry->flat_over_a);
-      ref.text.exponent = hs::capi::exact_decimal(geometry->exponent);
+      ref.geometry = geometry->kind;
+      ref.parameter = geometry->kind == HS_GEOMETRY_FLAT_ROUNDED ? geometry->flat_over_a : geometry->exponent;
     }
   }
   hs::capi::solve_models(*h, !geometry, sc, req, ref);

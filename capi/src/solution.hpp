@@ -227,9 +227,15 @@ struct request {
 
 // What the reference backend needs to re-solve the scene (empty geometry:
 // not available, e.g. sampled or callback pressures).
+// The scene is kept in double and written out as exact decimals only when the
+// reference runs (issue 16: the six 800-digit expansions cost ~15 us, 50x a
+// Hertz closed-form solve, on every AUTO call).
 struct reference_input {
   bool available = false;
-  reference::text_scene text;
+  core::general_scene<double> scene;
+  int geometry = 1;      // HS_GEOMETRY_*
+  double parameter = 0;  // b_f/a or the exponent, as the caller passed it
+  reference::text_scene text() const;
 };
 
 // Solve into h (h.model set for non-Hertz geometries; hertz = true for the
