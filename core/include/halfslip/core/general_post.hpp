@@ -6,10 +6,12 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "frame.hpp"
 #include "gauss.hpp"
+#include "general_expansion.hpp"
 #include "general_knots.hpp"
 #include "general_panels.hpp"
 #include "general_residual.hpp"
@@ -55,6 +57,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     a.width = tiny_width<T>();
     b.width = tiny_width_b<T>();
     a.at_given_width = b.at_given_width = true;
+    a.expansion_ = b.expansion_ = nullptr;  // the expansion is the given width's
     const T la = log(a.width), lb = log(b.width);
     const T fa = f(a), fb = f(b);
     return fa + (log_width - la) / (la - lb) * (fa - fb);
@@ -277,11 +280,25 @@ template <class T> class general_solution : public canonical_solution<general_so
   }
 
   // canonical dimensionless B_x (units f p0 / E*) at distance dl from the
-  // stick edge of zone z (+1: R, -1: L)
+  // stick edge of zone z (+1: R, -1: L): from the zone's expansion
+  // (general_expansion.hpp) when there is one, else by bhat_direct
   T bhat(int z, const T &dl) const {
+    if (!(dl > 0) || !(zone_length(z) > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.bhat(z, dl); });
+    if (const auto *x = expansion()) {
+      using std::sqrt;
+      const T R = sqrt(dl * (width + dl));
+      const T k = x->at(z).K(theta_of(z, dl));
+      return z > 0 ? T(R * k) : T(-(R * k));
+    }
+    return bhat_direct(z, dl);
+  }
+  // B_x by the Cauchy integrals at the point (adaptive tanh-sinh per zone, the
+  // path before issue 16: 20-70 us)
+  T bhat_direct(int z, const T &dl) const {
     using std::sqrt;
     if (!(dl > 0)) return T(0);
-    if (point_stick()) return continued([&](const general_solution &g) { return g.bhat(z, dl); });
+    if (point_stick()) return continued([&](const general_solution &g) { return g.bhat_direct(z, dl); });
     const T Rx = sqrt(dl * (width + dl));
     const T br = dirR * cauchy(+1, z, dl) - dirL * cauchy(-1, z, dl);
     return (z > 0 ? -2 : 2) * Rx * br / pi<T>();
@@ -338,14 +355,17 @@ template <class T> class general_solution : public canonical_solution<general_so
   // G: the high-order rule on the graded panels of zone z, or null).
   std::vector<T> hgrad_nodes(int z, const gdetail::zone_nodes<T> &O, const gdetail::zone_nodes<T> &IR,
                              const gdetail::zone_nodes<T> &IL, std::size_t count,
-                             const gdetail::zone_nodes<T> *G = nullptr) const {
+                             const gdetail::zone_nodes<T> *G = nullptr, bool with_R = true,
+                             std::vector<T> *err = nullptr) const {
+    using std::abs;
     using std::sqrt;
     const T e = width;
     std::vector<T> g(count, T(0));
+    if (err) err->assign(count, T(0));
     for (std::size_t j = 0; j < count; ++j) {
       const T sj = O.s2[j], cj = O.c2[j];
       const T u = O.d * sj;
-      T br = 0;
+      T br = 0, ab = 0;  // ab: sum of |terms| (with err: the rounding bound)
       for (int Z : {+1, -1}) {
         const int dir = Z > 0 ? dirR : dirL;
         const auto &I = Z > 0 ? IR : IL;
@@ -361,7 +381,10 @@ template <class T> class general_solution : public canonical_solution<general_so
             const T den = (I.s2[i] + sj < 1) ? I.s2[i] - sj : cj - I.c2[i];
             // den = 0 only where both nodes have merged into a graded panel
             // end in rounding (high orders): weights there are negligible
-            if (den != 0) sum += I.w[i] * (I.H[i] - Hj) / den;
+            if (den != 0) {
+              sum += I.w[i] * (I.H[i] - Hj) / den;
+              if (err) ab += abs(I.w[i] * (abs(I.H[i]) + abs(Hj)) / den) / I.d;
+            }
           }
           if (hi) {
             for (std::size_t i = 0; i < G->s2.size(); ++i) {
@@ -374,11 +397,14 @@ template <class T> class general_solution : public canonical_solution<general_so
           // |t - xi| = e + u + d_Z sin^2 theta
           const T base = e + u;
           for (std::size_t i = 0; i < n; ++i) sum += I.w[i] * I.H[i] / (base + I.d * I.s2[i]);
+          if (err) ab += abs(sum);
         }
         // C_Z = Z sum; br = dirR C_R - dirL C_L
         br += T(dir) * sum;
       }
-      g[j] = -2 * sqrt(u * (e + u)) * br / pi<T>();
+      // (without R: K = -(2/pi) br, the expansion's smooth factor)
+      g[j] = with_R ? T(-2 * sqrt(u * (e + u)) * br / pi<T>()) : T(-2 * br / pi<T>());
+      if (err) (*err)[j] = 4 * eps<T>() * ab / pi<T>() * (with_R ? T(sqrt(u * (e + u))) : T(1));
     }
     return g;
   }
@@ -559,15 +585,105 @@ template <class T> class general_solution : public canonical_solution<general_so
     throw error(status::no_convergence,
                 "zone energy or slip: no two orders agreed up to the order limit (max_order)");
   }
+  // zone energy and slip: from the zone's expansion when there is one, else
+  // by the fixed rules (energy_hat_fixed, hhat_fixed)
   T energy_hat(int z) const {
+    using std::abs;
     if (!(zone_length(z) > 0)) return T(0);
     if (point_stick()) return continued([&](const general_solution &g) { return g.energy_hat(z); });
-    return by_order([&](int M) { return energy_hat_order(z, M); });
+    if (const auto *x = expansion()) return abs(x->at(z).energy);
+    return energy_hat_fixed(z);
   }
   T hhat(int z, const T &dl) const {
     if (!(dl > 0) || !(zone_length(z) > 0)) return T(0);
     if (point_stick()) return continued([&](const general_solution &g) { return g.hhat(z, dl); });
+    if (const auto *x = expansion()) {
+      const T d = zone_length(z);
+      if (!(dl < d)) return x->at(z).h0.back();
+      return x->at(z).h(theta_of(z, dl));
+    }
+    return hhat_fixed(z, dl);
+  }
+  // the fixed-rule paths (before issue 16: the orders doubled until two agree)
+  T energy_hat_fixed(int z) const {
+    if (!(zone_length(z) > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.energy_hat_fixed(z); });
+    return by_order([&](int M) { return energy_hat_order(z, M); });
+  }
+  T hhat_fixed(int z, const T &dl) const {
+    if (!(dl > 0) || !(zone_length(z) > 0)) return T(0);
+    if (point_stick()) return continued([&](const general_solution &g) { return g.hhat_fixed(z, dl); });
     return by_order([&](int M) { return hhat_order(z, dl, M); });
+  }
+  // theta = asin(sqrt(dl/d)) of the point at distance dl from the stick edge
+  // of zone z (from the nearer end, without cancellation)
+  T theta_of(int z, const T &dl) const {
+    using std::asin;
+    using std::sqrt;
+    const T d = zone_length(z), half_pi = pi<T>() / 2;
+    return dl >= d ? half_pi : (2 * dl <= d ? T(asin(sqrt(dl / d))) : half_pi - asin(sqrt((d - dl) / d)));
+  }
+
+  // ---- the expansion (general_expansion.hpp; issue 16) ----
+  // Made on the first point, slip or energy evaluation that needs it, once
+  // (thread-safe); shared by the copies of the solution. Null where it does
+  // not apply (beyond long double, the knot path, the point-stick limit, stuck)
+  // or where its accuracy control did not pass within max_order: the paths
+  // above answer then.
+  struct expansion_cache {
+    std::once_flag once;
+    std::shared_ptr<const gdetail::general_expansion<T>> value;
+  };
+  std::shared_ptr<expansion_cache> expansion_;  // set by solve_general
+  const gdetail::general_expansion<T> *expansion() const {
+    if (!expansion_) return nullptr;
+    expansion_cache &c = *expansion_;
+    std::call_once(c.once, [&] {
+      try {
+        c.value = make_expansion();
+      } catch (const error &) {
+        c.value = nullptr;  // the other paths answer (and report)
+      }
+    });
+    return c.value.get();
+  }
+  // M from M0, doubled per zone until the last two Legendre coefficients of K
+  // on every panel are below tol max|K| (general_expansion.hpp); null if not
+  // within max_order.
+  std::shared_ptr<const gdetail::general_expansion<T>> make_expansion(int M0 = 0) const {
+    using std::max;
+    // from the smallest power of two >= twice the digits of T (32 in double:
+    // order 16 never passed on the benchmark scenes)
+    if (M0 <= 0)
+      for (M0 = 16; M0 < 2 * std::numeric_limits<T>::digits10;) M0 *= 2;
+    if (graded_inner_order(M0) > 0 || pm->knots() || point_stick() || reg == regime::stuck) return nullptr;
+    auto x = std::make_shared<gdetail::general_expansion<T>>();
+    const T tol = max(T(32 * eps<T>()), T(rtol / 64));
+    int Mi = 0;
+    gdetail::zone_nodes<T> IR, IL;
+    for (int z : {+1, -1}) {
+      const T d = zone_length(z);
+      if (!(d > 0)) continue;
+      bool ok = false;
+      for (int M = M0; M <= max_order; M *= 2) {
+        if (Mi != M) {
+          IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1);
+          IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1);
+          Mi = M;
+        }
+        const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
+        std::vector<T> err;
+        const std::vector<T> K = hgrad_nodes(z, O, IR, IL, O.s2.size(), nullptr, false, &err);
+        auto &zx = x->zone[z > 0 ? 0 : 1];
+        gdetail::fill_zone_expansion<T>(zx, O, K, err, width, tol);
+        if (zx.tail <= tol) {
+          ok = true;
+          break;
+        }
+      }
+      if (!ok) return nullptr;
+    }
+    return x;
   }
 
   // Shear traction q(x) on body 1 (traction.hpp), split at the pressure's kinks.

@@ -1,0 +1,199 @@
+// halfslip core, general pressures (general.hpp): B_x on each slip zone as a
+// short Legendre expansion per quadrature panel, with the end behaviour
+// factored out, so that B_x and the slip at a point and the zone energies are
+// sums (issue 16).
+//
+// On zone z (canonical frame, u = d sin^2 theta the distance from the stick
+// edge) B_x = +-R(u) K(theta), R(u) = sqrt(u (e + u)) the square-root end
+// behaviour at the stick edge (and the whole of it: at the contact edge the
+// Cauchy integrals of the sqrt-vanishing density have no sqrt term), and
+// K = -(2/pi) (dirR C_R - dirL C_L) smooth in theta on each panel of the
+// solver's panel set of the zone (graded geometrically towards theta = 0 from
+// the near singularity at theta ~ i sqrt(e/d); pressure kinks are panel ends,
+// on either side of which the Cauchy integrals are analytic: a (x - k) ln|x - k|
+// term of the pressure gives the Cauchy integral only a one-sided
+// pi (x - k) term; graded panels are mapped polynomially as for the zone
+// integrals). Per panel, in the panel's rule variable r in [-1, 1]:
+//   K(r)        = sum_{k < M} c_k P_k(r)  from K at the M Gauss-Legendre nodes
+//                 (the fixed-rule h' of general_solution::hgrad_nodes, inner
+//                 rule M + 1 interlacing);
+//   h(r) - h_lo = sum_{k <= M} a_k P_k(r)  the antiderivative of dh/dr =
+//                 R K du/dtheta dtheta/dr (Legendre integration, exact for the
+//                 interpolant);
+// and the zone energy int p h du by the same nodes (as energy_hat_order).
+// Accuracy control: M starts at twice the solver's order (interpolation needs
+// about twice the order of integration for the same error) and doubles until
+// the last two coefficients of K on every panel are below tol max|K| (tol:
+// 32 eps, or rtol/64 where larger); where that needs more than max_order the
+// expansion is not made and the fixed-rule and adaptive paths answer.
+// Evaluation: K at a point by the Legendre recurrence (O(M)); h by the
+// antiderivative's series, except in the lower half of the panel at the stick
+// edge (h ~ u^(3/2) there: the series' absolute error eps sum|a_k| would be
+// large relative to h), where h = int_0^theta by Gauss-Legendre of order M/2
+// on [0, theta] of the interpolant (O(M^2)).
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "gauss.hpp"
+#include "general_panels.hpp"
+#include "numerics.hpp"
+
+namespace hs { namespace core { namespace gdetail {
+
+template <class T> struct zone_expansion {
+  int M = 0;  // coefficients of K per panel (Gauss-Legendre order of the nodes)
+  T d{0}, e{0};
+  std::vector<panel<T>> panels;
+  std::vector<T> kc;  // K: M Legendre coefficients per panel
+  std::vector<T> ac;  // h - h_lo: M + 1 Legendre coefficients per panel
+  std::vector<T> h0;  // h at each panel's lower end (panels.size() + 1 entries)
+  T energy{0};        // int_0^d p_hat h du (signed)
+  T tail{0};  // largest last-two-coefficients of K over max(max|K|, floor/tol): <= tol passes (accuracy control)
+
+  // sum_{k < n} c_k P_k(r) by the forward Legendre recurrence (stable on [-1, 1])
+  static T legendre_sum(const T *c, int n, const T &r) {
+    T p0 = 1, p1 = r;
+    T s = c[0];
+    if (n > 1) s += c[1] * r;
+    for (int j = 2; j < n; ++j) {
+      const T p2 = (T(2 * j - 1) * r * p1 - T(j - 1) * p0) / T(j);
+      s += c[j] * p2;
+      p0 = p1;
+      p1 = p2;
+    }
+    return s;
+  }
+  // the panel containing theta (the last one whose lo <= theta)
+  std::size_t find(const T &th) const {
+    std::size_t lo = 0, hi = panels.size();
+    while (hi - lo > 1) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (panels[mid].lo <= th) lo = mid;
+      else hi = mid;
+    }
+    return lo;
+  }
+  // the rule variable r of theta on panel pn (inverse of for_nodes_c's map)
+  static T rule_var(const panel<T> &pn, const T &th) {
+    using std::pow;
+    const T L = pn.hi - pn.lo;
+    if (pn.grade == 0) return std::min(T(1), std::max(T(-1), T(2 * (th - pn.lo) / L - 1)));
+    const T m = T(grading_power<T>());
+    if (pn.grade < 0) {
+      const T v = std::max(T(0), T((th - pn.lo) / L));
+      return std::min(T(1), T(2 * pow(v, 1 / m) - 1));
+    }
+    const T v = std::max(T(0), T((pn.hi - th) / L));
+    return std::max(T(-1), T(1 - 2 * pow(v, 1 / m)));
+  }
+  T K(const T &th) const {
+    const std::size_t P = find(th);
+    return legendre_sum(&kc[P * std::size_t(M)], M, rule_var(panels[P], th));
+  }
+  // h at theta (u = d sin^2 theta, uc = d - u the distance to the contact edge)
+  T h(const T &th) const {
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    const std::size_t P = find(th);
+    const panel<T> &pn = panels[P];
+    if (P == 0 && th < pn.lo + (pn.hi - pn.lo) / 2) {
+      // int_0^th R K 2 d sin cos dtheta by Gauss-Legendre of order M/2 (the
+      // integrand is the interpolant's on a half panel or less: M/2 nodes
+      // resolve it as M do the panel)
+      const auto rule = gauss_legendre<T>(std::max(8, M / 2));
+      T s = 0;
+      for (std::size_t i = 0; i < rule->x.size(); ++i) {
+        const T t = th * (1 + rule->x[i]) / 2;
+        const T sn = sin(t), cs = cos(t);
+        const T u = d * sn * sn;
+        const T k = legendre_sum(&kc[0], M, rule_var(pn, t));
+        s += rule->w[i] * sqrt(u * (e + u)) * k * 2 * d * sn * cs;
+      }
+      return s * th / 2;
+    }
+    return h0[P] + legendre_sum(&ac[P * std::size_t(M + 1)], M + 1, rule_var(pn, th));
+  }
+};
+
+template <class T> struct general_expansion {
+  zone_expansion<T> zone[2];  // [0]: zone R (+1), [1]: zone L (-1)
+  const zone_expansion<T> &at(int z) const { return zone[z > 0 ? 0 : 1]; }
+};
+
+// The zone's expansion from K at the outer nodes O (order M; K = h'/R) and
+// the rule's Legendre table.
+template <class T>
+void fill_zone_expansion(zone_expansion<T> &x, const zone_nodes<T> &O, const std::vector<T> &K,
+                         const std::vector<T> &err, const T &e, const T &tol) {
+  using std::abs;
+  using std::max;
+  using std::sqrt;
+  const int M = O.n;
+  const auto cum = gauss_legendre_cumulative<T>(M);
+  const auto &rule = *cum->rule;
+  const std::size_t np = O.panels.size();
+  x.M = M;
+  x.d = O.d;
+  x.e = e;
+  x.panels = O.panels;
+  x.kc.assign(np * std::size_t(M), T(0));
+  x.ac.assign(np * std::size_t(M + 1), T(0));
+  x.h0.assign(np + 1, T(0));
+  T kmax = 0;
+  for (const T &k : K) kmax = max(kmax, T(abs(k)));
+  T tail = 0, E = 0;
+  std::vector<T> q(M), c(M);
+  for (std::size_t P = 0; P < np; ++P) {
+    const std::size_t b = P * std::size_t(M);
+    T *kc = &x.kc[b];
+    T *ac = &x.ac[P * std::size_t(M + 1)];
+    // dh/dr at the nodes: R K du/dtheta dtheta/dr
+    for (int i = 0; i < M; ++i) {
+      const T u = O.d * O.s2[b + i];
+      q[i] = sqrt(u * (e + u)) * K[b + i] * 2 * O.d * sqrt(O.s2[b + i] * O.c2[b + i]) * O.jac[b + i];
+    }
+    for (int k = 0; k < M; ++k) {
+      T sk = 0, sq = 0;
+      for (int i = 0; i < M; ++i) {
+        const T wp = rule.w[i] * cum->P[std::size_t(i) * (M + 1) + k];
+        sk += wp * K[b + i];
+        sq += wp * q[i];
+      }
+      kc[k] = sk * T(2 * k + 1) / 2;
+      c[k] = sq * T(2 * k + 1) / 2;
+    }
+    // the last coefficients are judged against the larger of tol max|K| and
+    // the rounding of K at the panel's nodes (err: hgrad_nodes' bound, eps
+    // times the sum of the terms' magnitudes; the own zone's principal-value
+    // quotients over near nodes dominate it: next to the stick edge ~ eps |K|/theta,
+    // and next to a graded kink, where the nodes crowd)
+    T floor = 0;
+    for (int i = 0; i < M; ++i) floor = max(floor, err[b + i]);
+    if (kmax > 0) tail = max(tail, T(max(abs(kc[M - 1]), abs(kc[M - 2])) / max(kmax, T(floor / tol))));
+    // antiderivative from r = -1: c_0 (P_0 + P_1), c_k (P_{k+1} - P_{k-1})/(2k + 1)
+    ac[0] += c[0];
+    ac[1] += c[0];
+    for (int k = 1; k < M; ++k) {
+      ac[k + 1] += c[k] / T(2 * k + 1);
+      ac[k - 1] -= c[k] / T(2 * k + 1);
+    }
+    T whole = 0;  // at r = 1 every P_j is 1
+    for (int j = 0; j <= M; ++j) whole += ac[j];
+    x.h0[P + 1] = x.h0[P] + whole;
+    // energy: p_hat h du at the nodes (weights O.w = w jac)
+    for (int i = 0; i < M; ++i) {
+      T hi = 0;
+      for (int j = 0; j <= M; ++j) hi += ac[j] * cum->P[std::size_t(i) * (M + 1) + j];
+      hi += x.h0[P];
+      E += O.w[b + i] * O.p[b + i] * 2 * O.d * sqrt(O.s2[b + i] * O.c2[b + i]) * hi;
+    }
+  }
+  x.energy = E;
+  x.tail = tail;
+}
+
+}}}  // namespace hs::core::gdetail
