@@ -20,6 +20,7 @@
 #include "solution.hpp"
 #include "halfslip/core/fields.hpp"
 #include "halfslip/core/history_fields.hpp"
+#include "halfslip/core/ray_fields.hpp"
 
 namespace core = hs::core;
 
@@ -230,6 +231,14 @@ core::contact_state<double> state_of_solution(const hs::capi::history_state &s, 
 }
 template <class S> core::contact_state<double> state_of_solution(const S &s, double bulk2) {
   return core::make_state<double>(s, bulk2);
+}
+core::contact_state<double> state_of(const hs_solution &h, double bulk2);
+// issue 14: a state along one ray, the sum of its monotonic parts' states
+core::contact_state<double> state_of_solution(const hs::capi::ray_state &s, double bulk2) {
+  std::vector<core::superposed_part<double>> parts;
+  for (const auto &p : s.parts()) parts.push_back({double(p.coef), state_of(*p.sol, bulk2)});
+  return core::superposed_state<double>(std::move(parts), s.scene.s * s.scene.f * s.scene.p0, bulk2, -s.b2(),
+                                        s.b1());
 }
 
 // issue 15: the contact state of a solution (bulk2: stress the pad carries)

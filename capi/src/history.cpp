@@ -4,15 +4,27 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "halfslip/core/history.hpp"
+#include "halfslip/core/ray_history.hpp"
 #include "solution.hpp"
 
 namespace core = hs::core;
 using hs::capi::guard;
 using hs::capi::require;
+
+// A vertex of a path along one ray (issue 14): its result and the monotonic
+// solutions whose sum is the state after it.
+struct ray_vertex_rec {
+  core::ray_vertex_result<double> r;  // physical units
+  double q = 0, s = 0;
+  double error_estimate = 0;
+  std::vector<hs::capi::ray_state::part> parts;
+};
 
 struct hs_history {
   core::general_scene<double> scene;  // a, p0, f, E* (loads unused)
@@ -20,6 +32,20 @@ struct hs_history {
   std::unique_ptr<core::refined_history<double>> h;
   core::cycle_result<double> cycles;
   bool has_cycles = false;
+  // issue 14: while every vertex lies on one ray through the origin and no zone
+  // recedes on the ramp, the states are sums of monotonic solutions (exact, no
+  // march); the first vertex off the ray (or periodic loading) replays the
+  // path in the march
+  std::shared_ptr<const core::pressure_model<double>> pm;
+  bool hertz = true;
+  bool ray_mode = true;
+  core::ray_path<double> ray;
+  std::vector<ray_vertex_rec> ray_vertices;
+  std::map<std::pair<double, double>, std::shared_ptr<const hs_solution>> mono_cache;
+  std::vector<std::pair<double, double>> input;  // the vertices given, in order
+  core::history_options<double> march_options;
+  double march_rtol = 0;
+  size_t vertex_count() const { return ray_mode ? ray_vertices.size() : h->fine().vertices().size(); }
 };
 
 namespace {
@@ -88,22 +114,124 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
     ho.max_step = o.max_step;
     ho.max_steps = o.max_steps;
     r->h = std::make_unique<core::refined_history<double>>(pm, ho, o.rtol);
+    r->pm = pm;
+    r->march_options = ho;
+    r->march_rtol = o.rtol;
+    r->hertz = geometry == nullptr || geometry->kind == HS_GEOMETRY_HERTZ;
     *out = r.release();
   });
 }
 
 void hs_history_free(hs_history *h) { delete h; }
 
+namespace {
+
+// The monotonic solution at (q, s) in the history's contact (default model),
+// shared between the vertices and states that use it.
+std::shared_ptr<const hs_solution> mono_at(hs_history &h, double q, double s) {
+  const auto key = std::make_pair(q, s);
+  const auto it = h.mono_cache.find(key);
+  if (it != h.mono_cache.end()) return it->second;
+  auto sol = std::make_shared<hs_solution>();
+  core::general_scene<double> sc = h.scene;
+  sc.q = q;
+  sc.s = s;
+  if (!h.hertz) sol->model = h.pm;
+  hs::capi::solve_models(*sol, h.hertz, sc, hs::capi::request{}, hs::capi::reference_input{});
+  h.mono_cache.emplace(key, sol);
+  return sol;
+}
+
+// The monotonic stick half-width (units of a) at canonical loads, for the recede check.
+double mono_half_width(hs_history &h, double q, double s) {
+  const auto sol = mono_at(h, q, s);
+  return (sol->visit([](const auto &v) { return double(v.b1()); }) +
+          sol->visit([](const auto &v) { return double(v.b2()); })) /
+         (2 * h.scene.a);
+}
+
+// Adds (q, s) to the path along one ray; false (nothing changed) when the
+// superposition does not apply: off the ray, or a zone would recede on the
+// ramp to the path's farthest vertex.
+bool add_on_ray(hs_history &h, double q, double s) {
+  require(std::isfinite(q) && std::isfinite(s), core::status::not_finite, "history: a path vertex is not finite");
+  require(std::fabs(q) < 1, core::status::gross_sliding, "history: |Q| >= fP at a path vertex: gross sliding");
+  core::ray_path<double> next = h.ray;
+  if (!next.add(q, s)) return false;
+  const auto far = next.farthest();
+  double at = 0;
+  if (!far.zero() &&
+      core::ramp_recedes<double>(far.q, far.s, [&](double qq, double ss) { return mono_half_width(h, qq, ss); }, at))
+    return false;
+  const auto &plan = next.vertices().back();
+  struct mono_values {
+    double b1, b2, E1, E2;
+    int dir1, dir2;
+  };
+  double est = 0;
+  auto mono = [&](const core::ray_load<double> &l) {
+    const auto sol = mono_at(h, l.q, l.s);
+    mono_values m;
+    sol->visit([&](const auto &v) {
+      m.b1 = double(v.b1());
+      m.b2 = double(v.b2());
+      m.dir1 = v.dir1();
+      m.dir2 = v.dir2();
+      m.E1 = double(v.energy(1));
+      m.E2 = double(v.energy(2));
+    });
+    est += 2 * sol->error_estimate;
+    return m;
+  };
+  ray_vertex_rec rec;
+  rec.q = q;
+  rec.s = s;
+  rec.r = core::ray_evaluate<double>(plan, mono, h.scene.a,
+                                     h.ray_vertices.empty() ? nullptr : &h.ray_vertices.back().r);
+  require(std::isfinite(rec.r.energy1) && std::isfinite(rec.r.energy2), core::status::overflow,
+          "history: an energy is not representable");
+  rec.error_estimate = est;
+  for (const auto &t : plan.terms)
+    if (!t.load.zero()) rec.parts.push_back({t.coef, mono_at(h, t.load.q, t.load.s)});
+  if (rec.parts.empty()) rec.parts.push_back({1, mono_at(h, 0.0, 0.0)});  // unloaded: zero traction
+  h.ray = std::move(next);
+  h.ray_vertices.push_back(std::move(rec));
+  return true;
+}
+
+// Leaves the superposition: the march replays the path so far.
+void to_march(hs_history &h) {
+  if (!h.ray_mode) return;
+  // into a fresh march: if the replay fails, the history stays as it was
+  auto m = std::make_unique<core::refined_history<double>>(h.pm, h.march_options, h.march_rtol);
+  for (const auto &v : h.input) m->add_vertex(v.first, v.second);
+  h.h = std::move(m);
+  h.ray_mode = false;
+  h.ray_vertices.clear();
+  h.mono_cache.clear();
+}
+
+}  // namespace
+
 int hs_history_add_vertices(hs_history *h, size_t n, const double *q, const double *s) {
   return guard([&] {
     require(h != nullptr && (n == 0 || (q != nullptr && s != nullptr)), core::status::null_pointer, "NULL");
-    for (size_t i = 0; i < n; ++i) h->h->add_vertex(q[i], s[i]);
+    for (size_t i = 0; i < n; ++i) {
+      if (h->ray_mode && add_on_ray(*h, q[i], s[i])) {
+        h->input.emplace_back(q[i], s[i]);
+        continue;
+      }
+      to_march(*h);
+      h->h->add_vertex(q[i], s[i]);
+      h->input.emplace_back(q[i], s[i]);
+    }
   });
 }
 
 int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double sa, double phase_deg, int cycles) {
   return guard([&] {
     require(h != nullptr, core::status::null_pointer, "NULL history");
+    to_march(*h);
     h->cycles = h->h->add_cycles(qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h->opts.ramp_order),
                                  h->opts.segments_per_cycle, h->opts.steady_rtol);
     h->has_cycles = true;
@@ -113,7 +241,7 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
 int hs_history_vertex_count(const hs_history *h, size_t *n) {
   return guard([&] {
     require(h != nullptr && n != nullptr, core::status::null_pointer, "NULL");
-    *n = h->h->fine().vertices().size();
+    *n = h->vertex_count();
   });
 }
 
@@ -121,9 +249,26 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
   return guard([&] {
     require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
     require(out->struct_size == sizeof *out, core::status::struct_size, "vertex struct_size");
-    require(i < h->h->fine().vertices().size(), core::status::bad_option, "vertex index out of range");
-    const auto &v = h->h->fine().vertices()[i];
+    require(i < h->vertex_count(), core::status::bad_option, "vertex index out of range");
     const auto &sc = h->scene;
+    if (h->ray_mode) {  // superposition: physical units already, no steps
+      const auto &v = h->ray_vertices[i];
+      out->Q_over_fP = v.q;
+      out->sigma_over_fp0 = v.s;
+      out->b1 = v.r.b1;
+      out->b2 = v.r.b2;
+      out->slip_dir1 = v.r.b1 < sc.a ? v.r.dir1 : 0;
+      out->slip_dir2 = v.r.b2 < sc.a ? v.r.dir2 : 0;
+      out->energy1 = v.r.energy1;
+      out->energy2 = v.r.energy2;
+      out->cycle = 0;
+      out->steps = 0;
+      out->step = 0;
+      out->error_estimate = v.error_estimate;
+      out->interior_merges = 0;
+      return;
+    }
+    const auto &v = h->h->fine().vertices()[i];
     const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
     out->Q_over_fP = v.q;
     out->sigma_over_fp0 = v.s;
@@ -157,9 +302,24 @@ double field_at(const hs_history &h, size_t nsteps, int field, double x) {
 int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, const double *x, double *out) {
   return guard([&] {
     require(h != nullptr && (n == 0 || (x != nullptr && out != nullptr)), core::status::null_pointer, "NULL");
-    require(vertex < h->h->fine().vertices().size(), core::status::bad_option, "vertex index out of range");
+    require(vertex < h->vertex_count(), core::status::bad_option, "vertex index out of range");
     require(field == HS_FIELD_TRACTION || field == HS_FIELD_SLIP, core::status::bad_option, "field");
     std::vector<double> tmp(n);
+    if (h->ray_mode) {
+      const auto &parts = h->ray_vertices[vertex].parts;
+      for (size_t i = 0; i < n; ++i) {
+        require(std::isfinite(x[i]), core::status::not_finite, "x");
+        require(std::fabs(x[i]) <= h->scene.a, core::status::point_outside, "x outside the contact");
+        double r = 0;
+        for (const auto &p : parts)
+          r += p.coef * p.sol->visit([&](const auto &v) {
+            return double(field == HS_FIELD_TRACTION ? v.traction(x[i]) : v.slip(x[i]));
+          });
+        tmp[i] = r;
+      }
+      std::copy(tmp.begin(), tmp.end(), out);
+      return;
+    }
     const size_t ns = h->h->fine().vertices()[vertex].step_end;
     for (size_t i = 0; i < n; ++i) tmp[i] = field_at(*h, ns, field, x[i]);
     std::copy(tmp.begin(), tmp.end(), out);
@@ -169,8 +329,17 @@ int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, con
 int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
   return guard([&] {
     require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
+    require(vertex < h->vertex_count(), core::status::bad_option, "vertex index out of range");
+    if (h->ray_mode) {
+      const auto &v = h->ray_vertices[vertex];
+      auto r = std::make_unique<hs_solution>();
+      r->solution.emplace<hs::capi::ray_state>(v.parts, h->scene, v.q, v.s, v.r.b1, v.r.b2, v.r.dir1, v.r.dir2);
+      r->model_used = 0;
+      r->error_estimate = v.error_estimate;
+      *out = r.release();
+      return;
+    }
     const auto &vs = h->h->fine().vertices();
-    require(vertex < vs.size(), core::status::bad_option, "vertex index out of range");
     const auto &v = vs[vertex];
     auto r = std::make_unique<hs_solution>();
     r->solution.emplace<hs::capi::history_state>(h->h->fine().prefix(v.step_end), h->scene, v);
@@ -237,7 +406,9 @@ double half_width_at(const hs_solution &sol, double q, double s) {
 int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
   return guard([&] {
     require(sol != nullptr && recedes != nullptr && at != nullptr, core::status::null_pointer, "NULL");
-    require(!std::holds_alternative<hs::capi::history_state>(sol->solution), core::status::not_applicable,
+    require(!std::holds_alternative<hs::capi::history_state>(sol->solution) &&
+                !std::holds_alternative<hs::capi::ray_state>(sol->solution),
+            core::status::not_applicable,
             "a load-history state is not a monotonic solution");
     const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
     const double s = sol->visit([](const auto &v) { return double(v.scene.s); });
@@ -252,7 +423,9 @@ int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
 int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out) {
   return guard([&] {
     require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL");
-    require(!std::holds_alternative<hs::capi::history_state>(sol->solution), core::status::not_applicable,
+    require(!std::holds_alternative<hs::capi::history_state>(sol->solution) &&
+                !std::holds_alternative<hs::capi::ray_state>(sol->solution),
+            core::status::not_applicable,
             "a load-history state is not a monotonic solution");
     require(out->struct_size == sizeof *out, core::status::struct_size, "steady cycle struct_size");
     const double q = sol->visit([](const auto &v) { return double(v.scene.q); });

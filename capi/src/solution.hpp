@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "halfslip/core/asymptotic.hpp"
 #include "halfslip/core/field_panels.hpp"
@@ -131,6 +132,55 @@ class history_state {
   double b1_ = 0, b2_ = 0;
 };
 
+// The state at a vertex of a load history along one ray, by superposition of
+// monotonic solutions (core/ray_history.hpp, issue 14): q, h and the stresses
+// are sums c_k (q_k, h_k, ...) of the parts (shared, immutable solutions), so
+// the state outlives the history. Physical units; as history_state, the
+// monotonic-only quantities report HS_ERR_NOT_APPLICABLE.
+class ray_state {
+ public:
+  struct part {
+    int coef;
+    std::shared_ptr<const hs_solution> sol;
+  };
+  ray_state(std::vector<part> parts, const core::general_scene<double> &sc, double q, double s, double b1, double b2,
+            int dir1, int dir2)
+      : scene(sc), parts_(std::move(parts)), b1_(b1), b2_(b2) {
+    scene.q = q;
+    scene.s = s;
+    dir1_ = b1 < sc.a ? dir1 : 0;
+    dir2_ = b2 < sc.a ? dir2 : 0;
+    reg = (dir1_ == 0 && dir2_ == 0) ? core::regime::stuck
+          : (dir1_ * dir2_ < 0)      ? core::regime::opposite_sign
+                                     : core::regime::same_sign;
+  }
+  core::general_scene<double> scene;  // a, p0, f, E*; q, s: the vertex's loads
+  core::regime reg = core::regime::stuck;
+  int iterations = 0;
+  const std::vector<part> &parts() const { return parts_; }
+  int dir1() const { return dir1_; }
+  int dir2() const { return dir2_; }
+  double b1() const { return b1_; }
+  double b2() const { return b2_; }
+  double d1() const { return scene.a - b1_; }
+  double d2() const { return scene.a - b2_; }
+  [[noreturn]] static void not_applicable(const char *what) { throw core::error(core::status::not_applicable, what); }
+  double energy(int) const {
+    not_applicable(
+        "a load-history state has no monotonic zone energies (hs_history_vertex_get: energies per segment)");
+  }
+  double Bx(double) const { not_applicable("B_x is not evaluated for a load-history state (slip: hs_eval_slip)"); }
+  double work(double) const { not_applicable("the work density f p |h| is that of monotonic loading only"); }
+  inline double slip(double x) const;
+  inline double pressure(double x) const;
+  inline double traction(double x) const;
+
+ private:
+  std::vector<part> parts_;
+  int dir1_ = 0, dir2_ = 0;
+  double b1_ = 0, b2_ = 0;
+};
+
 // The exact decimal expansion of a double (so that the reference sees the
 // very number the caller passed).
 std::string exact_decimal(double v);
@@ -143,7 +193,8 @@ struct hs_solution {
   std::shared_ptr<const hs::core::pressure_model<double>> model;
   // the solution of the model that ran (monostate only while it runs)
   std::variant<std::monostate, hs::core::hertz_solution<double>, hs::core::general_solution<double>,
-               hs::core::edge_solution<double>, hs::capi::reference_double, hs::capi::history_state>
+               hs::core::edge_solution<double>, hs::capi::reference_double, hs::capi::history_state,
+               hs::capi::ray_state>
       solution;
   int model_used = 0;  // HS_MODEL_*
   double error_estimate = 0;  // relative, of the resolved zones (core/select.hpp)
@@ -174,6 +225,20 @@ struct hs_solution {
 };
 
 namespace hs { namespace capi {
+
+inline double ray_state::slip(double x) const {
+  double r = 0;
+  for (const auto &p : parts_) r += p.coef * p.sol->visit([&](const auto &v) { return double(v.slip(x)); });
+  return r;
+}
+inline double ray_state::pressure(double x) const {
+  return parts_.front().sol->visit([&](const auto &v) { return double(v.pressure(x)); });
+}
+inline double ray_state::traction(double x) const {
+  double r = 0;
+  for (const auto &p : parts_) r += p.coef * p.sol->visit([&](const auto &v) { return double(v.traction(x)); });
+  return r;
+}
 
 struct request {
   int max_iterations = 100;

@@ -669,13 +669,14 @@ contains
     call hs_history_vertex_get(hist, 1, v1)
     call expect(v0%Q_over_fP == 0.6_c_double .and. v1%Q_over_fP == 0.2_c_double .and. v1%cycle == 0, &
                 'history: vertex loads')
-    call expect_near(v0%b1, sqrt(0.4_c_double), 5e-5_c_double * sqrt(0.4_c_double), 'history: loaded stick zone')
+    ! a path along one ray: superposition of the closed forms (no march), to rounding
+    call expect_near(v0%b1, sqrt(0.4_c_double), 4 * epsilon(c), 'history: loaded stick zone')
     c = sqrt(1 - 0.4_c_double / 2)
-    call expect_near(v1%b1, c, 1e-5_c_double * c, 'history: unloaded stick zone b1')
-    call expect_near(v1%b2, c, 1e-5_c_double * c, 'history: unloaded stick zone b2')
+    call expect_near(v1%b1, c, 4 * epsilon(c), 'history: unloaded stick zone b1')
+    call expect_near(v1%b2, c, 4 * epsilon(c), 'history: unloaded stick zone b2')
     call expect(v0%slip_dir1 == 1 .and. v0%slip_dir2 == 1 .and. v1%slip_dir1 == -1 .and. v1%slip_dir2 == -1, &
                 'history: slip directions reverse on unloading')
-    call expect(v1%steps > v0%steps .and. v0%steps > 0 .and. v1%energy1 > 0, 'history: steps and energy')
+    call expect(v1%steps == 0 .and. v0%steps == 0 .and. v1%energy1 > 0, 'history: no steps, energy')
     x = [0.0_c_double, 0.95_c_double]
     call hs_history_eval(hist, 1, HS_FIELD_TRACTION, 2, x, q, ierr)
     call expect_code(ierr, HS_OK, 'history: traction')
@@ -684,8 +685,9 @@ contains
     call hs_history_eval(hist, 1, HS_FIELD_SLIP, 2, x, h, ierr)
     call expect(ierr == HS_OK .and. h(1) == 0 .and. h(2) > 0, 'history: locked-in slip')
     ! issue 15: the state as a solution handle. By Ciavarella-Jager its stresses are
-    ! S(0.6) - 2 S(0.2) + 2 S(0) of monotonic solutions (closed forms); the march is good
-    ! to ~1e-8 f p0 away from the stick ends (tolerance 2e-7)
+    ! S(0.6) - 2 S(0.2) + 2 S(0) of monotonic solutions (closed forms); a path along one
+    ! ray is that superposition (the march, compared in tests/test_history.cpp, is good to
+    ! ~1e-8 f p0): rounding of the sums only
     call hs_history_state(hist, 1, st, ierr)
     call expect_code(ierr, HS_OK, 'history state')
     call hs_solve(scene_qs(0.6_c_double, 0.0_c_double), m6)
@@ -698,7 +700,7 @@ contains
     call hs_eval_stress(m6, 1, 4, px, py, s6)
     call hs_eval_stress(m2, 1, 4, px, py, s2)
     call hs_eval_stress(m0, 1, 4, px, py, s0)
-    call expect(maxval(abs(s - (s6 - 2 * s2 + 2 * s0))) < 2e-7_c_double, 'history state: Ciavarella-Jager stresses')
+    call expect(maxval(abs(s - (s6 - 2 * s2 + 2 * s0))) < 1e-13_c_double, 'history state: Ciavarella-Jager stresses')
     call hs_eval_traction(st, 2, x, q2, ierr)
     call hs_history_eval(hist, 1, HS_FIELD_TRACTION, 2, x, q, ierr)
     call expect(all(q2 == q), 'history state: traction = hs_history_eval')

@@ -97,7 +97,12 @@ template <class T> bool newton(const pressure_model<T> &pm, const T &q, const T 
   general_problem<T> p(pm, q, s, n, tol_step);
   const newton_outcome o = damped_newton(p, st, r0 ? *r0 : p.residual(st), max_it);
   iterations += o.iterations;
-  return o.converged;
+  // a state without a finite ln e (a width that underflowed with no logarithm
+  // carried) is not a solution, even where the kernel's singular-Jacobian rule
+  // (newton.hpp) accepts it: the residual no longer depends on the width there
+  // (flat punch, sigma/fp0 = 2000: d1 was 0.762 for 0.643)
+  using std::isfinite;
+  return o.converged && bool(isfinite(st.lw()));
 }
 
 // Start at s = 0: the restriction of F2 to b1 = b2 = 1 - d (e = 2 - 2d),

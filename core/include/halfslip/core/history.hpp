@@ -508,12 +508,32 @@ template <class T> class history {
     return r;
   }
   // Loads after nsteps steps.
+  // The loads after the first nsteps steps. A step's (q0, s0) is the start of
+  // its segment and (dq, ds) its own increment (len of the segment), so the
+  // load is the segment's start plus the steps of the segment so far; at a
+  // vertex, the vertex's loads exactly. (Before: q0 + dq of the last step, the
+  // load at the segment's start plus one step, which gave the stresses of a
+  // history state the bulk tension of the vertex before; found by the
+  // superposition of issue 14, tests/test_ray_history.cpp.)
   void loads_after(size_t nsteps, T &q, T &s) const {
     q = s = T(0);
     if (nsteps == 0) return;
-    const history_step<T> &st = steps_[nsteps - 1];
-    q = st.q0 + st.dq;
-    s = st.s0 + st.ds;
+    for (const auto &v : vertices_)
+      if (v.step_end == nsteps) {
+        q = v.q;
+        s = v.s;
+        return;
+      }
+    const history_step<T> &last = steps_[nsteps - 1];
+    T dq = 0, ds = 0;
+    for (size_t k = nsteps; k-- > 0;) {
+      const history_step<T> &st = steps_[k];
+      if (!(st.q0 == last.q0 && st.s0 == last.s0)) break;
+      dq += st.dq;
+      ds += st.ds;
+    }
+    q = last.q0 + dq;
+    s = last.s0 + ds;
   }
   // The points of the stick zone after nsteps steps (and its ends) where that
   // state's traction may be non-smooth (issue 15: the breakpoints of the field

@@ -1,0 +1,289 @@
+// Issue 14: load paths along one ray through the origin by superposition
+// (core/ray_history.hpp, hs_history_* in the C ABI; docs/history.md). Checked
+// against the march (core/history.hpp, a different method: stuck-interval
+// traction rates integrated in load steps) and against closed forms.
+#include <doctest/doctest.h>
+#include <halfslip/halfslip.h>
+
+#include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "halfslip/core/hertz.hpp"
+#include "halfslip/core/history.hpp"
+#include "halfslip/core/numerics.hpp"
+#include "halfslip/core/ray_history.hpp"
+#include "testing.hpp"
+
+using namespace hs::core;
+
+namespace {
+
+using path_t = std::vector<std::pair<double, double>>;
+
+struct hist_handle {
+  hs_history *h = nullptr;
+  ~hist_handle() { hs_history_free(h); }
+};
+
+// geometry: 0 Hertz, else the flat-rounded punch with b_f/a = 0.5; canonical units
+void new_history(hist_handle &hh, int geometry) {
+  hs_scene sc;
+  REQUIRE(hs_scene_default(&sc) == HS_OK);
+  sc.a = sc.p0 = sc.f = sc.E_star = 1;
+  if (geometry == 0) {
+    REQUIRE(hs_history_new(&sc, nullptr, nullptr, &hh.h) == HS_OK);
+    return;
+  }
+  hs_geometry g;
+  REQUIRE(hs_geometry_default(&g) == HS_OK);
+  g.kind = HS_GEOMETRY_FLAT_ROUNDED;
+  g.flat_over_a = 0.5;
+  REQUIRE(hs_history_new(&sc, &g, nullptr, &hh.h) == HS_OK);
+}
+
+void add(hist_handle &hh, const path_t &p) {
+  std::vector<double> q, s;
+  for (const auto &v : p) {
+    q.push_back(v.first);
+    s.push_back(v.second);
+  }
+  REQUIRE(hs_history_add_vertices(hh.h, p.size(), q.data(), s.data()) == HS_OK);
+}
+
+hs_history_vertex vertex(const hist_handle &hh, size_t i) {
+  hs_history_vertex v;
+  v.struct_size = sizeof v;
+  REQUIRE(hs_history_vertex_get(hh.h, i, &v) == HS_OK);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("ray histories: superposition against the march (Hertz both regimes, flat punch)") {
+  // tol: the march's accuracy in units of a (zones; traction and slip 10x, energies
+  // 20x relative to the largest). Passing a closed loop (Masing) the march is good to
+  // ~1e-6 only (docs/history.md: the end sweeps a region at the friction limit).
+  struct ray_case {
+    int geometry;
+    path_t path;
+    double tol;
+  };
+  const std::vector<ray_case> cases = {
+      // sigma = 0: unload, reload below the turning point, then past two of them (Masing wipe)
+      {0, {{0.6, 0}, {0.2, 0}, {0.5, 0}, {-0.3, 0}, {0.45, 0}, {0.7, 0}}, 5e-8},
+      // same sign, sigma = Q/2 (f p0 / fP units): reversal through zero, reload past the first turn
+      {0, {{0.5, 0.25}, {-0.3, -0.15}, {0.4, 0.2}, {0.6, 0.3}, {0.1, 0.05}}, 2e-6},
+      // opposite sign, sigma/fp0 = 3 Q/fP, below the recede point (Q/fP = 0.46)
+      // (the last vertex closes the loops at -0.4: Masing, 2e-6)
+      {0, {{0.4, 1.2}, {-0.2, -0.6}, {0.3, 0.9}, {-0.4, -1.2}}, 2e-6},
+      // flat-rounded punch
+      {1, {{0.5, 0.5}, {-0.4, -0.4}, {0.2, 0.2}}, 5e-8},
+  };
+  for (const auto &c : cases) {
+    CAPTURE(c.geometry);
+    CAPTURE(c.path.front().first);
+    hist_handle hh;
+    new_history(hh, c.geometry);
+    add(hh, c.path);
+    std::shared_ptr<const pressure_model<double>> pm;
+    if (c.geometry == 0) pm = std::make_shared<hertz_pressure<double>>();
+    else pm = std::make_shared<flat_rounded_pressure<double>>(0.5);
+    history_options<double> ho;
+    ho.max_step = 1.0 / 32;
+    refined_history<double> march(pm, ho, 1e-9);
+    for (const auto &v : c.path) march.add_vertex(v.first, v.second);
+    const auto &mv = march.fine().vertices();
+    REQUIRE(mv.size() == c.path.size());
+    double emax = 0;
+    for (const auto &m : mv) emax = std::max(emax, std::max(std::abs(m.energy1), std::abs(m.energy2)));
+    const std::vector<double> xs = {-0.99, -0.9, -0.6, -0.2, 0.0, 0.3, 0.7, 0.93, 0.995};
+    for (size_t i = 0; i < c.path.size(); ++i) {
+      CAPTURE(i);
+      const auto v = vertex(hh, i);
+      CHECK(v.steps == 0);  // no march
+      CHECK(v.error_estimate < 1e-10);
+      // the march at rtol 1e-9 is good to ~1e-8 a (its own estimate: a few 1e-9)
+      CHECK(std::abs(v.b1 - mv[i].b1) <= c.tol);
+      CHECK(std::abs(v.b2 - mv[i].b2) <= c.tol);
+      if (v.b1 < 1 - 1e-6) CHECK(v.slip_dir1 == mv[i].dir1);
+      if (v.b2 < 1 - 1e-6) CHECK(v.slip_dir2 == mv[i].dir2);
+      CHECK(std::abs(v.energy1 - mv[i].energy1) <= 20 * c.tol * emax);
+      CHECK(std::abs(v.energy2 - mv[i].energy2) <= 20 * c.tol * emax);
+      std::vector<double> q(xs.size()), h(xs.size());
+      REQUIRE(hs_history_eval(hh.h, i, HS_FIELD_TRACTION, xs.size(), xs.data(), q.data()) == HS_OK);
+      REQUIRE(hs_history_eval(hh.h, i, HS_FIELD_SLIP, xs.size(), xs.data(), h.data()) == HS_OK);
+      for (size_t k = 0; k < xs.size(); ++k) {
+        CAPTURE(xs[k]);
+        CHECK(std::abs(q[k] - march.fine().traction(xs[k], mv[i].step_end)) <= 10 * c.tol);
+        CHECK(std::abs(h[k] - march.fine().slip(xs[k], mv[i].step_end)) <= 10 * c.tol);
+      }
+    }
+  }
+}
+
+TEST_CASE("ray histories: Hertz zones in closed form (Ciavarella-Jager, Masing), to rounding") {
+  // sigma = 0: on the virgin curve c = sqrt(1 - Q/fP); on the branch from a turning
+  // point Q_t, c = sqrt(1 - |Q - Q_t|/(2 fP)); past the previous turning point the
+  // older branch continues.
+  hist_handle hh;
+  new_history(hh, 0);
+  add(hh, {{0.6, 0}, {0.2, 0}, {0.5, 0}, {0.3, 0}, {0.55, 0}, {-0.1, 0}, {0.7, 0}});
+  const double expect[] = {std::sqrt(0.4),         std::sqrt(1 - 0.4 / 2), std::sqrt(1 - 0.3 / 2),
+                           std::sqrt(1 - 0.2 / 2),  // from 0.5
+                           std::sqrt(1 - 0.35 / 2),  // past 0.5: the branch from 0.2 again
+                           std::sqrt(1 - 0.7 / 2),   // past 0.2: the branch from 0.6
+                           std::sqrt(0.3)};          // past 0.6: the virgin curve
+  const int dir[] = {1, -1, 1, -1, 1, -1, 1};
+  for (int i = 0; i < 7; ++i) {
+    CAPTURE(i);
+    const auto v = vertex(hh, i);
+    CHECK(std::abs(v.b1 - expect[i]) <= 4 * eps<double>());
+    CHECK(std::abs(v.b2 - expect[i]) <= 4 * eps<double>());
+    CHECK(v.slip_dir1 == dir[i]);
+    CHECK(v.slip_dir2 == dir[i]);
+  }
+  // a closed loop dissipates the same whatever the path inside it: the energy from
+  // 0.6 down to -0.1 and back up to 0.6 (segments 6 and 7 up to 0.6) is 2 x 2 E(0.35)
+  hs_solution *m35 = nullptr, *m6 = nullptr, *m7 = nullptr;
+  hs_scene sc;
+  hs_scene_default(&sc);
+  sc.a = sc.p0 = sc.f = sc.E_star = 1;
+  sc.sigma_over_fp0 = 0;
+  sc.Q_over_fP = 0.35;
+  REQUIRE(hs_solve(&sc, nullptr, &m35) == HS_OK);
+  sc.Q_over_fP = 0.6;
+  REQUIRE(hs_solve(&sc, nullptr, &m6) == HS_OK);
+  sc.Q_over_fP = 0.7;
+  REQUIRE(hs_solve(&sc, nullptr, &m7) == HS_OK);
+  double E35[2], E6[2], E7[2];
+  REQUIRE(hs_solution_energy(m35, E35) == HS_OK);
+  REQUIRE(hs_solution_energy(m6, E6) == HS_OK);
+  REQUIRE(hs_solution_energy(m7, E7) == HS_OK);
+  const auto v6 = vertex(hh, 6);
+  // the last segment: from -0.1 up the branch of 0.6 to 0.6 (2 (E(0.35) - 0)), then virgin 0.6 -> 0.7
+  CHECK(std::abs(v6.energy1 - (2 * E35[0] + E7[0] - E6[0])) <= 64 * eps<double>() * E7[0]);
+  hs_solution_free(m35);
+  hs_solution_free(m6);
+  hs_solution_free(m7);
+}
+
+TEST_CASE("ray histories: a vertex off the ray, periodic loading or a receding ramp use the march") {
+  SUBCASE("off the ray: the path so far is replayed in the march") {
+    hist_handle hh;
+    new_history(hh, 0);
+    add(hh, {{0.6, 0}, {0.2, 0}});
+    const auto before = vertex(hh, 1);
+    CHECK(before.steps == 0);
+    add(hh, {{0.2, 0.5}});
+    size_t n = 0;
+    REQUIRE(hs_history_vertex_count(hh.h, &n) == HS_OK);
+    CHECK(n == 3);
+    const auto after = vertex(hh, 1);
+    CHECK(after.steps > 0);
+    CHECK(std::abs(after.b1 - before.b1) <= 5e-8);
+    CHECK(vertex(hh, 2).steps > after.steps);
+  }
+  SUBCASE("the ray sigma/fp0 = 3 Q/fP recedes before Q/fP = 0.88: marched, zone 1 reversed") {
+    hist_handle hh;
+    new_history(hh, 0);
+    add(hh, {{0.88, 2.64}});
+    const auto v = vertex(hh, 0);
+    CHECK(v.steps > 0);
+    CHECK(v.slip_dir1 == 1);  // the monotonic solution says -1 (docs/history.md)
+    CHECK(std::abs(v.b1 - 0.9634) <= 2e-3);
+  }
+  SUBCASE("a ray below the recede point, then past it: marched from the start") {
+    hist_handle hh;
+    new_history(hh, 0);
+    add(hh, {{0.4, 1.2}, {-0.2, -0.6}});
+    CHECK(vertex(hh, 1).steps == 0);
+    add(hh, {{0.88, 2.64}});
+    CHECK(vertex(hh, 0).steps > 0);
+    CHECK(vertex(hh, 2).slip_dir1 == 1);
+  }
+  SUBCASE("errors leave the history as it was") {
+    hist_handle hh;
+    new_history(hh, 0);
+    add(hh, {{0.6, 0}});
+    const double q = 1.0, s = 0.0;
+    CHECK(hs_history_add_vertices(hh.h, 1, &q, &s) == HS_ERR_GROSS_SLIDING);
+    const double qn = std::nan(""), sn = 0;
+    CHECK(hs_history_add_vertices(hh.h, 1, &qn, &sn) == HS_ERR_NOT_FINITE);
+    size_t n = 0;
+    REQUIRE(hs_history_vertex_count(hh.h, &n) == HS_OK);
+    CHECK(n == 1);
+    CHECK(vertex(hh, 0).steps == 0);
+  }
+}
+
+TEST_CASE("ray histories: the state's stresses against the march's state") {
+  // same sign ray, sigma/fp0 = Q/(2 fP): unload through zero. The march's state
+  // (forced by a vertex off the ray, which replays the path) agrees to its accuracy.
+  hist_handle ray, marched;
+  new_history(ray, 0);
+  new_history(marched, 0);
+  add(ray, {{0.5, 0.25}, {-0.3, -0.15}});
+  add(marched, {{0.5, 0.25}, {-0.3, -0.15}, {-0.3, 0.4}});
+  hs_solution *a = nullptr, *b = nullptr;
+  REQUIRE(hs_history_state(ray.h, 1, &a) == HS_OK);
+  REQUIRE(hs_history_state(marched.h, 1, &b) == HS_OK);
+  const std::vector<double> x = {-1.4, -0.95, -0.5, 0.1, 0.45, 0.8, 1.2}, y = {0, 0.05, 0.2, 0, 0.3, 0.02, 0};
+  std::vector<double> sa(3 * x.size()), sb(3 * x.size());
+  REQUIRE(hs_eval_stress(a, 1, 0.0, x.size(), x.data(), y.data(), sa.data()) == HS_OK);
+  REQUIRE(hs_eval_stress(b, 1, 0.0, x.size(), x.data(), y.data(), sb.data()) == HS_OK);
+  for (size_t k = 0; k < sa.size(); ++k) {
+    CAPTURE(k);
+    CHECK(std::abs(sa[k] - sb[k]) <= 2e-7);
+  }
+  std::vector<double> ta(x.size()), tb(x.size());
+  const std::vector<double> xs = {-0.97, -0.5, 0.0, 0.6, 0.98};
+  REQUIRE(hs_eval_surface_stress(a, 1, 0.0, xs.size(), xs.data(), ta.data()) == HS_OK);
+  REQUIRE(hs_eval_surface_stress(b, 1, 0.0, xs.size(), xs.data(), tb.data()) == HS_OK);
+  for (size_t k = 0; k < xs.size(); ++k) {
+    CAPTURE(xs[k]);
+    CHECK(std::abs(ta[k] - tb[k]) <= 2e-7);
+  }
+  hs_summary s;
+  s.struct_size = sizeof s;
+  REQUIRE(hs_solution_summary(a, &s) == HS_OK);
+  CHECK(s.regime == HS_REGIME_SAME_SIGN);
+  CHECK(s.slip_dir1 == -1);
+  double E[2];
+  CHECK(hs_solution_energy(a, E) == HS_ERR_NOT_APPLICABLE);
+  hs_solution_free(a);
+  hs_solution_free(b);
+}
+
+TEST_CASE("ray histories: the same templates in long double (closed forms to its rounding)") {
+  using L = long double;
+  ray_path<L> path;
+  const std::vector<std::pair<L, L>> p = {{0.6L, 0}, {0.2L, 0}, {0.5L, 0}, {0.3L, 0}, {0.55L, 0}, {-0.1L, 0}, {0.7L, 0}};
+  struct mono_values {
+    L b1, b2, E1, E2;
+    int dir1, dir2;
+  };
+  auto mono = [](const ray_load<L> &l) {
+    hertz_scene<L> sc;
+    sc.q = l.q;
+    sc.s = l.s;
+    const auto m = solve_hertz<L>(sc);
+    return mono_values{m.b1(), m.b2(), m.energy(1), m.energy(2), m.dir1(), m.dir2()};
+  };
+  const L expect[] = {std::sqrt(0.4L),          std::sqrt(1 - 0.4L / 2), std::sqrt(1 - 0.3L / 2), std::sqrt(1 - 0.2L / 2),
+                      std::sqrt(1 - 0.35L / 2), std::sqrt(1 - 0.7L / 2), std::sqrt(0.3L)};
+  ray_vertex_result<L> prev;
+  for (size_t i = 0; i < p.size(); ++i) {
+    CAPTURE(i);
+    REQUIRE(path.add(p[i].first, p[i].second));
+    const auto r = ray_evaluate<L>(path.vertices().back(), mono, L(1), i ? &prev : nullptr);
+    CHECK(std::abs(r.b1 - expect[i]) <= 8 * eps<L>());
+    CHECK(r.energy1 > 0);
+    prev = r;
+  }
+  CHECK_FALSE(path.add(0.3L, 0.3L));  // off the ray
+  // at 0.7, past every turning point: the virgin curve alone
+  CHECK(path.vertices().back().terms.size() == 1);
+  CHECK(path.vertices().back().terms[0].coef == 1);
+}
