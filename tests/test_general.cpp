@@ -717,3 +717,82 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
     }
   }
 }
+
+// ---------------------------------------------------------------------------
+// Issue 16: B_x, the slip and the zone energies from the zone expansions
+// (core/general_expansion.hpp) against the paths they replace, kept callable:
+// the adaptive Cauchy integrals at the point (bhat_direct; tanh-sinh to
+// eps^(2/3), far below in practice), the nested adaptive slip (hhat_adaptive,
+// a different method) and the fixed-rule energies (energy_hat_fixed, orders
+// doubled until two agree). Flat punch (kinks inside zones in the
+// opposite-sign scenes), power law, a callback Hertz pressure and 41 samples;
+// both regimes, a mirrored scene (sigma < 0), a negated one (Q < 0) and a
+// large sigma (stick width 1e-10 a: ~16 panels per zone). Points from 1e-9 of
+// the zone length next to the stick edge to 1e-9 next to the contact edge,
+// and next to the kinks. The MPFR comparison is in test_reference.cpp.
+// Bounds: B_x within 1e-13 (|B_x| + R max|K|), dominated by bhat_direct's own
+// error next to the stick edge (observed); h within 1e-12 |h| of the nested
+// adaptive reference (its eps^(2/3) termination, as above); energies within
+// 64 eps of the fixed rules (both converged to ~eps; observed <= 8 eps).
+TEST_CASE("issue 16: expansions of B_x against the fixed-rule and adaptive paths") {
+  core::flat_rounded_pressure<double> f5(0.5);
+  core::power_law_pressure<double> p15(1.5), p3(3);
+  core::callback_pressure<double> cb([](const double &x) { return std::sqrt((1 - x) * (1 + x)); }, 1.0);
+  std::vector<double> xs, ps;
+  for (int i = 0; i <= 40; ++i) {
+    const double x = -std::cos(M_PI * i / 40);
+    xs.push_back(i == 0 ? -1.0 : (i == 40 ? 1.0 : x));
+    ps.push_back(i == 0 || i == 40 ? 0.0 : p3.p(x));
+  }
+  core::sampled_pressure<double> sp(xs, ps, 1.0);
+  struct sc {
+    const core::pressure_model<double> *pm;
+    const char *name;
+    double q, s;
+  };
+  const std::vector<sc> scenes{{&f5, "flat 0.5", 0.3, 0.0},   {&f5, "flat 0.5", 0.5, 3.0},
+                               {&f5, "flat 0.5", 0.6, -0.5},  {&f5, "flat 0.5", -0.4, 0.3},
+                               {&f5, "flat 0.5", 0.4, 50.0},  {&p15, "power 1.5", 0.6, 0.18},
+                               {&p3, "power 3", 0.2, 2.0},    {&cb, "callback Hertz", 0.5, 1.0},
+                               {&sp, "41 samples", 0.3, 0.5}};
+  double worst_B = 0, worst_h = 0, worst_E = 0;
+  for (const auto &c : scenes) {
+    CAPTURE(c.name);
+    CAPTURE(c.q);
+    CAPTURE(c.s);
+    const auto g = gsolve<double>(*c.pm, c.q, c.s);
+    const auto *x = g.expansion();
+    REQUIRE(x != nullptr);
+    for (int z : {+1, -1}) {
+      CAPTURE(z);
+      const double d = g.zone_length(z);
+      if (!(d > 0)) continue;
+      const auto &zx = x->at(z);
+      double kmax = 0;
+      for (const auto &pn : zx.panels)
+        for (int i = 0; i < 16; ++i) kmax = std::max(kmax, std::abs(zx.K(pn.lo + (pn.hi - pn.lo) * (i + 0.5) / 16)));
+      std::vector<double> dls;
+      for (double f : {1e-9, 1e-4, 0.02, 0.3, 0.5, 0.9, 1 - 1e-4, 1 - 1e-9}) dls.push_back(f * d);
+      for (const double k : g.kink_distances(z))
+        for (double f : {1 - 1e-6, 1 + 1e-6}) dls.push_back(f * k);
+      for (const double dl : dls) {
+        CAPTURE(dl / d);
+        const double B = g.bhat(z, dl), Bd = g.bhat_direct(z, dl);
+        const double R = std::sqrt(dl * (g.width + dl));
+        const double eB = std::abs(B - Bd) / (std::abs(Bd) + R * kmax);
+        CHECK(eB <= 1e-13);
+        worst_B = std::max(worst_B, eB);
+        const double h = g.hhat(z, dl), ha = g.hhat_adaptive(z, dl);
+        const double eh = std::abs(h - ha) / std::abs(ha);
+        CHECK(eh <= 1e-12);
+        worst_h = std::max(worst_h, eh);
+      }
+      const double E = g.energy_hat(z), Ef = g.energy_hat_fixed(z);
+      const double eE = std::abs(E - Ef) / (Ef * EPS);
+      CHECK(eE <= 64);
+      worst_E = std::max(worst_E, eE);
+    }
+  }
+  MESSAGE("expansions vs the old paths: B_x " << worst_B << " of (|B| + R max|K|), h " << worst_h
+                                              << " relative, energies " << worst_E << " eps");
+}

@@ -686,3 +686,97 @@ TEST_CASE("issue 16: opposite-sign solve with the stored start against the refer
   CHECK(worst_easy[0] <= 1);
   CHECK(worst_easy[1] <= 1);
 }
+
+// Issue 16: B_x and the slip on the general path from the zone expansions
+// (core/general_expansion.hpp: Legendre series of K = B_x/R per panel, R the
+// sqrt end behaviour at the stick edge) against the reference backend at 40
+// digits (the 50-digit tier: adaptive tanh-sinh Cauchy integrals at the
+// point, a different method), at points of both zones from 1e-9 of the zone
+// length next to the stick edge to 1e-9 next to the contact edge, and on
+// both sides of a pressure kink inside a zone (flat punch b_f/a = 0.5, zone L
+// of the opposite-sign scenes), in both regimes, for the flat punch and a
+// power law. The double solution is given the reference's state rounded to
+// double and the points are canonical distances dl from the stick edge (the
+// reference's x = b1 + dl exactly): what is judged is the evaluation. The
+// estimate (general_expansion.hpp): K is interpolated from node values whose
+// rounding is ~eps |K| / theta next to the stick edge (the principal-value
+// quotients), truncated at 32 eps max|K|; the state's rounding (half an ulp
+// of d, e) moves K by ~eps |K|. Bound: 64 eps of |B_x| plus 64 eps R max|K|
+// (the truncation and node rounding carried to any point); the slip
+// h = int B_x is judged relative to |h| itself (the rule next to the stick
+// edge integrates the interpolant from 0: no cancellation).
+TEST_CASE("issue 16: general-path B_x and slip from the expansions against the reference at 40 digits") {
+  struct scene {
+    geom g;
+    const char *q, *s;
+  };
+  const std::vector<scene> scenes{{{ref::geometry_flat_rounded, "0.5"}, "0.3", "0"},
+                                  {{ref::geometry_flat_rounded, "0.5"}, "0.5", "3"},
+                                  {{ref::geometry_flat_rounded, "0.5"}, "0.2", "2"},
+                                  {{ref::geometry_power_law, "3"}, "0.6", "0.3"},
+                                  {{ref::geometry_power_law, "1.5"}, "0.4", "1.5"}};
+  double worst_B = 0, worst_h = 0;
+  int regimes[3] = {0, 0, 0}, kinks = 0;
+  for (const auto &c : scenes) {
+    const std::string what = std::string(c.g.kind == ref::geometry_flat_rounded ? "flat b_f/a = " : "power n = ") +
+                             c.g.param + ", Q/fP = " + c.q + ", sigma/fp0 = " + c.s;
+    CAPTURE(what);
+    const auto pm = double_model(c.g);
+    core::general_scene<double> sc;
+    sc.q = std::strtod(c.q, nullptr);
+    sc.s = std::strtod(c.s, nullptr);
+    auto dsol = core::solve_general(*pm, sc);
+    const auto rsol = ref::solve_at(50, general_text(c.g, c.q, c.s), 1000);
+    REQUIRE(rsol->regime() == int(dsol.reg));
+    ++regimes[rsol->regime()];
+    REQUIRE(!dsol.mirror);
+    REQUIRE(!dsol.negate);
+    const mp80 rb1(rsol->value(ref::quantity::b1, 45)), rb2(rsol->value(ref::quantity::b2, 45));
+    const mp80 rd1(rsol->value(ref::quantity::d1, 45)), rd2(rsol->value(ref::quantity::d2, 45));
+    dsol.delta1 = double(rd1);
+    dsol.delta2 = double(rd2);
+    dsol.beta1 = double(rb1);
+    dsol.beta2 = double(rb2);
+    dsol.width = double(rb1 + rb2);
+    dsol.log_width = std::log(dsol.width);
+    const auto *x = dsol.expansion();
+    REQUIRE(x != nullptr);  // the fast path is what is judged
+    for (int z : {+1, -1}) {
+      const double d = dsol.zone_length(z);
+      const auto &zx = x->at(z);
+      double kmax = 0;
+      for (std::size_t P = 0; P < zx.panels.size(); ++P)
+        for (int i = 0; i < 64; ++i) {
+          const double th = zx.panels[P].lo + (zx.panels[P].hi - zx.panels[P].lo) * (i + 0.5) / 64;
+          kmax = std::max(kmax, std::abs(zx.K(th)));
+        }
+      std::vector<double> dls;
+      for (double f : {1e-9, 1e-4, 0.02, 0.3, 0.5, 0.9, 1 - 1e-4, 1 - 1e-9}) dls.push_back(f * d);
+      for (const double k : dsol.kink_distances(z)) {
+        ++kinks;
+        for (double f : {1 - 1e-6, 1 + 1e-6}) dls.push_back(f * k);
+      }
+      for (const double dl : dls) {
+        CAPTURE(z);
+        CAPTURE(dl / d);
+        const mp80 xr = z > 0 ? mp80(rb1 + dl) : mp80(-(rb2 + dl));
+        const std::string xs = xr.str(45, std::ios_base::scientific);
+        const std::string Br = rsol->eval(ref::point_eval::Bx, xs, 40);
+        const std::string hr = rsol->eval(ref::point_eval::slip, xs, 40);
+        const double B = dsol.bhat(z, dl), h = dsol.hhat(z, dl);
+        const double R = std::sqrt(dl * (dsol.width + dl));
+        const double eB = err_eps(B, Br, std::abs(to_double(Br)) + R * kmax);
+        const double eh = err_eps(h, hr, std::abs(to_double(hr)));
+        INFO("B " << B << " ref " << Br << " err " << eB << "; h " << h << " ref " << hr << " err " << eh);
+        CHECK(eB <= 64);
+        CHECK(eh <= 64);
+        worst_B = std::max(worst_B, eB);
+        worst_h = std::max(worst_h, eh);
+      }
+    }
+  }
+  MESSAGE("general expansions: max error in eps of (|B_x| + R max|K|) " << worst_B << ", of |h| " << worst_h);
+  CHECK(regimes[1] >= 2);
+  CHECK(regimes[2] >= 2);
+  CHECK(kinks >= 1);
+}

@@ -355,17 +355,14 @@ template <class T> class general_solution : public canonical_solution<general_so
   // G: the high-order rule on the graded panels of zone z, or null).
   std::vector<T> hgrad_nodes(int z, const gdetail::zone_nodes<T> &O, const gdetail::zone_nodes<T> &IR,
                              const gdetail::zone_nodes<T> &IL, std::size_t count,
-                             const gdetail::zone_nodes<T> *G = nullptr, bool with_R = true,
-                             std::vector<T> *err = nullptr) const {
-    using std::abs;
+                             const gdetail::zone_nodes<T> *G = nullptr) const {
     using std::sqrt;
     const T e = width;
     std::vector<T> g(count, T(0));
-    if (err) err->assign(count, T(0));
     for (std::size_t j = 0; j < count; ++j) {
       const T sj = O.s2[j], cj = O.c2[j];
       const T u = O.d * sj;
-      T br = 0, ab = 0;  // ab: sum of |terms| (with err: the rounding bound)
+      T br = 0;
       for (int Z : {+1, -1}) {
         const int dir = Z > 0 ? dirR : dirL;
         const auto &I = Z > 0 ? IR : IL;
@@ -381,10 +378,7 @@ template <class T> class general_solution : public canonical_solution<general_so
             const T den = (I.s2[i] + sj < 1) ? I.s2[i] - sj : cj - I.c2[i];
             // den = 0 only where both nodes have merged into a graded panel
             // end in rounding (high orders): weights there are negligible
-            if (den != 0) {
-              sum += I.w[i] * (I.H[i] - Hj) / den;
-              if (err) ab += abs(I.w[i] * (abs(I.H[i]) + abs(Hj)) / den) / I.d;
-            }
+            if (den != 0) sum += I.w[i] * (I.H[i] - Hj) / den;
           }
           if (hi) {
             for (std::size_t i = 0; i < G->s2.size(); ++i) {
@@ -397,14 +391,11 @@ template <class T> class general_solution : public canonical_solution<general_so
           // |t - xi| = e + u + d_Z sin^2 theta
           const T base = e + u;
           for (std::size_t i = 0; i < n; ++i) sum += I.w[i] * I.H[i] / (base + I.d * I.s2[i]);
-          if (err) ab += abs(sum);
         }
         // C_Z = Z sum; br = dirR C_R - dirL C_L
         br += T(dir) * sum;
       }
-      // (without R: K = -(2/pi) br, the expansion's smooth factor)
-      g[j] = with_R ? T(-2 * sqrt(u * (e + u)) * br / pi<T>()) : T(-2 * br / pi<T>());
-      if (err) (*err)[j] = 4 * eps<T>() * ab / pi<T>() * (with_R ? T(sqrt(u * (e + u))) : T(1));
+      g[j] = -2 * sqrt(u * (e + u)) * br / pi<T>();
     }
     return g;
   }
@@ -653,9 +644,13 @@ template <class T> class general_solution : public canonical_solution<general_so
   std::shared_ptr<const gdetail::general_expansion<T>> make_expansion(int M0 = 0) const {
     using std::max;
     // from the smallest power of two >= twice the digits of T (32 in double:
-    // order 16 never passed on the benchmark scenes)
-    if (M0 <= 0)
+    // order 16 never passed on the benchmark scenes), and at least the order
+    // at which the solver validated the zone integrals (the inner rule, M + 1,
+    // integrates the same densities)
+    if (M0 <= 0) {
       for (M0 = 16; M0 < 2 * std::numeric_limits<T>::digits10;) M0 *= 2;
+      while (M0 < order) M0 *= 2;
+    }
     if (graded_inner_order(M0) > 0 || pm->knots() || point_stick() || reg == regime::stuck) return nullptr;
     auto x = std::make_shared<gdetail::general_expansion<T>>();
     const T tol = max(T(32 * eps<T>()), T(rtol / 64));
@@ -672,8 +667,8 @@ template <class T> class general_solution : public canonical_solution<general_so
           Mi = M;
         }
         const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M);
-        std::vector<T> err;
-        const std::vector<T> K = hgrad_nodes(z, O, IR, IL, O.s2.size(), nullptr, false, &err);
+        std::vector<T> K, err;
+        gdetail::expansion_k_nodes<T>(z, O, IR, IL, dirR, dirL, width, K, err);
         auto &zx = x->zone[z > 0 ? 0 : 1];
         gdetail::fill_zone_expansion<T>(zx, O, K, err, width, tol);
         if (zx.tail <= tol) {
