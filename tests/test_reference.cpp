@@ -692,19 +692,18 @@ TEST_CASE("issue 16: opposite-sign solve with the stored start against the refer
 // sqrt end behaviour at the stick edge) against the reference backend at 40
 // digits (the 50-digit tier: adaptive tanh-sinh Cauchy integrals at the
 // point, a different method), at points of both zones from 1e-9 of the zone
-// length next to the stick edge to 1e-9 next to the contact edge, and on
-// both sides of a pressure kink inside a zone (flat punch b_f/a = 0.5, zone L
-// of the opposite-sign scenes), in both regimes, for the flat punch and a
-// power law. The double solution is given the reference's state rounded to
+// length next to the stick edge to 1e-9 next to the contact edge, and 1e-6 on
+// either side of a pressure kink inside a zone (flat punch b_f/a = 0.5, zone
+// L of the opposite-sign scene), in both regimes, for the flat punch and two
+// power laws. The double solution is given the reference's state rounded to
 // double and the points are canonical distances dl from the stick edge (the
-// reference's x = b1 + dl exactly): what is judged is the evaluation. The
-// estimate (general_expansion.hpp): K is interpolated from node values whose
-// rounding is ~eps |K| / theta next to the stick edge (the principal-value
-// quotients), truncated at 32 eps max|K|; the state's rounding (half an ulp
-// of d, e) moves K by ~eps |K|. Bound: 64 eps of |B_x| plus 64 eps R max|K|
-// (the truncation and node rounding carried to any point); the slip
-// h = int B_x is judged relative to |h| itself (the rule next to the stick
-// edge integrates the interpolant from 0: no cancellation).
+// reference's x = b1 + dl exactly): what is judged is the evaluation.
+// Bounds from the expansion's estimate (zone_expansion::K_error: the node
+// values' rounding carried by the interpolant, ~eps |K| / theta_1 next to the
+// stick edge, theta_1 ~ L/M^2 the first node, and the truncation):
+// |dB| <= 2 R K_error + 32 eps |B| (the state's half-ulp rounding moves K by
+// ~eps |K|); |dh| <= 2 dl R K_error + 32 eps |h|. Measured (fractions of the
+// bound) in the MESSAGE.
 TEST_CASE("issue 16: general-path B_x and slip from the expansions against the reference at 40 digits") {
   struct scene {
     geom g;
@@ -715,8 +714,8 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
                                   {{ref::geometry_flat_rounded, "0.5"}, "0.2", "2"},
                                   {{ref::geometry_power_law, "3"}, "0.6", "0.3"},
                                   {{ref::geometry_power_law, "1.5"}, "0.4", "1.5"}};
-  double worst_B = 0, worst_h = 0;
-  int regimes[3] = {0, 0, 0}, kinks = 0;
+  double worst_B = 0, worst_h = 0, worst_rel = 0;
+  int regimes[3] = {0, 0, 0}, kinks = 0, no_slip = 0;
   for (const auto &c : scenes) {
     const std::string what = std::string(c.g.kind == ref::geometry_flat_rounded ? "flat b_f/a = " : "power n = ") +
                              c.g.param + ", Q/fP = " + c.q + ", sigma/fp0 = " + c.s;
@@ -739,17 +738,10 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
     dsol.beta2 = double(rb2);
     dsol.width = double(rb1 + rb2);
     dsol.log_width = std::log(dsol.width);
-    const auto *x = dsol.expansion();
-    REQUIRE(x != nullptr);  // the fast path is what is judged
+    const auto *x = dsol.expansion();  // made now, from this state
+    REQUIRE(x != nullptr);             // the fast path is what is judged
     for (int z : {+1, -1}) {
       const double d = dsol.zone_length(z);
-      const auto &zx = x->at(z);
-      double kmax = 0;
-      for (std::size_t P = 0; P < zx.panels.size(); ++P)
-        for (int i = 0; i < 64; ++i) {
-          const double th = zx.panels[P].lo + (zx.panels[P].hi - zx.panels[P].lo) * (i + 0.5) / 64;
-          kmax = std::max(kmax, std::abs(zx.K(th)));
-        }
       std::vector<double> dls;
       for (double f : {1e-9, 1e-4, 0.02, 0.3, 0.5, 0.9, 1 - 1e-4, 1 - 1e-9}) dls.push_back(f * d);
       for (const double k : dsol.kink_distances(z)) {
@@ -762,21 +754,39 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
         const mp80 xr = z > 0 ? mp80(rb1 + dl) : mp80(-(rb2 + dl));
         const std::string xs = xr.str(45, std::ios_base::scientific);
         const std::string Br = rsol->eval(ref::point_eval::Bx, xs, 40);
-        const std::string hr = rsol->eval(ref::point_eval::slip, xs, 40);
+        // (the reference's slip is by fixed rules that cut their panels at the
+        // point: within 1e-6 of a kink no two orders agree at 50 digits; B_x
+        // alone is judged there)
+        std::string hr;
+        try {
+          hr = rsol->eval(ref::point_eval::slip, xs, 40);
+        } catch (const core::error &) {
+          hr.clear();
+        }
         const double B = dsol.bhat(z, dl), h = dsol.hhat(z, dl);
-        const double R = std::sqrt(dl * (dsol.width + dl));
-        const double eB = err_eps(B, Br, std::abs(to_double(Br)) + R * kmax);
-        const double eh = err_eps(h, hr, std::abs(to_double(hr)));
-        INFO("B " << B << " ref " << Br << " err " << eB << "; h " << h << " ref " << hr << " err " << eh);
-        CHECK(eB <= 64);
-        CHECK(eh <= 64);
+        const double R = std::sqrt(dl * (dsol.width + dl)), Ke = x->at(z).K_error(dsol.theta_of(z, dl));
+        const double dB = double(abs(mp80(B) - mp80(Br)));
+        const double eB = dB / (2 * R * Ke + 32 * 2.220446049250313e-16 * std::abs(to_double(Br)));
+        const double eh = hr.empty() ? 0.0
+                                     : double(abs(mp80(h) - mp80(hr))) /
+                                           (2 * dl * R * Ke + 32 * 2.220446049250313e-16 * std::abs(to_double(hr)));
+        if (hr.empty()) ++no_slip;
+        INFO("B " << B << " ref " << Br << " (" << eB << " of the bound); h " << h << " ref " << hr << " (" << eh
+                  << "); K_error " << Ke);
+        CHECK(eB <= 1);
+        CHECK(eh <= 1);
         worst_B = std::max(worst_B, eB);
         worst_h = std::max(worst_h, eh);
+        worst_rel = std::max(worst_rel, dB / std::abs(to_double(Br)));
       }
     }
   }
-  MESSAGE("general expansions: max error in eps of (|B_x| + R max|K|) " << worst_B << ", of |h| " << worst_h);
+  MESSAGE("general expansions against the reference: fraction of the bound B_x " << worst_B << ", h " << worst_h
+                                                                                << "; largest relative error of B_x "
+                                                                                << worst_rel << "; slip not judged at "
+                                                                                << no_slip << " points");
   CHECK(regimes[1] >= 2);
   CHECK(regimes[2] >= 2);
   CHECK(kinks >= 1);
+  CHECK(no_slip <= 2);  // the two points next to the kink at most
 }

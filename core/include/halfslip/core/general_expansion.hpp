@@ -50,8 +50,27 @@ template <class T> struct zone_expansion {
   std::vector<T> kc;  // K: M Legendre coefficients per panel
   std::vector<T> ac;  // h - h_lo: M + 1 Legendre coefficients per panel
   std::vector<T> h0;  // h at each panel's lower end (panels.size() + 1 entries)
+  // per panel, the coefficients of K and of h - h_lo that count: the trailing
+  // ones whose magnitudes add up to at most 2^-60 max|K| on the panel (of h: 2^-60 h at
+  // the panel's lower end, or at its middle on the first panel) are left out
+  std::vector<int> kn, an;
   T energy{0};        // int_0^d p_hat h du (signed)
   T tail{0};  // largest last-two-coefficients of K over max(max|K|, floor/tol): <= tol passes (accuracy control)
+  T tol{0};                     // the tolerance of the accuracy control
+  std::vector<T> noise, kscale;  // per panel: the largest rounding bound of K at its nodes
+                                 // (expansion_k_nodes), and max |K| at them
+
+  // The error estimate of K at theta: the node values' rounding carried by
+  // the interpolant (8 times the panel's largest bound, for the interpolant's
+  // Lebesgue constant) plus the truncation (the last two coefficients below
+  // tol max|K| on the panel, the series converging geometrically: 4 tol max|K|). Next to the stick edge the first
+  // term dominates: the principal-value quotients over the nodes nearest
+  // theta = 0 lose eps |H| / theta_1 (theta_1 ~ L/M^2: ~1e-12 relative at
+  // M = 32; the adaptive path bhat_direct loses as much there).
+  T K_error(const T &th) const {
+    const std::size_t P = find(th);
+    return 8 * noise[P] + 4 * tol * kscale[P];
+  }
 
   std::vector<T> ra, rb;  // the recurrence's (2j - 1)/j and (j - 1)/j, j <= M
 
@@ -93,7 +112,7 @@ template <class T> struct zone_expansion {
   }
   T K(const T &th) const {
     const std::size_t P = find(th);
-    return legendre_sum(&kc[P * std::size_t(M)], M, rule_var(panels[P], th));
+    return legendre_sum(&kc[P * std::size_t(M)], kn[P], rule_var(panels[P], th));
   }
   // h at theta (u = d sin^2 theta, uc = d - u the distance to the contact edge)
   T h(const T &th) const {
@@ -103,21 +122,48 @@ template <class T> struct zone_expansion {
     const std::size_t P = find(th);
     const panel<T> &pn = panels[P];
     if (P == 0 && th < pn.lo + (pn.hi - pn.lo) / 2) {
-      // int_0^th R K 2 d sin cos dtheta by Gauss-Legendre of order M/2 (the
+      // int_0^th R K 2 d sin cos dtheta by Gauss-Legendre of order n = M/2 (the
       // integrand is the interpolant's on a half panel or less: M/2 nodes
-      // resolve it as M do the panel)
-      const auto rule = gauss_legendre<T>(std::max(8, M / 2));
-      T s = 0;
-      for (std::size_t i = 0; i < rule->x.size(); ++i) {
+      // resolve it as M do the panel); the n Legendre series summed together
+      // (independent recurrences, k outermost)
+      const int nk = kn[0];
+      const auto rule = gauss_legendre<T>(std::min(std::max(8, M / 2), std::max(8, (nk + 1) / 2 + 4)));
+      const std::size_t n = rule->x.size();
+      T buf[5 * 64];
+      std::vector<T> big;
+      T *r = buf, *p0 = buf + 64, *p1 = buf + 128, *k = buf + 192, *wt = buf + 256;
+      if (n > 64) {
+        big.resize(5 * n);
+        r = big.data();
+        p0 = r + n;
+        p1 = p0 + n;
+        k = p1 + n;
+        wt = k + n;
+      }
+      for (std::size_t i = 0; i < n; ++i) {
         const T t = th * (1 + rule->x[i]) / 2;
         const T sn = sin(t), cs = cos(t);
         const T u = d * sn * sn;
-        const T k = legendre_sum(&kc[0], M, rule_var(pn, t));
-        s += rule->w[i] * sqrt(u * (e + u)) * k * 2 * d * sn * cs;
+        wt[i] = rule->w[i] * sqrt(u * (e + u)) * 2 * d * sn * cs;
+        r[i] = rule_var(pn, t);
+        p0[i] = 1;
+        p1[i] = r[i];
+        k[i] = kc[0] + (nk > 1 ? kc[1] * r[i] : T(0));
       }
+      for (int j = 2; j < nk; ++j) {
+        const T a = ra[j], b = rb[j], c = kc[j];
+        for (std::size_t i = 0; i < n; ++i) {
+          const T p2 = a * r[i] * p1[i] - b * p0[i];
+          k[i] += c * p2;
+          p0[i] = p1[i];
+          p1[i] = p2;
+        }
+      }
+      T s = 0;
+      for (std::size_t i = 0; i < n; ++i) s += wt[i] * k[i];
       return s * th / 2;
     }
-    return h0[P] + legendre_sum(&ac[P * std::size_t(M + 1)], M + 1, rule_var(pn, th));
+    return h0[P] + legendre_sum(&ac[P * std::size_t(M + 1)], an[P], rule_var(pn, th));
   }
 };
 
@@ -206,8 +252,9 @@ void fill_zone_expansion(zone_expansion<T> &x, const zone_nodes<T> &O, const std
   x.kc.assign(np * std::size_t(M), T(0));
   x.ac.assign(np * std::size_t(M + 1), T(0));
   x.h0.assign(np + 1, T(0));
-  T kmax = 0;
-  for (const T &k : K) kmax = max(kmax, T(abs(k)));
+  x.noise.assign(np, T(0));
+  x.kscale.assign(np, T(0));
+  x.tol = tol;
   T tail = 0, E = 0;
   std::vector<T> q(M), c(M);
   for (std::size_t P = 0; P < np; ++P) {
@@ -238,8 +285,13 @@ void fill_zone_expansion(zone_expansion<T> &x, const zone_nodes<T> &O, const std
     // times the sum of the terms' magnitudes; the own zone's principal-value
     // quotients over near nodes dominate it: next to the stick edge ~ eps |K|/theta,
     // and next to a graded kink, where the nodes crowd)
-    T floor = 0;
-    for (int i = 0; i < M; ++i) floor = max(floor, err[b + i]);
+    T floor = 0, kmax = 0;
+    for (int i = 0; i < M; ++i) {
+      floor = max(floor, err[b + i]);
+      kmax = max(kmax, T(abs(K[b + i])));
+    }
+    x.noise[P] = floor;
+    x.kscale[P] = kmax;
     if (kmax > 0) tail = max(tail, T(max(abs(kc[M - 1]), abs(kc[M - 2])) / max(kmax, T(floor / tol))));
     // antiderivative from r = -1: c_0 (P_0 + P_1), c_k (P_{k+1} - P_{k-1})/(2k + 1)
     ac[0] += c[0];
@@ -265,6 +317,22 @@ void fill_zone_expansion(zone_expansion<T> &x, const zone_nodes<T> &O, const std
   }
   x.energy = E;
   x.tail = tail;
+  // the counting lengths (see kn, an)
+  using std::ldexp;
+  x.kn.assign(np, M);
+  x.an.assign(np, M + 1);
+  for (std::size_t P = 0; P < np; ++P) {
+    const T lk = ldexp(x.kscale[P], -60);
+    T dropped = 0;
+    int n = M;
+    while (n > 2 && (dropped += abs(x.kc[P * std::size_t(M) + n - 1])) <= lk) --n;
+    x.kn[P] = n;
+    const T lh = ldexp(P == 0 ? T(abs(x.h0[1]) / 8) : T(abs(x.h0[P])), -60);
+    dropped = 0;
+    n = M + 1;
+    while (n > 2 && (dropped += abs(x.ac[P * std::size_t(M + 1) + n - 1])) <= lh) --n;
+    x.an[P] = n;
+  }
 }
 
 }}}  // namespace hs::core::gdetail
