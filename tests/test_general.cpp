@@ -837,6 +837,17 @@ TEST_CASE("issue 16: expansions of B_x against the fixed-rule and adaptive paths
     }
   }
   CHECK(kinks >= 12);
+  // beyond the set-up's budget (general_solution::expansion_max_pairs: a power
+  // law of n = 200 at sigma/fp0 = 100, panels at 2^k/n from the edges and down
+  // to the stick width ~1e-40 a) there is no expansion and the old paths answer
+  {
+    core::power_law_pressure<double> p200(200);
+    const auto g = gsolve<double>(p200, 0.3, 100.0);
+    CHECK(g.expansion() == nullptr);
+    CHECK(g.energy_hat(-1) == g.energy_hat_fixed(-1));
+    const double dl = 0.5 * g.zone_length(-1);
+    CHECK(g.bhat(-1, dl) == g.bhat_direct(-1, dl));
+  }
   MESSAGE("expansions vs the long-double old paths (fraction of the bound): B_x " << worst_B << ", h " << worst_h
                                                                                   << "; energies " << worst_E
                                                                                   << " eps; h vs hhat_adaptive "

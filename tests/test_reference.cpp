@@ -694,8 +694,8 @@ TEST_CASE("issue 16: opposite-sign solve with the stored start against the refer
 // point, a different method), at points of both zones from 1e-9 of the zone
 // length next to the stick edge to 1e-9 next to the contact edge, and 1e-6 on
 // either side of a pressure kink inside a zone (flat punch b_f/a = 0.5, zone
-// L of the opposite-sign scene), in both regimes, for the flat punch and two
-// power laws. The double solution is given the reference's state rounded to
+// L of the opposite-sign scene), in both regimes, for the flat punch and a
+// power law. The double solution is given the reference's state rounded to
 // double and the points are canonical distances dl from the stick edge (the
 // reference's x = b1 + dl exactly): what is judged is the evaluation.
 // Bounds from the expansion's estimate (zone_expansion::K_error: the node
@@ -709,11 +709,10 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
     geom g;
     const char *q, *s;
   };
+  // (three scenes, five points a zone and two next to the kink)
   const std::vector<scene> scenes{{{ref::geometry_flat_rounded, "0.5"}, "0.3", "0"},
                                   {{ref::geometry_flat_rounded, "0.5"}, "0.5", "3"},
-                                  {{ref::geometry_flat_rounded, "0.5"}, "0.2", "2"},
-                                  {{ref::geometry_power_law, "3"}, "0.6", "0.3"},
-                                  {{ref::geometry_power_law, "1.5"}, "0.4", "1.5"}};
+                                  {{ref::geometry_power_law, "3"}, "0.6", "0.3"}};
   double worst_B = 0, worst_h = 0, worst_rel = 0;
   int regimes[3] = {0, 0, 0}, kinks = 0, no_slip = 0;
   for (const auto &c : scenes) {
@@ -743,7 +742,7 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
     for (int z : {+1, -1}) {
       const double d = dsol.zone_length(z);
       std::vector<double> dls;
-      for (double f : {1e-9, 1e-4, 0.02, 0.3, 0.5, 0.9, 1 - 1e-4, 1 - 1e-9}) dls.push_back(f * d);
+      for (double f : {1e-9, 0.02, 0.5, 0.9, 1 - 1e-9}) dls.push_back(f * d);
       for (const double k : dsol.kink_distances(z)) {
         ++kinks;
         for (double f : {1 - 1e-6, 1 + 1e-6}) dls.push_back(f * k);
@@ -755,13 +754,18 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
         const std::string xs = xr.str(45, std::ios_base::scientific);
         const std::string Br = rsol->eval(ref::point_eval::Bx, xs, 40);
         // (the reference's slip is by fixed rules that cut their panels at the
-        // point: within 1e-6 of a kink no two orders agree at 50 digits; B_x
-        // alone is judged there)
+        // point, seconds a point at 50 digits, and within 1e-6 of a kink no two
+        // orders agree: judged at 0.02 and 0.5 of each zone; h next to the
+        // stick edge and the kinks is judged against the long-double paths in
+        // test_general.cpp)
         std::string hr;
-        try {
-          hr = rsol->eval(ref::point_eval::slip, xs, 40);
-        } catch (const core::error &) {
-          hr.clear();
+        if (dl == 0.02 * d || dl == 0.5 * d) {  // (the slip at 50 digits costs seconds a point)
+          try {
+            hr = rsol->eval(ref::point_eval::slip, xs, 40);
+          } catch (const core::error &) {
+            hr.clear();
+          }
+          if (hr.empty()) ++no_slip;
         }
         const double B = dsol.bhat(z, dl), h = dsol.hhat(z, dl);
         const double R = std::sqrt(dl * (dsol.width + dl)), Ke = x->at(z).K_error(dsol.theta_of(z, dl));
@@ -770,7 +774,6 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
         const double eh = hr.empty() ? 0.0
                                      : double(abs(mp80(h) - mp80(hr))) /
                                            (2 * dl * R * Ke + 32 * 2.220446049250313e-16 * std::abs(to_double(hr)));
-        if (hr.empty()) ++no_slip;
         INFO("B " << B << " ref " << Br << " (" << eB << " of the bound); h " << h << " ref " << hr << " (" << eh
                   << "); K_error " << Ke);
         CHECK(eB <= 1);
@@ -783,10 +786,9 @@ TEST_CASE("issue 16: general-path B_x and slip from the expansions against the r
   }
   MESSAGE("general expansions against the reference: fraction of the bound B_x " << worst_B << ", h " << worst_h
                                                                                 << "; largest relative error of B_x "
-                                                                                << worst_rel << "; slip not judged at "
-                                                                                << no_slip << " points");
+                                                                                << worst_rel);
   CHECK(regimes[1] >= 2);
-  CHECK(regimes[2] >= 2);
+  CHECK(regimes[2] >= 1);
   CHECK(kinks >= 1);
-  CHECK(no_slip <= 2);  // the two points next to the kink at most
+  CHECK(no_slip == 0);
 }

@@ -57,6 +57,7 @@ template <class T> struct zone_expansion {
   T energy{0};        // int_0^d p_hat h du (signed)
   T tail{0};  // largest last-two-coefficients of K over max(max|K|, floor/tol): <= tol passes (accuracy control)
   T tol{0};                     // the tolerance of the accuracy control
+  int next_order = 0;           // where the control failed: the order to try next
   std::vector<T> noise, kscale;  // per panel: the largest rounding bound of K at its nodes
                                  // (expansion_k_nodes), and max |K| at them
 
@@ -240,6 +241,7 @@ void fill_zone_expansion(zone_expansion<T> &x, const zone_nodes<T> &O, const std
   const auto &rule = *cum->rule;
   const std::size_t np = O.panels.size();
   x.M = M;
+  x.next_order = 0;
   x.ra.assign(std::size_t(M + 1), T(0));
   x.rb.assign(std::size_t(M + 1), T(0));
   for (int j = 1; j <= M; ++j) {
@@ -292,7 +294,25 @@ void fill_zone_expansion(zone_expansion<T> &x, const zone_nodes<T> &O, const std
     }
     x.noise[P] = floor;
     x.kscale[P] = kmax;
-    if (kmax > 0) tail = max(tail, T(max(abs(kc[M - 1]), abs(kc[M - 2])) / max(kmax, T(floor / tol))));
+    if (kmax > 0) {
+      const T scale = max(kmax, T(floor / tol));
+      const T t = max(abs(kc[M - 1]), abs(kc[M - 2])) / scale;
+      tail = max(tail, t);
+      // the order this panel needs if its coefficients fall geometrically at
+      // the rate they fell from M/2 to M (a guess for the next try: the
+      // control above still decides)
+      if (t > tol) {
+        using std::ceil;
+        using std::log;
+        const T mid = max(abs(kc[M / 2]), abs(kc[M / 2 - 1])) / scale;
+        int need = 2 * M;
+        if (mid > 4 * t && t > 0) {
+          const T extra = T(M) / 2 * log(t / tol) / log(mid / t);
+          if (extra < T(M)) need = M + int(ceil(T(1.25) * extra));
+        }
+        x.next_order = std::max(x.next_order, std::min(2 * M, ((need + 7) / 8) * 8));
+      }
+    }
     // antiderivative from r = -1: c_0 (P_0 + P_1), c_k (P_{k+1} - P_{k-1})/(2k + 1)
     ac[0] += c[0];
     ac[1] += c[0];

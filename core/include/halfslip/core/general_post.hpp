@@ -626,6 +626,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     std::shared_ptr<const gdetail::general_expansion<T>> value;
   };
   std::shared_ptr<expansion_cache> expansion_;  // set by solve_general
+  static constexpr double expansion_max_pairs = 4e6;
   const gdetail::general_expansion<T> *expansion() const {
     if (!expansion_) return nullptr;
     expansion_cache &c = *expansion_;
@@ -638,9 +639,10 @@ template <class T> class general_solution : public canonical_solution<general_so
     });
     return c.value.get();
   }
-  // M from M0, doubled per zone until the last two Legendre coefficients of K
-  // on every panel are below tol max|K| (general_expansion.hpp); null if not
-  // within max_order.
+  // M from M0, raised per zone (to the order the coefficients' decay asks
+  // for, at most doubled) until the last two Legendre coefficients of K on
+  // every panel are below tol max|K| there (general_expansion.hpp); null if
+  // not within max_order.
   std::shared_ptr<const gdetail::general_expansion<T>> make_expansion(int M0 = 0) const {
     using std::max;
     // from the smallest power of two >= twice the digits of T (32 in double:
@@ -658,13 +660,17 @@ template <class T> class general_solution : public canonical_solution<general_so
       const T d = zone_length(z);
       if (!(d > 0)) continue;
       bool ok = false;
-      for (int M = M0; M <= max_order; M *= 2) {
+      for (int M = M0; M <= max_order;) {
         if (Mi != M) {
           IR = gdetail::make_zone_nodes<T>(*pm, +1, delta1, width, M + 1, nullptr, false, 0, true);
           IL = gdetail::make_zone_nodes<T>(*pm, -1, delta2, width, M + 1, nullptr, false, 0, true);
           Mi = M;
         }
         const auto O = gdetail::make_zone_nodes<T>(*pm, z, d, width, M, nullptr, false, 0, true);
+        // the set-up is quadratic in the nodes: beyond 4M node pairs (~5 ms;
+        // many panels: a stick zone far below a, a power law of large n, many
+        // samples) the paths above answer, each at its own cost, as before
+        if (double(O.s2.size()) * double(IR.s2.size() + IL.s2.size()) > expansion_max_pairs) return nullptr;
         std::vector<T> K, err;
         gdetail::expansion_k_nodes<T>(z, O, IR, IL, dirR, dirL, width, K, err);
         auto &zx = x->zone[z > 0 ? 0 : 1];
@@ -673,6 +679,8 @@ template <class T> class general_solution : public canonical_solution<general_so
           ok = true;
           break;
         }
+        // the order the coefficients' decay asks for (at least M + 8, at most 2M)
+        M = std::max(M + 8, std::min(2 * M, zx.next_order));
       }
       if (!ok) return nullptr;
     }
