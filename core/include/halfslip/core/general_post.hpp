@@ -620,7 +620,9 @@ template <class T> class general_solution : public canonical_solution<general_so
   // (thread-safe); shared by the copies of the solution. Null where it does
   // not apply (beyond long double, the knot path, the point-stick limit, stuck)
   // or where its accuracy control did not pass within max_order: the paths
-  // above answer then.
+  // above answer then. It is of the state (zones, width) at its first use: code
+  // that changes the state of a solution afterwards gives it a fresh cache
+  // (expansion_ = std::make_shared<expansion_cache>(), as continued() drops it).
   struct expansion_cache {
     std::once_flag once;
     std::shared_ptr<const gdetail::general_expansion<T>> value;
