@@ -10,6 +10,8 @@
 #   bench/results/samples.csv, samples_cli.csv  sampled pressure: time, peak memory and accuracy against
 #                                the sample count, C ABI and CLI (issue 13; scripts/bench_samples.sh)
 #   bench/results/opposite.csv   opposite-sign slip/energies old vs new, hs_solve_batch vs a loop (issue 16)
+#   bench/results/general.csv    general path (flat punch): solve, expansion set-up, B_x, slip and energies
+#                                through the C ABI against the paths they replace (issue 16)
 # The charts are drawn by halfslip.plot (matplotlib): Debian's /usr/bin/python3 with
 # python3-matplotlib (HS_PYTHON overrides it).
 set -euo pipefail
@@ -52,4 +54,11 @@ if [ -x "$HS_BUILD/bench/bench_auto" ]; then
   "$HS_BUILD/bench/bench_auto" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
     --benchmark_out="$HS_ROOT/bench/results/auto.csv" --benchmark_out_format=csv \
     | tee "$HS_ROOT/bench/results/auto.txt"
+fi
+# issue 16: the general path (flat punch b_f/a = 0.5, rtol 1e-12): solve, the expansion's set-up,
+# B_x / slip at a point and energies through the C ABI, next to the paths they replace (same run)
+if [ -x "$HS_BUILD/bench/bench_general" ]; then
+  "$HS_BUILD/bench/bench_general" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+    --benchmark_out="$HS_ROOT/bench/results/general.csv" --benchmark_out_format=csv \
+    | tee "$HS_ROOT/bench/results/general.txt"
 fi

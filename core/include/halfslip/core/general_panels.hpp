@@ -208,9 +208,14 @@ template <class T> struct zone_nodes {
 };
 
 // cut: an extra (ungraded) panel end in (0, pi/2), if any; graded_only: keep
-// only the graded panels (the high-order inner rule of hgrad_nodes).
+// only the graded panels (the high-order inner rule of hgrad_nodes); layers:
+// geometric layers at graded kinks (make_panels); grade_all: every kink graded
+// (the expansions of general_expansion.hpp: at a plain kink, e.g. a knot of a
+// piecewise cubic, the Cauchy integrals have a (x - k)^2 ln|x - k| term, which
+// the interpolant resolves only algebraically unless the panels are graded).
 template <class T> zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, int side, const T &d, const T &e, int n,
-                                                 const T *cut = nullptr, bool graded_only = false) {
+                                                 const T *cut = nullptr, bool graded_only = false,
+                                                 int layers = kink_layers<T>(), bool grade_all = false) {
   using std::asin;
   using std::sin;
   using std::sqrt;
@@ -219,8 +224,10 @@ template <class T> zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, in
   z.d = d;
   if (!(d > 0)) return z;
   std::vector<std::pair<T, bool>> kinks = zone_kinks(pm, side, d);
+  if (grade_all)
+    for (auto &k : kinks) k.second = true;
   if (cut && *cut > 0 && *cut < pi<T>() / 2) kinks.push_back({*cut, false});
-  z.panels = make_panels<T>(d, e, kinks, kink_layers<T>());
+  z.panels = make_panels<T>(d, e, kinks, layers);
   if (graded_only) {
     std::vector<panel<T>> g;
     for (const auto &pn : z.panels)

@@ -281,6 +281,8 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
   sol.scene = sc;
   sol.rtol = opt.rtol;
   sol.max_order = opt.max_order;
+  // the expansion of B_x, made on first use (general_expansion.hpp)
+  sol.expansion_ = std::make_shared<typename general_solution<T>::expansion_cache>();
   T q, s;
   sol.to_canonical(q, s);
   if (sol.mirror && !pm.symmetric()) {
