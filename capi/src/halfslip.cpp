@@ -355,12 +355,41 @@ int hs_scene_default(hs_scene *scene) {
 namespace {
 // The scene of a contact of half-width a under the load P (shared by the
 // dimensional constructors); *scene is written only on success.
+// (x y)/(u v) for finite x, y and finite nonzero u, v, without overflow or underflow in
+// the products (issue 13, fuzz_dimensional: Q/(f P) with f P beyond the double range gave
+// 0 or an overflow status for a representable ratio, and with f P subnormal lost digits).
+// The plain formula where its intermediates are normal, so that ordinary inputs round as before.
+double ratio_of_products(double x, double y, double u, double v) {
+  const double num = x * y, den = u * v, plain = num / den;
+  if ((num == 0 || std::isnormal(num)) && std::isnormal(den) && (plain == 0 || std::isnormal(plain)) &&
+      (num != 0 || x == 0 || y == 0))
+    return plain;
+  int ex, ey, eu, ev;
+  const double m = (std::frexp(x, &ex) * std::frexp(y, &ey)) / (std::frexp(u, &eu) * std::frexp(v, &ev));
+  return std::ldexp(m, ex + ey - eu - ev);
+}
+// sqrt((x y)/(u v)) as above (the Hertz half-width a = sqrt(4 P R / (pi E*)), whose
+// square may lie beyond the double range when a does not)
+double sqrt_ratio_of_products(double x, double y, double u, double v) {
+  const double num = x * y, den = u * v, plain = num / den;
+  if (std::isnormal(num) && std::isnormal(den) && std::isnormal(plain)) return std::sqrt(plain);
+  int ex, ey, eu, ev;
+  double m = (std::frexp(x, &ex) * std::frexp(y, &ey)) / (std::frexp(u, &eu) * std::frexp(v, &ev));
+  int k = ex + ey - eu - ev;
+  if (k % 2 != 0) {
+    m *= 2;
+    k -= 1;
+  }
+  return std::ldexp(std::sqrt(m), k / 2);
+}
+
 void scene_from_loads(double a, double P, double E_star, double f, double Q, double sigma, hs_scene *scene) {
-  const double p0 = core::pressure_unit(P, a);
+  // p0 = 2P/(pi a), without the overflow of 2P
+  const double p0 = ratio_of_products(2, P, core::pi<double>(), a);
   require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
           "contact size not representable");
-  const double q = Q / (f * P);
-  const double s = sigma / (f * p0);
+  const double q = ratio_of_products(Q, 1, f, P);
+  const double s = ratio_of_products(sigma, 1, f, p0);
   require(std::isfinite(q) && std::isfinite(s), core::status::overflow, "load ratio not representable");
   require(std::fabs(q) < 1, core::status::gross_sliding, "|Q| >= fP");
   hs_scene out;
@@ -412,7 +441,9 @@ int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, doubl
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
     check_loads({P, R, E_star, f, Q, sigma}, P, E_star, f);
     require(R > 0, core::status::bad_size, "R must be > 0");
-    scene_from_loads(core::hertz_pressure<double>::half_width_from_load(P, R, E_star), P, E_star, f, Q, sigma, scene);
+    // a = sqrt(4PR/(pi E*)) (core::hertz_pressure::half_width_from_load), without the
+    // overflow or underflow of 4PR where a is representable
+    scene_from_loads(sqrt_ratio_of_products(P, R, core::pi<double>() / 4, E_star), P, E_star, f, Q, sigma, scene);
   });
 }
 
