@@ -321,7 +321,7 @@ void solve_options_from_args(const Args &args, const solve_route &route, hs_opti
       std::string names;
       for (int m = 0; hs_model_name(m); ++m)
         names += std::string(m == 0 ? "" : hs_model_name(m + 1) ? ", " : " or ") + hs_model_name(m);
-      fail("bad value for --model: " + names);
+      fail("bad value for --model: '" + args.at("--model") + "' (known: " + names + ")");
     }
   } else if (args.count("--rtol")) {
     opts.model = HS_MODEL_AUTO;

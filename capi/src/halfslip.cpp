@@ -383,10 +383,29 @@ double sqrt_ratio_of_products(double x, double y, double u, double v) {
   return std::ldexp(std::sqrt(m), k / 2);
 }
 
+// The flat punch's half-width from a^2 g(b_f/a) = 2 A R P
+// (core::flat_rounded_pressure::half_width_from_load), where 2ARP or 2ARP/b_f^2 leaves the
+// normal range of double (issue 13, fuzz_dimensional: P = 1e-314 gave a off by 7e-10):
+// with 2ARP = m 4^j, a = 2^j a' where a'^2 g(b_f 2^-j / a') = m (the relation is
+// homogeneous: a and b_f scale together, the load as their square).
+double flat_rounded_half_width(double P, double A, double R, double bf) {
+  using fr = core::flat_rounded_pressure<double>;
+  const double load = 2 * A * R * P, target = bf > 0 ? load / (bf * bf) : 1.0;
+  if (std::isnormal(load) && std::isnormal(target) && (bf == 0 || std::isnormal(bf * bf)))
+    return fr::half_width_from_load(P, A, R, bf);
+  int eA, eR, eP;
+  const double m = 2 * std::frexp(A, &eA) * std::frexp(R, &eR) * std::frexp(P, &eP);
+  const int k = eA + eR + eP;
+  const int j = k >= 0 ? k / 2 : -((1 - k) / 2);  // floor(k/2)
+  return std::ldexp(fr::half_width_from_load(std::ldexp(m, k - 2 * j), 1.0, 0.5, std::ldexp(bf, -j)), j);
+}
+
 void scene_from_loads(double a, double P, double E_star, double f, double Q, double sigma, hs_scene *scene) {
   // p0 = 2P/(pi a), without the overflow of 2P
   const double p0 = ratio_of_products(2, P, core::pi<double>(), a);
-  require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
+  // a subnormal a or p0 carries only a few bits (issue 13, fuzz_dimensional: P = 2.9e-306,
+  // R = 4.3e-312 gave a = 1.5e-318, 2e-6 off): not representable to double precision
+  require(std::isnormal(a) && a > 0 && std::isnormal(p0) && p0 > 0, core::status::overflow,
           "contact size not representable");
   const double q = ratio_of_products(Q, 1, f, P);
   const double s = ratio_of_products(sigma, 1, f, p0);
@@ -428,7 +447,7 @@ int hs_scene_from_flat_rounded_loads(double P, double R, double flat_width, doub
     require(R > 0, core::status::bad_size, "corner radius R must be > 0");
     require(flat_width >= 0, core::status::bad_geometry, "flat half-width must be >= 0");
     // a^2 g(b_f/a) = 2 A R P with the plane-strain compliance A = 2/E*
-    const double a = core::flat_rounded_pressure<double>::half_width_from_load(P, 2 / E_star, R, flat_width);
+    const double a = flat_rounded_half_width(P, 2 / E_star, R, flat_width);
     hs_scene tmp;
     scene_from_loads(a, P, E_star, f, Q, sigma, &tmp);
     *scene = tmp;

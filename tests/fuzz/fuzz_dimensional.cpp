@@ -16,6 +16,7 @@
 #include "fuzz_input.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -73,6 +74,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         HS_REQUIRE(std::memcmp(&s, &sentinel, sizeof s) == 0);
         return 0;
       }
+      if (std::getenv("HS_FUZZ_DEBUG"))
+        std::fprintf(stderr, "P %.17g R %.17g E %.17g: a %.17g a^2 %.17Lg 4PR/(pi E) %.17Lg\n", P, R, E, s.a,
+                     (long double)s.a * s.a, 4.0L * P * R / (pi * E));
       check_scene(s, P, E, f, Q, sigma);
       HS_REQUIRE(close((long double)s.a * s.a, 4.0L * P * R / (pi * E), 1e-12L));
       // the same contact through the other two entry points
@@ -82,6 +86,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       if (pst == HS_OK) HS_REQUIRE(same_scene(s, pl, 1e-12L));
       const int fst = hs_scene_from_flat_rounded_loads(P, R, 0, E, f, Q, sigma, &fr, &flat);
       HS_REQUIRE(known(fst));
+      if (std::getenv("HS_FUZZ_DEBUG"))
+        std::fprintf(stderr, "P %.17g R %.17g E %.17g f %.17g Q %.17g sigma %.17g\n hertz a %.17g p0 %.17g q %.17g s %.17g\n flat(%d) a %.17g p0 %.17g q %.17g s %.17g b_f/a %g\n power(%d) a %.17g\n",
+                     P, R, E, f, Q, sigma, s.a, s.p0, s.Q_over_fP, s.sigma_over_fp0, fst, fr.a, fr.p0, fr.Q_over_fP,
+                     fr.sigma_over_fp0, flat, pst, pl.a);
       if (fst == HS_OK) HS_REQUIRE(same_scene(s, fr, 1e-12L) && flat == 0);
       // the scene solves (closed forms: cheap for any load)
       hs_solution *sol = nullptr;
