@@ -391,7 +391,7 @@ double sqrt_ratio_of_products(double x, double y, double u, double v) {
 double flat_rounded_half_width(double P, double A, double R, double bf) {
   using fr = core::flat_rounded_pressure<double>;
   const double load = 2 * A * R * P, target = bf > 0 ? load / (bf * bf) : 1.0;
-  if (std::isnormal(load) && std::isnormal(target) && (bf == 0 || std::isnormal(bf * bf)))
+  if (std::isnormal(2 * A * R) && std::isnormal(load) && std::isnormal(target) && (bf == 0 || std::isnormal(bf * bf)))
     return fr::half_width_from_load(P, A, R, bf);
   int eA, eR, eP;
   const double m = 2 * std::frexp(A, &eA) * std::frexp(R, &eR) * std::frexp(P, &eP);
