@@ -3,10 +3,13 @@
 #   1. the whole ctest suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 #   2. the threaded tests built with ThreadSanitizer
 #   3. valgrind memcheck on the C ABI test program
-#   4. a bounded libFuzzer run (clang) of the double and the reference C ABI, of sampled
-#      pressures through the C ABI and of the CLI's pressure-file parser (issue 13)
+#   4. a bounded libFuzzer run (clang) of every target in tests/fuzz/: the double and the
+#      reference C ABI, sampled and callback pressures, load histories, the dimensional entry
+#      points, the asymptotic model, the reference field evaluations, and the CLI's
+#      pressure-file parser and argument parsing (issue 13; the long run is scripts/fuzz_long.sh)
 # Sanitizer and fuzz builds use a short precision ladder (HALFSLIP_REF_TIERS)
-# to keep build time down. HS_FUZZ_SECONDS sets the time per fuzz target.
+# to keep build time down. HS_FUZZ_SECONDS sets the time per fuzz target (default 6 s: a
+# smoke run, the seeds and crash inputs first; CI's whole suite must stay well under 20 min).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh" >/dev/null
 hs_packages=(clang libclang-rt-14-dev valgrind)
@@ -32,18 +35,20 @@ echo "== reliability 3/4: valgrind memcheck, C ABI test"
 valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite \
   "$HS_BUILD/tests/test_capi"
 
-echo "== reliability 4/4: libFuzzer, ${HS_FUZZ_SECONDS:-20} s per target"
+fuzz_targets=(solve ref samples pressure_file history callback dimensional asymptotic ref_fields cli_args)
+echo "== reliability 4/4: libFuzzer, ${HS_FUZZ_SECONDS:-6} s per target"
 cmake -S . -B build-fuzz "${common[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DHALFSLIP_FUZZ=ON \
   -DHALFSLIP_BUILD_TESTS=OFF -DHALFSLIP_BUILD_CLI=OFF -DHALFSLIP_SANITIZE=address,undefined >/dev/null
-cmake --build build-fuzz -j "$jobs" --target fuzz_solve fuzz_ref fuzz_samples fuzz_pressure_file fuzz_history >/dev/null
+cmake --build build-fuzz -j "$jobs" --target "${fuzz_targets[@]/#/fuzz_}" >/dev/null
 mkdir -p tests/fuzz/crashes
-for t in solve ref samples pressure_file history; do
+for t in "${fuzz_targets[@]}"; do
   work="$(mktemp -d)"
-  cp tests/fuzz/corpus/$t/* "$work/"
+  # slow-* inputs (valid, but seconds under the sanitizers) are replayed by ctest only
+  find tests/fuzz/corpus/$t -maxdepth 1 -type f ! -name 'slow-*' -exec cp {} "$work/" \;
   # crash inputs are written to tests/fuzz/crashes/: copy them into corpus/$t to keep them as regression tests
   log="$(mktemp)"
   # a fixed seed keeps CI reproducible (HS_FUZZ_SEED=0 lets libFuzzer pick one, for longer local hunts)
-  if ! build-fuzz/tests/fuzz/fuzz_$t "$work" -seed="${HS_FUZZ_SEED:-1}" -max_total_time="${HS_FUZZ_SECONDS:-20}" -max_len=256 -timeout=20 \
+  if ! build-fuzz/tests/fuzz/fuzz_$t "$work" -seed="${HS_FUZZ_SEED:-1}" -max_total_time="${HS_FUZZ_SECONDS:-6}" -max_len=256 -timeout=20 \
       -rss_limit_mb=4096 -artifact_prefix=tests/fuzz/crashes/$t- -print_final_stats=1 >"$log" 2>&1; then
     tail -40 "$log"
     echo "fuzz_$t found a failing input in tests/fuzz/crashes/ (add it to tests/fuzz/corpus/$t/)"

@@ -55,6 +55,8 @@ js=$("$cli" solve --geometry power-law --exponent 3 --Q-over-fP 0.5 --rtol 1e-9 
 out=$("$cli" solve --rtol 1e-30) && echo "$out" | grep -q "\[30 digits certified\]" && ok || ko "--rtol 1e-30 -> reference"
 "$cli" solve --model closed-form --geometry flat-rounded >/dev/null 2>&1 && ko "closed form for a flat punch accepted" || ok
 "$cli" solve --model bogus >/dev/null 2>&1 && ko "--model bogus accepted" || ok
+# issue 13: the message names the value given (bindings/cli/args.cpp)
+"$cli" solve --model bogus 2>&1 | grep -q "bad value for --model: 'bogus' (known: default, auto" && ok || ko "--model bogus: message names the value"
 "$cli" solve --rtol 0.7 >/dev/null 2>&1 && ko "--rtol 0.7 accepted" || ok
 
 # reference backend: --digits, certified digits, JSON strings

@@ -3,6 +3,7 @@
 //   halfslip table [options]   high-precision benchmark table over a grid (reference)
 #include <halfslip/halfslip.h>
 
+#include "args.hpp"
 #include "pressure_file.hpp"
 
 #include <cmath>
@@ -20,6 +21,19 @@
 #include <vector>
 
 namespace {
+
+using halfslip_cli::Args;
+using halfslip_cli::check;
+using halfslip_cli::check_input;
+using halfslip_cli::is_dimensional;
+using halfslip_cli::kHistoryFlags;
+using halfslip_cli::kHistoryKeys;
+using halfslip_cli::kSolveFlags;
+using halfslip_cli::kSolveKeys;
+using halfslip_cli::parse_args;
+using halfslip_cli::parse_int;
+using halfslip_cli::parse_number;
+using halfslip_cli::scene_from_args;
 
 const char *kUsage =
     "usage: halfslip solve [options]\n"
@@ -121,13 +135,6 @@ const char *kUsage =
   std::exit(2);
 }
 
-double parse_number(const std::string &flag, const char *text) {
-  char *end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0') die("bad value for " + flag + ": '" + text + "' is not a number");
-  if (!std::isfinite(v)) die("bad value for " + flag + ": '" + text + "' is not finite");
-  return v;
-}
 
 std::string num(double v) {
   char buf[64];
@@ -151,45 +158,10 @@ const char *regime_name(int r) {
   }
 }
 
-void check(int st, const std::string &what) {
-  if (st != HS_OK) die(what + ": " + hs_strerror(st));
-}
 
 using Args = std::map<std::string, std::string>;
 
-// Edit distance, ignoring case (for "did you mean").
-size_t edit_distance(const std::string &a, const std::string &b) {
-  std::vector<size_t> d(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) d[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t prev = d[0];
-    d[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t cur = d[j];
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
-                        std::tolower(static_cast<unsigned char>(b[j - 1]));
-      d[j] = std::min({d[j] + 1, d[j - 1] + 1, prev + (same ? 0 : 1)});
-      prev = cur;
-    }
-  }
-  return d[b.size()];
-}
 
-[[noreturn]] void unknown_option(const std::string &a, const std::vector<std::string> &keys,
-                                 const std::vector<std::string> &flags) {
-  std::string best;
-  size_t bd = std::string::npos;
-  for (const auto *list : {&keys, &flags})
-    for (const auto &k : *list) {
-      const size_t d = edit_distance(a, k);
-      if (d < bd) {
-        bd = d;
-        best = k;
-      }
-    }
-  const size_t tol = std::max<size_t>(2, a.size() / 4);
-  die("unknown option '" + a + "'" + (bd <= tol ? "; did you mean " + best + "?" : "") + " (see halfslip --help)");
-}
 
 // The command line as one string (for provenance), leaving out the options in skip.
 std::string command_line(int argc, char **argv, const std::vector<std::string> &skip) {
@@ -214,51 +186,7 @@ std::string command_line(int argc, char **argv, const std::vector<std::string> &
   return out;
 }
 
-// Parse "--key value" and "--key=value" pairs (and the boolean flags given) after argv[first].
-Args parse_args(int argc, char **argv, int first, const std::vector<std::string> &keys,
-                const std::vector<std::string> &flags) {
-  Args args;
-  for (int i = first; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    }
-    std::string value;
-    bool inline_value = false;
-    const size_t eq = a.find('=');
-    if (a.compare(0, 2, "--") == 0 && eq != std::string::npos) {
-      value = a.substr(eq + 1);
-      a.erase(eq);
-      inline_value = true;
-    }
-    if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
-      if (inline_value) die("option " + a + " takes no value");
-      args[a] = "1";
-      continue;
-    }
-    if (std::find(keys.begin(), keys.end(), a) == keys.end()) unknown_option(a, keys, flags);
-    if (args.count(a)) die("option " + a + " given twice");
-    if (!inline_value) {
-      if (i + 1 >= argc) die("option " + a + " needs a value");
-      value = argv[++i];
-    }
-    args[a] = value;
-  }
-  if (args.count("--geometry")) {
-    const std::string g = args["--geometry"];
-    if (g != "hertz" && g != "flat-rounded" && g != "power-law" && g != "samples")
-      die("bad value for --geometry: '" + g + "' (known: hertz, flat-rounded, power-law, samples)");
-  }
-  return args;
-}
 
-int parse_int(const std::string &flag, const std::string &text, int lo, int hi) {
-  const double v = parse_number(flag, text.c_str());
-  if (!(v >= lo && v <= hi && v == std::floor(v)))
-    die("bad value for " + flag + ": need an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return int(v);
-}
 
 // Check a decimal argument (finite number) and keep its exact text.
 std::string decimal_arg(const Args &args, const char *k, const char *def) {
@@ -286,30 +214,6 @@ std::string json_escape(const std::string &s) {
 }
 
 // ---------------------------------------------------------------- solve
-const std::vector<std::string> kSolveKeys = {"--geometry",
-                                             "--Q-over-fP",
-                                             "--sigma-over-fp0",
-                                             "--a",
-                                             "--p0",
-                                             "--f",
-                                             "--E-star",
-                                             "--P",
-                                             "--R",
-                                             "--Q",
-                                             "--sigma",
-                                             "--points",
-                                             "--digits",
-                                             "--flat-over-a",
-                                             "--flat-width",
-                                             "--exponent",
-                                             "--pressure-file",
-                                             "--rtol",
-                                             "--model",
-                                             "--A",
-                                             "--pad-bulk",
-                                             "--fields",
-                                             "--nu",
-                                             "--fields-at"};  // issue 15
 
 // Pressure samples (--pressure-file): the parser and its rules are in
 // pressure_file.cpp (shared with its fuzz target, tests/fuzz/fuzz_pressure_file.cpp);
@@ -331,50 +235,10 @@ std::string read_whole_file(const std::string &path, const char *flag) {
   return all;
 }
 
-samples read_samples(const std::string &path) {
-  try {
-    return halfslip_cli::parse_samples(read_whole_file(path, "--pressure-file"), path);
-  } catch (const halfslip_cli::pressure_file_error &e) {
-    die(e.what());
-  }
-}
 
-void check_samples_or_die(const samples &s, double a) {
-  try {
-    halfslip_cli::check_samples(s, a);
-  } catch (const halfslip_cli::pressure_file_error &e) {
-    die(e.what());
-  }
-}
 
-[[noreturn]] void bad_sample(const samples &s, int ln, const std::string &rule) {
-  die(halfslip_cli::pressure_file_error(s, ln, rule).what());
-}
 
-bool is_dimensional(const Args &args) {
-  return args.count("--P") || args.count("--R") || args.count("--A") || args.count("--Q") || args.count("--sigma");
-}
 
-// A status of a C call that takes the scene options: the C library checked
-// the ranges; its message (hs_strerror) is printed after the options whose
-// values it is about.
-void check_input(int st, const Args &args, const std::string &what = "scene") {
-  if (st == HS_OK) return;
-  const bool dim = is_dimensional(args);
-  std::string flags;
-  switch (st) {
-    case HS_ERR_GROSS_SLIDING: flags = dim ? "--Q" : "--Q-over-fP"; break;
-    case HS_ERR_BAD_FRICTION: flags = "--f"; break;
-    case HS_ERR_BAD_SIZE: flags = dim ? "--P, --R, --A or --E-star" : "--a, --p0 or --E-star"; break;
-    case HS_ERR_BAD_GEOMETRY:  // a geometry parameter given (else: the model or geometry)
-      for (const char *k : {"--flat-over-a", "--flat-width", "--exponent"})
-        if (args.count(k)) flags = k;
-      break;
-    default: break;
-  }
-  if (!flags.empty()) die("bad value for " + flags + ": " + hs_strerror(st));
-  check(st, what);
-}
 
 void check_dimensional(const Args &args) {
   for (const char *k : {"--P", "--R", "--E-star", "--f", "--Q", "--sigma"})
@@ -716,134 +580,21 @@ void write_fields(const hs_solution *sol, double a, double pad_bulk, double nu, 
   if (std::fclose(out) != 0 || !ok) die("--fields: error writing '" + path + "'");
 }
 
-// The scene and geometry of the solve/history options (geometry, sizes, loads);
-// sx, sp hold the samples of --pressure-file. With `loads` false, the load
-// options are not part of the command (history: the path gives them).
-void scene_from_args(const Args &args, hs_scene &scene, hs_geometry &geo, std::vector<double> &sx,
-                     std::vector<double> &sp, bool loads = true) {
-  auto get = [&](const char *k, double def) { return args.count(k) ? parse_number(k, args.at(k).c_str()) : def; };
-  const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
-  hs_geometry_default(&geo);
-  hs_scene_default(&scene);
-  samples samp;
-  if (geometry == "flat-rounded") {
-    geo.kind = HS_GEOMETRY_FLAT_ROUNDED;
-    if (args.count("--flat-over-a")) geo.flat_over_a = get("--flat-over-a", 0.5);
-  } else if (geometry == "power-law") {
-    geo.kind = HS_GEOMETRY_POWER_LAW;
-    geo.exponent = get("--exponent", 2.0);
-  } else if (geometry == "samples") {
-    geo.kind = HS_GEOMETRY_SAMPLES;
-    if (!args.count("--pressure-file")) die("--geometry samples needs --pressure-file F (two columns x p)");
-    samp = read_samples(args.at("--pressure-file"));
-    sx = samp.x;
-    sp = samp.p;
-    geo.n_samples = sx.size();
-    geo.sample_x = sx.data();
-    geo.sample_p = sp.data();
-  }
-  for (const char *k : {"--flat-over-a", "--flat-width"})
-    if (args.count(k) && geometry != "flat-rounded") die(std::string(k) + " needs --geometry flat-rounded");
-  if (args.count("--exponent") && geometry != "power-law") die("--exponent needs --geometry power-law");
-  if (args.count("--pressure-file") && geometry != "samples") die("--pressure-file needs --geometry samples");
-  if (is_dimensional(args)) {
-    // dimensional input: P, E*, f, Q, sigma and the geometry's size parameters
-    // (hertz: R; flat-rounded: corner radius R and --flat-width b_f; power-law: --A, --exponent n)
-    const bool pl = geometry == "power-law";
-    if (geometry != "hertz" && geometry != "flat-rounded" && !pl)
-      die("dimensional input (--P ...) is available for hertz, flat-rounded and power-law");
-    for (const char *k : {"--P", "--E-star", "--f", "--Q", "--sigma", pl ? "--A" : "--R"})
-      if (!args.count(k) && (loads || (std::strcmp(k, "--Q") != 0 && std::strcmp(k, "--sigma") != 0)))
-        die(std::string("dimensional input needs ") + k +
-            (pl ? " (give --P --A --exponent --E-star --f --Q --sigma)"
-                : " (give --P --R --E-star --f --Q --sigma)"));
-    for (const char *k : {"--Q-over-fP", "--sigma-over-fp0", "--a", "--p0"})
-      if (args.count(k)) die(std::string(k) + " cannot be combined with dimensional --P/--Q/--sigma");
-    if (pl && args.count("--R")) die("--R is not a power-law parameter (the profile is --A |x|^--exponent)");
-    if (!pl && args.count("--A")) die("--A needs --geometry power-law");
-    const double P = get("--P", 0), E = get("--E-star", 0), f = get("--f", 0);
-    const double Q = get("--Q", 0), sg = get("--sigma", 0);
-    // the C library checks the ranges; its message names the rule broken
-    if (pl) {
-      const double A = get("--A", 0);
-      check_input(hs_scene_from_power_law_loads(P, A, geo.exponent, E, f, Q, sg, &scene), args);
-    } else {
-      const double R = get("--R", 0);
-      if (geometry == "flat-rounded") {
-        if (!args.count("--flat-width")) die("dimensional flat-rounded input needs --flat-width (b_f)");
-        if (args.count("--flat-over-a"))
-          die("--flat-over-a cannot be combined with dimensional input (give --flat-width)");
-        const double bf = get("--flat-width", 0);
-        check_input(hs_scene_from_flat_rounded_loads(P, R, bf, E, f, Q, sg, &scene, &geo.flat_over_a), args);
-      } else {
-        check_input(hs_scene_from_hertz_loads(P, R, E, f, Q, sg, &scene), args);
-      }
-    }
-  } else {
-    scene.Q_over_fP = loads ? get("--Q-over-fP", 0.5) : 0.0;
-    scene.sigma_over_fp0 = loads ? get("--sigma-over-fp0", 0.5) : 0.0;
-    scene.a = get("--a", 1.0);
-    scene.p0 = get("--p0", 1.0);
-    scene.f = get("--f", 1.0);
-    scene.E_star = get("--E-star", 1.0);
-    // the scene's ranges are checked by the C library when it solves (check_input);
-    // the samples' rules are checked here, against a, to name the file's line
-    if (geometry == "samples") {
-      if (!(scene.a > 0)) die("bad value for --a: must be > 0");
-      check_samples_or_die(samp, scene.a);
-      // the library's remaining rules (the sqrt edge behaviour), with the sample they are about
-      int verdict = HS_OK;
-      size_t at = 0;
-      char why[256];
-      check(hs_check_samples(samp.x.size(), samp.x.data(), samp.p.data(), scene.a, &verdict, &at, why, sizeof why),
-            "samples");
-      if (verdict != HS_OK) {
-        if (at < samp.x.size())
-          bad_sample(samp, samp.line[at], "x = " + g10(samp.x[at]) + ", p = " + g10(samp.p[at]) + ": " + why);
-        bad_sample(samp, samp.last_line, why);
-      }
-    }
-  }
-}
 
 int cmd_solve(int argc, char **argv) {
-  const Args args = parse_args(argc, argv, 2, kSolveKeys, {"--json", "--no-energy"});
-  auto get = [&](const char *k, double def) { return args.count(k) ? parse_number(k, args.at(k).c_str()) : def; };
+  const Args args = parse_args(argc, argv, 2, kSolveKeys, kSolveFlags);
   const std::string geometry = args.count("--geometry") ? args.at("--geometry") : "hertz";
-  // --rtol below double's rounding: the reference backend at that many digits
-  double rtol = 0;
-  if (args.count("--rtol")) {
-    rtol = get("--rtol", 0);
-    if (!(rtol > 0 && rtol <= 0.5)) die("bad value for --rtol: must lie in (0, 0.5]");
-    if (rtol < std::ldexp(1.0, -53) && !args.count("--digits")) {
-      if (args.count("--model")) die("--rtol below 1.1e-16 needs the reference backend: drop --model");
-      const int digits = int(std::ceil(-std::log10(rtol)));
-      if (digits > hs_ref_max_digits()) die("bad value for --rtol: beyond the reference backend's digits");
-      return solve_reference(args, digits);
-    }
-  }
-  if (args.count("--digits")) {
-    return solve_reference(args, parse_int("--digits", args.at("--digits"), 1, hs_ref_max_digits()));
-  }
+  // --rtol below double's rounding, or --digits: the reference backend
+  const halfslip_cli::solve_route route = halfslip_cli::solve_route_from_args(args);
+  if (route.digits > 0) return solve_reference(args, route.digits);
   const bool json = args.count("--json") > 0;
   hs_geometry geo;
   hs_scene scene;
   std::vector<double> sx, sp;
-  scene_from_args(args, scene, geo, sx, sp);
-  const int npts = args.count("--points") ? parse_int("--points", args.at("--points"), 0, 100000) : 0;
+  scene_from_args(args, scene, geo, sx, sp, read_whole_file);
+  int npts = 0;
   hs_options opts;
-  hs_options_default(&opts);
-  if (args.count("--model")) {
-    if (hs_model_from_name(args.at("--model").c_str(), &opts.model) != HS_OK) {
-      std::string names;
-      for (int m = 0; hs_model_name(m); ++m)
-        names += std::string(m == 0 ? "" : hs_model_name(m + 1) ? ", " : " or ") + hs_model_name(m);
-      die("bad value for --model: " + names);
-    }
-  } else if (args.count("--rtol")) {
-    opts.model = HS_MODEL_AUTO;
-  }
-  opts.rtol = rtol;
+  halfslip_cli::solve_options_from_args(args, route, opts, npts);
   hs_solution *sol = nullptr;
   check_input(hs_solve_geometry(&scene, &geo, &opts, &sol), args, "solve");
   hs_summary sm;
@@ -977,34 +728,6 @@ int cmd_solve(int argc, char **argv) {
 }
 
 // ---------------------------------------------------------------- history
-const std::vector<std::string> kHistoryKeys = {"--geometry",
-                                               "--a",
-                                               "--p0",
-                                               "--f",
-                                               "--E-star",
-                                               "--P",
-                                               "--R",
-                                               "--A",
-                                               "--flat-over-a",
-                                               "--flat-width",
-                                               "--exponent",
-                                               "--pressure-file",
-                                               "--path",
-                                               "--digits",
-                                               "--cycle",
-                                               "--cycles",
-                                               "--ramp",
-                                               "--segments-per-cycle",
-                                               "--max-step",
-                                               "--points",
-                                               "--steady-rtol",
-                                               "--rtol",
-                                               "--interior-patches",
-                                               "--fields",
-                                               "--fields-vertex",
-                                               "--fields-at",
-                                               "--pad-bulk",
-                                               "--nu"};
 
 // "Q1,S1;Q2,S2;..." -> pairs
 std::vector<std::pair<double, double>> parse_path(const std::string &t) {
@@ -1123,7 +846,7 @@ std::string history_hint(int st, const hs_history_options &ho) {
 }
 
 int cmd_history(int argc, char **argv) {
-  const Args args = parse_args(argc, argv, 2, kHistoryKeys, {"--json", "--surface-stress"});
+  const Args args = parse_args(argc, argv, 2, kHistoryKeys, kHistoryFlags);
   const bool json = args.count("--json") > 0;
   if (args.count("--digits")) return history_reference(args, json);
   const bool want_surface = args.count("--surface-stress") > 0;
@@ -1138,7 +861,7 @@ int cmd_history(int argc, char **argv) {
   hs_geometry geo;
   hs_scene scene;
   std::vector<double> sx, sp;
-  scene_from_args(args, scene, geo, sx, sp, false);
+  scene_from_args(args, scene, geo, sx, sp, read_whole_file, false);
   const bool dim = is_dimensional(args);
   const double P = M_PI * scene.a * scene.p0 / 2;
   // dimensional loads (force per unit length, stress) -> ratios
@@ -1619,9 +1342,7 @@ int cmd_asymptotic_error(int argc, char **argv) {
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char **argv) {
+int run(int argc, char **argv) {
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;
@@ -1636,4 +1357,17 @@ int main(int argc, char **argv) {
   if (std::strcmp(argv[1], "asymptotic-error") == 0) return cmd_asymptotic_error(argc, argv);
   die(std::string("unknown command '") + argv[1] +
       "' (solve, history, table or asymptotic-error; see halfslip --help)");
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  try {
+    return run(argc, argv);
+  } catch (const halfslip_cli::help_requested &) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  } catch (const halfslip_cli::cli_error &e) {
+    die(e.what());
+  }
 }

@@ -360,12 +360,60 @@ int hs_scene_default(hs_scene *scene) {
 namespace {
 // The scene of a contact of half-width a under the load P (shared by the
 // dimensional constructors); *scene is written only on success.
+// (x y)/(u v) for finite x, y and finite nonzero u, v, without overflow or underflow in
+// the products (issue 13, fuzz_dimensional: Q/(f P) with f P beyond the double range gave
+// 0 or an overflow status for a representable ratio, and with f P subnormal lost digits).
+// The plain formula where its intermediates are normal, so that ordinary inputs round as before.
+double ratio_of_products(double x, double y, double u, double v) {
+  const double num = x * y, den = u * v, plain = num / den;
+  if ((num == 0 || std::isnormal(num)) && std::isnormal(den) && (plain == 0 || std::isnormal(plain)) &&
+      (num != 0 || x == 0 || y == 0))
+    return plain;
+  int ex, ey, eu, ev;
+  const double m = (std::frexp(x, &ex) * std::frexp(y, &ey)) / (std::frexp(u, &eu) * std::frexp(v, &ev));
+  return std::ldexp(m, ex + ey - eu - ev);
+}
+// sqrt((x y)/(u v)) as above (the Hertz half-width a = sqrt(4 P R / (pi E*)), whose
+// square may lie beyond the double range when a does not)
+double sqrt_ratio_of_products(double x, double y, double u, double v) {
+  const double num = x * y, den = u * v, plain = num / den;
+  if (std::isnormal(num) && std::isnormal(den) && std::isnormal(plain)) return std::sqrt(plain);
+  int ex, ey, eu, ev;
+  double m = (std::frexp(x, &ex) * std::frexp(y, &ey)) / (std::frexp(u, &eu) * std::frexp(v, &ev));
+  int k = ex + ey - eu - ev;
+  if (k % 2 != 0) {
+    m *= 2;
+    k -= 1;
+  }
+  return std::ldexp(std::sqrt(m), k / 2);
+}
+
+// The flat punch's half-width from a^2 g(b_f/a) = 2 A R P
+// (core::flat_rounded_pressure::half_width_from_load), where 2ARP or 2ARP/b_f^2 leaves the
+// normal range of double (issue 13, fuzz_dimensional: P = 1e-314 gave a off by 7e-10):
+// with 2ARP = m 4^j, a = 2^j a' where a'^2 g(b_f 2^-j / a') = m (the relation is
+// homogeneous: a and b_f scale together, the load as their square).
+double flat_rounded_half_width(double P, double A, double R, double bf) {
+  using fr = core::flat_rounded_pressure<double>;
+  const double load = 2 * A * R * P, target = bf > 0 ? load / (bf * bf) : 1.0;
+  if (std::isnormal(2 * A * R) && std::isnormal(load) && std::isnormal(target) && (bf == 0 || std::isnormal(bf * bf)))
+    return fr::half_width_from_load(P, A, R, bf);
+  int eA, eR, eP;
+  const double m = 2 * std::frexp(A, &eA) * std::frexp(R, &eR) * std::frexp(P, &eP);
+  const int k = eA + eR + eP;
+  const int j = k >= 0 ? k / 2 : -((1 - k) / 2);  // floor(k/2)
+  return std::ldexp(fr::half_width_from_load(std::ldexp(m, k - 2 * j), 1.0, 0.5, std::ldexp(bf, -j)), j);
+}
+
 void scene_from_loads(double a, double P, double E_star, double f, double Q, double sigma, hs_scene *scene) {
-  const double p0 = core::pressure_unit(P, a);
-  require(std::isfinite(a) && a > 0 && std::isfinite(p0) && p0 > 0, core::status::overflow,
+  // p0 = 2P/(pi a), without the overflow of 2P
+  const double p0 = ratio_of_products(2, P, core::pi<double>(), a);
+  // a subnormal a or p0 carries only a few bits (issue 13, fuzz_dimensional: P = 2.9e-306,
+  // R = 4.3e-312 gave a = 1.5e-318, 2e-6 off): not representable to double precision
+  require(std::isnormal(a) && a > 0 && std::isnormal(p0) && p0 > 0, core::status::overflow,
           "contact size not representable");
-  const double q = Q / (f * P);
-  const double s = sigma / (f * p0);
+  const double q = ratio_of_products(Q, 1, f, P);
+  const double s = ratio_of_products(sigma, 1, f, p0);
   require(std::isfinite(q) && std::isfinite(s), core::status::overflow, "load ratio not representable");
   require(std::fabs(q) < 1, core::status::gross_sliding, "|Q| >= fP");
   hs_scene out;
@@ -404,7 +452,7 @@ int hs_scene_from_flat_rounded_loads(double P, double R, double flat_width, doub
     require(R > 0, core::status::bad_size, "corner radius R must be > 0");
     require(flat_width >= 0, core::status::bad_geometry, "flat half-width must be >= 0");
     // a^2 g(b_f/a) = 2 A R P with the plane-strain compliance A = 2/E*
-    const double a = core::flat_rounded_pressure<double>::half_width_from_load(P, 2 / E_star, R, flat_width);
+    const double a = flat_rounded_half_width(P, 2 / E_star, R, flat_width);
     hs_scene tmp;
     scene_from_loads(a, P, E_star, f, Q, sigma, &tmp);
     *scene = tmp;
@@ -417,7 +465,9 @@ int hs_scene_from_hertz_loads(double P, double R, double E_star, double f, doubl
     require(scene != nullptr, core::status::null_pointer, "scene is NULL");
     check_loads({P, R, E_star, f, Q, sigma}, P, E_star, f);
     require(R > 0, core::status::bad_size, "R must be > 0");
-    scene_from_loads(core::hertz_pressure<double>::half_width_from_load(P, R, E_star), P, E_star, f, Q, sigma, scene);
+    // a = sqrt(4PR/(pi E*)) (core::hertz_pressure::half_width_from_load), without the
+    // overflow or underflow of 4PR where a is representable
+    scene_from_loads(sqrt_ratio_of_products(P, R, core::pi<double>() / 4, E_star), P, E_star, f, Q, sigma, scene);
   });
 }
 

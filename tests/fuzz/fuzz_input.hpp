@@ -3,6 +3,7 @@
 // bytes, zero once the input runs out, and an abort on a broken contract.
 #pragma once
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
@@ -33,4 +34,11 @@ struct reader {
 inline void require(bool ok) {
   if (!ok) std::abort();
 }
+// require with the broken condition named on stderr (HS_REQUIRE)
+inline void require_at(bool ok, const char *what, const char *file, int line) {
+  if (ok) return;
+  std::fprintf(stderr, "%s:%d: broken: %s\n", file, line, what);
+  std::abort();
+}
 }  // namespace hs_fuzz
+#define HS_REQUIRE(c) hs_fuzz::require_at(bool(c), #c, __FILE__, __LINE__)

@@ -114,8 +114,11 @@ std::vector<kpanel<T>> knot_panels(const knot_view<T> &kv, int side, const T &d,
     const int k = std::max(2, int(ceil(ltarget / (2 * log(rho)))));
     if (r > T(1e-13) * k * k * k * k * k * k) {
       using std::pow;
-      const int kr = int(ceil(pow(r / T(1e-13), T(1) / 6)));
-      return std::min(M, std::max(k, kr));
+      // (compared as T: for rough enough data the order exceeds every int, issue 13
+      // fuzzing, tests/fuzz/corpus/samples/crash-rough-order-overflow)
+      const T kr = ceil(pow(r / T(1e-13), T(1) / 6));
+      if (!(kr < T(M))) return M;
+      return std::min(M, std::max(k, int(kr)));
     }
     return std::min(M, k);
   };

@@ -233,8 +233,15 @@ template <class T> bool continuation(const pressure_model<T> &pm, const T &q, co
   T h = s / 4;
   if (!(h > 0)) h = s;
   const T hmin = s * ldexp(T(1), -40);
+  // bounded time (issue 13): the step may stall far above hmin (each step converging in
+  // more than 4 iterations, so that h never grows) and the steps then number up to
+  // s/hmin = 2^40; fuzzer input tests/fuzz/corpus/callback/crash-continuation-stall (a
+  // callback pressure with kinks, Q/fP = -0.996, sigma/fp0 = -46.7) ran for more than
+  // 10 minutes. A continuation that converges takes a few dozen steps.
+  const int max_steps = 2048;
+  int tried = 0;
   while (sc < s) {
-    if (!(h > 0) || h < hmin) return false;
+    if (!(h > 0) || h < hmin || ++tried > max_steps) return false;
     const T sn = (s - sc <= h || !(sc + h > sc)) ? s : sc + h;
     const T ds = sn - sc;
     // tangent predictor

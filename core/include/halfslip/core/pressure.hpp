@@ -565,9 +565,15 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     if (!(coef > 0)) throw error(status::bad_size, "power law: profile coefficient must be > 0");
     if (!(n > 1) || !(n < 1000)) throw error(status::bad_geometry, "power law: need 1 < n < 1000");
     const T ratio = exp(lgamma(n / 2 + 1) - lgamma((n + 1) / 2));
-    const T an = 2 * P / (Estar * n * coef * sqrt(pi<T>())) * ratio;
-    if (isnormal(an)) return pow(an, 1 / n);
-    return exp((log(2 * P) + lgamma(n / 2 + 1) - lgamma((n + 1) / 2) - log(Estar) - log(n) - log(coef) -
+    // the direct formula where its intermediates are normal numbers; else in logarithms
+    // (issue 13, fuzz_dimensional: E* = 1.8e-19 with A = 4e-300 made the denominator
+    // subnormal and a wrong by 3e-9 although a^n was a normal number)
+    const T en = Estar * n, enc = en * coef, den = enc * sqrt(pi<T>());
+    const T an = 2 * P / den * ratio;
+    if (isnormal(an) && isnormal(P) && isnormal(Estar) && isnormal(en) && isnormal(enc) && isnormal(den) &&
+        isnormal(T(2 * P)))
+      return pow(an, 1 / n);
+    return exp((log(P) + log(T(2)) + lgamma(n / 2 + 1) - lgamma((n + 1) / 2) - log(Estar) - log(n) - log(coef) -
                 T(0.5) * log(pi<T>())) /
                n);
   }
