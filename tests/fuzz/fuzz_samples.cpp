@@ -16,28 +16,11 @@
 #include <cstring>
 #include <vector>
 
+#include "fuzz_input.hpp"
+
 namespace {
-struct reader {
-  const uint8_t *p;
-  size_t n;
-  double real() {
-    double v = 0;
-    if (n >= sizeof v) {
-      std::memcpy(&v, p, sizeof v);
-      p += sizeof v;
-      n -= sizeof v;
-    }
-    return v;
-  }
-  uint8_t byte() {
-    if (!n) return 0;
-    --n;
-    return *p++;
-  }
-};
-void require(bool ok) {
-  if (!ok) std::abort();
-}
+using hs_fuzz::reader;
+using hs_fuzz::require;
 bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
 double noise(size_t i, unsigned seed) {
   unsigned long long z = (unsigned long long)(i + 1) * 0x9E3779B97F4A7C15ULL + seed;
