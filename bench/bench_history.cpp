@@ -44,7 +44,8 @@ struct result {
   std::vector<double> b1, b2, e1, e2;
 };
 
-result of(const std::vector<history_vertex<double>> &vs) {
+// (core history_vertex or the C ABI's hs_history_vertex: the same field names)
+template <class V> result of(const std::vector<V> &vs) {
   result r;
   for (const auto &v : vs) {
     r.b1.push_back(v.b1);
@@ -189,15 +190,8 @@ int main(int argc, char **argv) {
             mest = h.error_estimate();
           },
           1);
-      result rs;
-      for (const auto &v : sup) {
-        rs.b1.push_back(v.b1);
-        rs.b2.push_back(v.b2);
-        rs.e1.push_back(v.energy1);
-        rs.e2.push_back(v.energy2);
-      }
       double eb = 0, ee = 0;
-      errors(rm, rs, eb, ee);
+      errors(rm, of(sup), eb, ee);
       std::fprintf(csv, "%s_ray%d,march rtol 1e-8,,%zu,%.6g,%.3g,%.3g,%.3g,0\n", name, n, steps, t_m, eb, ee, mest);
       std::printf("| | march, rtol 1e-8 | %.3g s | zones %.1e a, energies %.1e (estimate %.1e) |\n", t_m, eb, ee,
                   mest);
