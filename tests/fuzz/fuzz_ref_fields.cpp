@@ -115,8 +115,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     // traction in a slip zone of the double solution (well inside it): dir f p(x)
     hs_scene ds;
     hs_scene_default(&ds);
-    ds.Q_over_fP = std::strtod(sc.Q_over_fP, nullptr);
-    ds.sigma_over_fp0 = std::strtod(sc.sigma_over_fp0, nullptr);
+    // (a NULL ratio is the C default "0.5", hs_ref_scene_default; found by the
+    // reliability stage's run: UBSan, strtod(NULL))
+    ds.Q_over_fP = sc.Q_over_fP ? std::strtod(sc.Q_over_fP, nullptr) : 0.5;
+    ds.sigma_over_fp0 = sc.sigma_over_fp0 ? std::strtod(sc.sigma_over_fp0, nullptr) : 0.5;
     hs_solution *dsol = nullptr;
     if (hs_solve(&ds, nullptr, &dsol) == HS_OK) {
       hs_summary m;
