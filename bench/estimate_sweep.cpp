@@ -196,15 +196,9 @@ dres run_apost(const scene &c) {
       fill(s);
       r.model = HS_MODEL_CLOSED_FORM;
     } else {
-      std::unique_ptr<core::pressure_model<double>> pm;
-      std::unique_ptr<core::pressure_model<long double>> pw;
-      if (c.kind == HS_GEOMETRY_FLAT_ROUNDED) {
-        pm.reset(new core::flat_rounded_pressure<double>(c.par));
-        pw.reset(new core::flat_rounded_pressure<long double>(c.par));
-      } else {
-        pm.reset(new core::power_law_pressure<double>(c.par));
-        pw.reset(new core::power_law_pressure<long double>(c.par));
-      }
+      const bool flat = c.kind == HS_GEOMETRY_FLAT_ROUNDED;
+      const auto pm = core::parametrised_pressure<double>(flat, c.par);
+      const auto pw = core::parametrised_pressure<long double>(flat, c.par);
       const auto s = core::solve_general<double>(*pm, g);
       e = core::a_posteriori_quadrature(s, *pw);
       fill(s);

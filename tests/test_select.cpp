@@ -306,15 +306,9 @@ TEST_CASE(
       core::general_scene<double> gs;
       gs.q = sc.Q_over_fP;
       gs.s = sc.sigma_over_fp0;
-      std::unique_ptr<core::pressure_model<double>> pm;
-      std::unique_ptr<core::pressure_model<long double>> pw;
-      if (g.first == HS_GEOMETRY_FLAT_ROUNDED) {
-        pm.reset(new core::flat_rounded_pressure<double>(g.second));
-        pw.reset(new core::flat_rounded_pressure<long double>(g.second));
-      } else {
-        pm.reset(new core::power_law_pressure<double>(g.second));
-        pw.reset(new core::power_law_pressure<long double>(g.second));
-      }
+      const bool flat = g.first == HS_GEOMETRY_FLAT_ROUNDED;
+      const auto pm = core::parametrised_pressure<double>(flat, g.second);
+      const auto pw = core::parametrised_pressure<long double>(flat, g.second);
       const auto ap = core::a_posteriori_quadrature(core::solve_general<double>(*pm, gs), *pw);
       CAPTURE(ap.value());
       REQUIRE(ap.value() > rtol);
@@ -990,15 +984,9 @@ TEST_CASE("issue 16: the a-posteriori estimate bounds the error within 30x, and 
     truth t = general_truth(c.kind, c.par, c.sc);
     if (!reference_lengths(c.kind, c.par, c.sc, t)) continue;
     ++general;
-    std::unique_ptr<core::pressure_model<double>> pm;
-    std::unique_ptr<core::pressure_model<long double>> pw;
-    if (c.kind == HS_GEOMETRY_FLAT_ROUNDED) {
-      pm.reset(new core::flat_rounded_pressure<double>(c.par));
-      pw.reset(new core::flat_rounded_pressure<long double>(c.par));
-    } else {
-      pm.reset(new core::power_law_pressure<double>(c.par));
-      pw.reset(new core::power_law_pressure<long double>(c.par));
-    }
+    const bool flat = c.kind == HS_GEOMETRY_FLAT_ROUNDED;
+    const auto pm = core::parametrised_pressure<double>(flat, c.par);
+    const auto pw = core::parametrised_pressure<long double>(flat, c.par);
     const auto g = core_scene(c.sc);
     const auto qs = core::solve_general<double>(*pm, g);
     const auto ap = core::a_posteriori_quadrature(qs, *pw);

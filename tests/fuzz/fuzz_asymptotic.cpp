@@ -24,7 +24,7 @@
 
 namespace {
 using hs_fuzz::reader;
-bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
+using hs_fuzz::known;
 
 void comparison(reader &r, uint8_t flags) {
   const int loading = (flags & 2) ? int(r.byte() % 4) : (flags & 4) ? HS_LOADING_BULK : HS_LOADING_SHEAR;

@@ -29,7 +29,7 @@
 
 namespace {
 using namespace halfslip_cli;
-bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
+using hs_fuzz::known;
 bool contains(const std::string &s, const std::string &t) { return s.find(t) != std::string::npos; }
 bool starts_with(const std::string &s, const std::string &p) { return s.compare(0, p.size(), p) == 0; }
 // the option of a token: "--k=v" -> "--k"

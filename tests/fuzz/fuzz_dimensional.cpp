@@ -23,7 +23,7 @@
 
 namespace {
 using hs_fuzz::reader;
-bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
+using hs_fuzz::known;
 bool close(long double x, long double y, long double rel) {
   return std::fabs(x - y) <= rel * std::fmax(std::fabs(x), std::fabs(y));
 }

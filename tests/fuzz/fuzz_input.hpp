@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include <halfslip/halfslip.h>
+
 namespace hs_fuzz {
 struct reader {
   const uint8_t *p;
@@ -31,6 +33,8 @@ struct reader {
     return r * (double(v) / 32767.5 - 1);
   }
 };
+// a status the C ABI may return (any other value breaks its contract)
+inline bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
 inline void require(bool ok) {
   if (!ok) std::abort();
 }

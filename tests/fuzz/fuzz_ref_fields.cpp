@@ -27,7 +27,7 @@
 #include <string>
 
 namespace {
-bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
+using hs_fuzz::known;
 
 // +1 if the plain decimal t ([+-]digits[.digits], no exponent) has |t| > 1,
 // 0 if |t| <= 1, -1 if t is not of that form

@@ -21,7 +21,7 @@
 namespace {
 using hs_fuzz::reader;
 using hs_fuzz::require;
-bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
+using hs_fuzz::known;
 double noise(size_t i, unsigned seed) {
   unsigned long long z = (unsigned long long)(i + 1) * 0x9E3779B97F4A7C15ULL + seed;
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;

@@ -14,7 +14,7 @@
 namespace {
 using hs_fuzz::reader;
 using hs_fuzz::require;
-bool known(int st) { return st >= HS_OK && st <= HS_ERR_NOT_APPLICABLE; }
+using hs_fuzz::known;
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {

@@ -998,4 +998,12 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
   const pressure_model<T> &b_;
 };
 
+// The flat-rounded punch (flat = true, par = b_f/a) or the power law (par = n)
+// at type T: the two parametrised non-Hertz pressures, for sweeps and tests
+// that solve one scene at two precisions.
+template <class T> std::unique_ptr<pressure_model<T>> parametrised_pressure(bool flat, const T &par) {
+  if (flat) return std::unique_ptr<pressure_model<T>>(new flat_rounded_pressure<T>(par));
+  return std::unique_ptr<pressure_model<T>>(new power_law_pressure<T>(par));
+}
+
 }}  // namespace hs::core
