@@ -44,6 +44,7 @@
 #include "newton.hpp"
 #include "numerics.hpp"
 #include "pressure.hpp"
+#include "history_rates.hpp"
 #include "status.hpp"
 
 namespace hs { namespace core {
@@ -126,12 +127,6 @@ template <class T> endpoly<T> interpolate(const std::vector<T> &b, const std::ve
   p.g = acc;
   p.deg = d;
   return p;
-}
-
-template <class T> T acosh1p(const T &w) {  // acosh(1 + w), w >= 0, accurate for small w
-  using std::log1p;
-  using std::sqrt;
-  return log1p(w + sqrt(w * (w + 2)));
 }
 
 }  // namespace hdetail
@@ -625,9 +620,7 @@ template <class T> class history {
   mutable bool mem1_ok_ = false, mem2_ok_ = false;
 
   static int sgn(const T &v) { return (v > 0) - (v < 0); }
-  static T r(int i, const T &dq, const T &ds, const T &e) {
-    return i == 1 ? dq / 2 - ds * e / 4 : dq / 2 + ds * e / 4;
-  }
+  static T r(int i, const T &dq, const T &ds, const T &e) { return hist_rate_end(i, dq, ds, e); }
 
   // A zero-load step that moves the ends outwards at once (part of a zone sticks).
   void jump(const T &b1n, const T &b2n) {
@@ -1421,12 +1414,7 @@ template <class T> class history {
 
   // slip rate (per unit u) in zone z (+1 right of the stick zone, -1 left) at x
   static T hdot(int z, const T &A, const T &B, const T &c, const T &e, const T &x) {
-    using std::sqrt;
-    const T w = z > 0 ? x - (c + e) : (c - e) - x;  // distance from the stick end, >= 0
-    if (!(w > 0)) return T(0);
-    const T ach = hdetail::acosh1p(w / e);
-    const T sq = sqrt(w * (w + 2 * e));
-    return 2 * (A * ach + (z > 0 ? -B : B) * sq);
+    return hist_hdot(z, A, B, c, e, x);
   }
 
   // dissipation over the step: int_0^1 du int_zone s_i p hdot dx
@@ -1464,44 +1452,9 @@ template <class T> class history {
                   "history: a slip zone dissipates a negative energy over a step: part of it would slip back "
                   "(more zones than the march models)");
   }
-  // int_lo^hi p(x) hdot(x) dx over a slip zone: x = lo + d (1 - cos th)/2 takes
-  // both square-root ends; geometric panels in th near the stick end when e << d.
+  // int_lo^hi p(x) hdot(x) dx over a slip zone (core/history_rates.hpp)
   T zone_rate(int z, const T &A, const T &B, const T &c, const T &e, const T &lo, const T &hi) const {
-    using std::acos;
-    using std::cos;
-    using std::sin;
-    using std::sqrt;
-    const T d = hi - lo;
-    if (!(d > 0)) return T(0);
-    const T pi_ = pi<T>();
-    // th of a distance w from the stick end
-    auto th_of = [&](const T &w) {
-      const T wf = z > 0 ? w : d - w;  // distance from lo
-      T cth = 1 - 2 * wf / d;
-      if (cth > 1) cth = 1;
-      if (cth < -1) cth = -1;
-      return acos(cth);
-    };
-    std::vector<T> cuts{T(0), pi_};
-    // grading towards the stick end
-    for (T w = std::max(e, d * eps<T>()); w < d / 4; w *= 8) cuts.push_back(th_of(w));
-    for (const auto &bp : pm_->breakpoints()) {
-      if (bp.x > lo && bp.x < hi) cuts.push_back(th_of(z > 0 ? bp.x - lo : hi - bp.x));
-    }
-    std::sort(cuts.begin(), cuts.end());
-    const auto rule = gauss_legendre<T>(opt_.order * 2);
-    T sum = 0;
-    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
-      const T a = cuts[k], b = cuts[k + 1];
-      if (!(b > a)) continue;
-      const T hw = (b - a) / 2, mid = (a + b) / 2;
-      for (size_t j = 0; j < rule->x.size(); ++j) {
-        const T th = mid + hw * rule->x[j];
-        const T x = lo + d * (1 - cos(th)) / 2;
-        sum += hw * rule->w[j] * (d / 2) * sin(th) * pm_->p(x) * hdot(z, A, B, c, e, x);
-      }
-    }
-    return sum;
+    return hist_zone_rate(*pm_, opt_.order * 2, z, A, B, c, e, lo, hi);
   }
 
   // slip accumulated at x over one step

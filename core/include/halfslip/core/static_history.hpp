@@ -1,0 +1,818 @@
+// halfslip core: load histories by static solves of advancing segments (issue 14).
+//
+// Canonical frame as core/history.hpp: a = p0 = f = E* = 1, q = Q/fP, s = sigma/(f p0),
+// P = pi/2 for every pressure (p0 = 2P/(pi a)); the stick zone is (-b2, b1).
+//
+// Along a straight segment on which each stick-zone end only advances (the stick zone
+// shrinks), every point of the final stick zone stays stuck throughout and every point
+// between a new end and the edge slips with that zone's direction d_i at the end. The
+// state after the segment then follows from the state before it by ONE static solve,
+// whatever the path within the segment (docs/history.md, "Advancing segments in one
+// static solve"). With q_S the traction before and dq = q_new - q_S:
+//   band i (between the new end and the edge): dq = g_i = d_i p - q_S;
+//   stick zone: (2/pi) PV int dq(xi)/(x - xi) dxi = ds/2, int dq = dQ pi/2;
+// bounded at both ends iff (W = sqrt|(x - b1)(x + b2)|, c = (b1 - b2)/2, X = +W on band 1,
+// -W on band 2)
+//   ds/4 + (1/pi) int_bands g/X = 0,    int_bands g (x - c)/X = dQ pi/2,
+// and then dq(x) = (w(x)/pi) int_bands g(xi) / (X(xi) (xi - x)) dxi on the stick zone,
+// w = sqrt((b1 - x)(x + b2)).
+//
+// This class keeps the traction of the state on panels over the stick zone (values at
+// Gauss-Legendre nodes in theta, x = l + (r - l) sin^2(theta/2), which takes a square-root
+// cusp at either end of a panel: earlier end positions, the memory points, are panel ends),
+// so a segment costs a fixed amount of work, independent of the length of the history.
+// The ends along the segment, b_i(lambda), are static solves at Gauss nodes in lambda
+// (split where an end crosses a memory point or a pressure breakpoint); the energies and the
+// slip come from them through the slip rate of core/history.hpp (the rate of a fully stuck
+// interval), by quadrature in lambda.
+//
+// A segment that is not advancing-only (an end that recedes, an edge that stays stuck with
+// r_i = 0, a stick traction past the friction limit inside the stick zone: an interior slip
+// zone, a static solve that fails) throws status::not_applicable and leaves the state
+// unchanged; the caller marches such paths (core/history.hpp).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "gauss.hpp"
+#include "history_rates.hpp"
+#include "numerics.hpp"
+#include "pressure.hpp"
+#include "status.hpp"
+
+namespace hs { namespace core {
+
+namespace shdetail {
+
+// Gauss-Legendre rule in theta on (0, pi) with barycentric weights for interpolation.
+template <class T> struct trule {
+  std::vector<T> t, w, bw, sh, ch;  // nodes on (-1, 1), weights, barycentric weights, sin, cos(theta/2)
+  explicit trule(int n) {
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    const auto r = gauss_legendre<T>(n);
+    t = r->x;
+    w = r->w;
+    const T pi_ = pi<T>();
+    for (int j = 0; j < n; ++j) {
+      bw.push_back(T((j % 2) ? -1 : 1) * sqrt((1 - t[j]) * (1 + t[j]) * w[j]));
+      const T th = pi_ * (1 + t[j]) / 2;
+      sh.push_back(sin(th / 2));
+      ch.push_back(cos(th / 2));
+    }
+  }
+  int n() const { return int(t.size()); }
+  // interpolate values v at theta-parameter t0 in [-1, 1]
+  T interp(const std::vector<T> &v, const T &t0) const {
+    T num = 0, den = 0;
+    for (size_t j = 0; j < t.size(); ++j) {
+      const T d = t0 - t[j];
+      if (d == 0) return v[j];
+      const T c = bw[j] / d;
+      num += c * v[j];
+      den += c;
+    }
+    return num / den;
+  }
+};
+
+// the theta-parameter in [-1, 1] of x in [l, r]
+template <class T> T tpar(const T &l, const T &r, const T &x) {
+  using std::atan2;
+  using std::sqrt;
+  const T a = x - l, b = r - x;
+  const T th = 2 * atan2(sqrt(a > 0 ? a : T(0)), sqrt(b > 0 ? b : T(0)));
+  return 2 * th / pi<T>() - 1;
+}
+
+}  // namespace shdetail
+
+// one panel of the state's stick traction
+template <class T> struct sh_panel {
+  T l, r;
+  bool analytic = false;  // q = c p(x) exactly (a zone that stuck whole)
+  T c{0};
+  std::vector<T> v;     // values at the rule's nodes (analytic == false)
+  bool cusp_l = false;  // l is a memory point (a square-root cusp of q)
+};
+
+// a piece of a segment between crossings: the loads' parameter lambda and the ends at the
+// Gauss nodes t_j of a parameter t in (-1, 1) in which they are smooth (lambda itself, or a
+// theta-map of the end that starts on a cusp), with d lambda / dt
+template <class T> struct sh_piece {
+  std::vector<T> lam, b1, b2, dlam;
+};
+// a segment: its loads and the ends along it, for the slip and the energies
+template <class T> struct sh_segment {
+  T q0, s0, dq, ds;
+  int d1 = 0, d2 = 0;          // zone directions during the segment (0: none)
+  T b1s{1}, b2s{1};            // the ends at lambda = 0 (after any whole-zone stick)
+  std::vector<sh_piece<T>> pieces;
+  T E1{0}, E2{0};
+  T b1e{1}, b2e{1};
+  bool trajectory = true;  // the ends along the segment are known (energies, slip)
+};
+
+template <class T> class static_history {
+ public:
+  using pressure_ptr = std::shared_ptr<const pressure_model<T>>;
+  explicit static_history(pressure_ptr pm, int order = 24, int lam_order = 16)
+      : pm_(std::move(pm)),
+        rule_(std::make_shared<shdetail::trule<T>>(order)),
+        lrule_(std::make_shared<shdetail::trule<T>>(lam_order)) {
+    if (!pm_) throw error(status::null_pointer, "static_history: no pressure model");
+    for (const auto &bp : pm_->breakpoints())
+      if (bp.x > -1 && bp.x < 1) pbreaks_.push_back(bp.x);
+    sh_panel<T> p0;
+    p0.l = -1;
+    p0.r = 1;
+    p0.analytic = true;
+    p0.c = 0;
+    panels_ = split_at_breaks({p0});
+  }
+
+  T q() const { return q_; }
+  T s() const { return s_; }
+  T b1() const { return b1_; }
+  T b2() const { return b2_; }
+  int dir1() const { return s1_; }
+  int dir2() const { return s2_; }
+  const std::vector<sh_segment<T>> &segments() const { return segs_; }
+  const pressure_model<T> &pressure() const { return *pm_; }
+
+  // traction of the current state at x in [-1, 1]
+  T traction(const T &x) const { return qS(x); }
+
+  // slip accumulated at x over all segments
+  T slip(const T &x) const {
+    for (const auto &sg : segs_)
+      if (!sg.trajectory)
+        throw error(status::not_applicable,
+                    "static_history: the slip is not available after a segment whose end crossed a memory point");
+    T h = 0;
+    for (const auto &sg : segs_) h += seg_slip(sg, x);
+    return h;
+  }
+
+  // Move to (qn, sn) along a straight segment; throws not_applicable (state unchanged)
+  // if the segment is not advancing-only.
+  void add_vertex(const T &qn, const T &sn) {
+    using boost::math::isfinite;
+    using std::abs;
+    if (!isfinite(qn) || !isfinite(sn)) throw error(status::not_finite, "static_history: a path vertex is not finite");
+    if (!(abs(qn) < 1)) throw error(status::gross_sliding, "static_history: |Q| >= fP at a path vertex: gross sliding");
+    const T dq = qn - q_, ds = sn - s_;
+    if (dq == 0 && ds == 0) {
+      sh_segment<T> sg;
+      sg.q0 = q_;
+      sg.s0 = s_;
+      sg.dq = sg.ds = 0;
+      sg.d1 = s1_;
+      sg.d2 = s2_;
+      sg.b1s = sg.b1e = b1_;
+      sg.b2s = sg.b2e = b2_;
+      segs_.push_back(sg);
+      return;
+    }
+    // work on a copy: the state changes only if the segment succeeds
+    static_history nx(*this);
+    nx.advance(dq, ds);
+    *this = std::move(nx);
+  }
+
+ private:
+  // ---- state traction --------------------------------------------------------
+  T qS(const T &x) const {
+    if (x > b1_) return T(s1_) * pm_->p(x);
+    if (x < -b2_) return T(s2_) * pm_->p(x);
+    return panel_value(x);
+  }
+  T panel_value(const T &x) const {
+    // panels are sorted and contiguous over [-b2, b1]
+    size_t lo = 0, hi = panels_.size();
+    while (hi - lo > 1) {
+      const size_t m = (lo + hi) / 2;
+      if (panels_[m].l <= x) lo = m;
+      else hi = m;
+    }
+    const auto &P = panels_[lo];
+    if (P.analytic) return P.c * pm_->p(x);
+    return rule_->interp(P.v, shdetail::tpar(P.l, P.r, x));
+  }
+
+  std::vector<sh_panel<T>> split_at_breaks(std::vector<sh_panel<T>> in) const {
+    std::vector<sh_panel<T>> out;
+    for (auto &P : in) {
+      std::vector<T> cuts{P.l};
+      for (const T &b : pbreaks_)
+        if (b > P.l && b < P.r) cuts.push_back(b);
+      cuts.push_back(P.r);
+      for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+        sh_panel<T> Q = P;
+        Q.l = cuts[k];
+        Q.r = cuts[k + 1];
+        Q.cusp_l = k == 0 ? P.cusp_l : true;
+        out.push_back(Q);
+      }
+    }
+    return out;
+  }
+
+  // the cusps of the state inside (lo, hi): memory points and pressure breakpoints
+  std::vector<T> cusps_in(const T &lo, const T &hi) const {
+    std::vector<T> c;
+    for (const auto &P : panels_)
+      if (P.cusp_l && P.l > lo && P.l < hi) c.push_back(P.l);
+    // the ends of the stick zone (the traction has a cusp there too)
+    if (b1_ > lo && b1_ < hi) c.push_back(b1_);
+    if (-b2_ > lo && -b2_ < hi) c.push_back(-b2_);
+    for (const T &b : pbreaks_)
+      if (b > lo && b < hi) c.push_back(b);
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    return c;
+  }
+
+  static int sgn(const T &v) { return (v > 0) - (v < 0); }
+  static T r_of(int i, const T &dq, const T &ds, const T &e) { return hist_rate_end(i, dq, ds, e); }
+
+  // ---- band sums -------------------------------------------------------------
+  // For band i (1: (b1, 1), 2: (-1, -b2)), sum over its sub-intervals of
+  //   g(xi) K(xi) / X(xi) dxi,   g = d p - q_S,
+  // for kernels K = 1, xi - c, and (if xnear is given, x in the stick zone) 1/(xi - x),
+  // with theta-panels graded towards an end that lies close to x.
+  struct band_out {
+    T I{0}, J{0}, K{0};
+  };
+  band_out band(int i, const T &b1, const T &b2, int d, bool want_k, const T &x) const {
+    using std::cos;
+    using std::max;
+    using std::sin;
+    using std::sqrt;
+    band_out o;
+    if (d == 0) return o;
+    const T inner = i == 1 ? b1 : -b2;
+    const T lo = i == 1 ? b1 : T(-1), hi = i == 1 ? T(1) : -b2;
+    if (!(hi > lo)) return o;
+    // where the old zone continues with the same direction, g = 0
+    const int sold = i == 1 ? s1_ : s2_;
+    T glo = lo, ghi = hi;
+    if (sold == d) {
+      if (i == 1) ghi = std::min(hi, max(b1_, lo));
+      else glo = max(lo, std::min(-b2_, hi));
+    }
+    if (!(ghi > glo)) return o;
+    std::vector<T> cuts{glo};
+    for (const T &c : cusps_in(glo, ghi)) cuts.push_back(c);
+    cuts.push_back(ghi);
+    const T c = (b1 - b2) / 2;
+    const auto &R = *rule_;
+    const auto gr = gauss_legendre<T>(16);
+    const T pi_ = pi<T>();
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const T l = cuts[k], r = cuts[k + 1];
+      const T L = r - l;
+      if (!(L > 0)) continue;
+      const bool at_inner = (i == 1 && l == inner) || (i == 2 && r == inner);
+      // theta cuts: graded towards the end nearest x (if x is within L of it)
+      std::vector<T> th{T(0), pi_};
+      bool graded = false;
+      if (want_k) {
+        const T Dl = l - x, Dr = x - r;  // x < l (band 1) or x > r (band 2)
+        if (i == 1 && Dl < L) {
+          graded = true;
+          for (T a = 2 * sqrt(max(Dl, T(0)) / L); a < pi_ / 2; a *= 2)
+            if (a > 0) th.push_back(a);
+          th.push_back(pi_ / 2);
+        }
+        if (i == 2 && Dr < L) {
+          graded = true;
+          for (T a = 2 * sqrt(max(Dr, T(0)) / L); a < pi_ / 2; a *= 2)
+            if (a > 0) th.push_back(pi_ - a);
+          th.push_back(pi_ / 2);
+        }
+        std::sort(th.begin(), th.end());
+        th.erase(std::unique(th.begin(), th.end()), th.end());
+      }
+      auto node = [&](const T &sh, const T &ch, const T &wt) {
+        // xi - l = L sh^2, r - xi = L ch^2, exactly
+        const T xl = L * sh * sh, xr = L * ch * ch;
+        const T xi = xl <= xr ? l + xl : r - xr;
+        // dxi / X: dxi = L sh ch dtheta
+        T jw;
+        if (i == 1) {
+          const T dplus = xi + b2;
+          if (at_inner) jw = sqrt(L) * ch / sqrt(dplus);
+          else jw = L * sh * ch / sqrt((l - b1 + xl) * dplus);
+        } else {
+          const T dminus = b1 - xi;
+          if (at_inner) jw = -sqrt(L) * sh / sqrt(dminus);
+          else jw = -L * sh * ch / sqrt((-b2 - r + xr) * dminus);
+        }
+        // p with the exact distances to the edges where the sub-interval ends there
+        const T dm = (i == 2 && l == T(-1)) ? xl : 1 + xi;
+        const T dp = (i == 1 && r == T(1)) ? xr : 1 - xi;
+        const T g = T(d) * pm_->p(xi, dm, dp) - qS(xi);
+        const T f = g * jw * wt;
+        o.I += f;
+        o.J += f * (xi - c);
+        // xi - x from the exact distances (x is close to the band's end: xi - x = D + xl)
+        if (want_k) o.K += f / (i == 1 ? (l - x) + xl : -((x - r) + xr));
+      };
+      if (!graded) {
+        const T hw = pi_ / 2;
+        for (int j = 0; j < R.n(); ++j) node(R.sh[j], R.ch[j], hw * R.w[j]);
+      } else {
+        for (size_t m = 0; m + 1 < th.size(); ++m) {
+          const T a = th[m], b = th[m + 1], hw = (b - a) / 2, mid = (a + b) / 2;
+          for (size_t j = 0; j < gr->x.size(); ++j) {
+            const T t = mid + hw * gr->x[j];
+            node(sin(t / 2), cos(t / 2), hw * gr->w[j]);
+          }
+        }
+      }
+    }
+    return o;
+  }
+
+  std::array<T, 2> residual(const T &b1, const T &b2, int d1, int d2, const T &dq, const T &ds) const {
+    const T pi_ = pi<T>();
+    const auto o1 = band(1, b1, b2, d1, false, T(0));
+    const auto o2 = band(2, b1, b2, d2, false, T(0));
+    return {{ds / 4 + (o1.I + o2.I) / pi_, o1.J + o2.J - dq * pi_ / 2}};
+  }
+
+  // Newton for (b1, b2) at the load increment (dq, ds) from the state; ok = converged
+  bool solve(T &b1, T &b2, int d1, int d2, const T &dq, const T &ds) const {
+    using boost::math::isfinite;
+    using std::abs;
+    using std::max;
+    using std::sqrt;
+    const T h = sqrt(eps<T>());
+    const T tol = 64 * eps<T>();
+    auto inside = [&](const T &x1, const T &x2) {
+      return x1 < 1 && x2 < 1 && x1 + x2 > 0 && (d1 != 0 || x1 == 1) && (d2 != 0 || x2 == 1);
+    };
+    auto norm = [](const std::array<T, 2> &r) { return max(abs(r[0]), abs(r[1])); };
+    std::array<T, 2> r = residual(b1, b2, d1, d2, dq, ds);
+    T last = -1;
+    for (int it = 0; it < 60; ++it) {
+      const T h1 = h * max(T(1e-3), 1 - b1), h2 = h * max(T(1e-3), 1 - b2);
+      // one-sided differences into the contact
+      const auto r1 = residual(b1 - h1, b2, d1, d2, dq, ds);
+      const auto r2 = residual(b1, b2 - h2, d1, d2, dq, ds);
+      const T j11 = (r[0] - r1[0]) / h1, j21 = (r[1] - r1[1]) / h1;
+      const T j12 = (r[0] - r2[0]) / h2, j22 = (r[1] - r2[1]) / h2;
+      const T det = j11 * j22 - j12 * j21;
+      const T x1 = (r[0] * j22 - r[1] * j12) / det, x2 = (j11 * r[1] - j21 * r[0]) / det;
+      if (!isfinite(x1) || !isfinite(x2)) return false;
+      T lam = 1;
+      std::array<T, 2> rn;
+      T n1 = 0, n2 = 0;
+      bool acc = false;
+      for (int ls = 0; ls < 40; ++ls, lam /= 2) {
+        n1 = b1 - lam * x1;
+        n2 = b2 - lam * x2;
+        if (!inside(n1, n2)) continue;
+        rn = residual(n1, n2, d1, d2, dq, ds);
+        if (norm(rn) < norm(r) || lam < T(1) / 1024) {
+          acc = true;
+          break;
+        }
+      }
+      if (!acc) return false;
+      const T stp = max(abs(b1 - n1), abs(b2 - n2));
+      b1 = n1;
+      b2 = n2;
+      r = rn;
+      // converged: the step at the rounding floor, and the residual small (a step that
+      // only stalls, e.g. against a cusp where the residual has an infinite slope, is not)
+      if (stp <= tol || (stp <= 1e6 * eps<T>() && last >= 0 && stp > last / 2))
+        return norm(r) <= T(1e5) * eps<T>() * (1 + abs(dq) + abs(ds));
+      last = stp;
+    }
+    return false;
+  }
+
+  // ---- the segment -------------------------------------------------------------
+  void advance(const T &dq, const T &ds) {
+    using std::abs;
+    // decide the zones (the rules of core/history.hpp's decide(), without the recede)
+    for (int pass = 0; pass < 4; ++pass) {
+      bool changed = false;
+      const T e = (b1_ + b2_) / 2;
+      for (int i = 1; i <= 2 && !changed; ++i) {
+        int &si = i == 1 ? s1_ : s2_;
+        const T ri = r_of(i, dq, ds, e);
+        if (si == 0) continue;
+        if (T(si) * ri > 0) continue;
+        // the zone would recede if the stick zone can grow to e* (not modelled here)
+        if (ds != 0) {
+          const T es = (i == 1 ? 2 : -2) * dq / ds;
+          const T bo = i == 1 ? b2_ : b1_;
+          if (es >= e && 2 * es - bo < 1)
+            throw error(status::not_applicable, "static_history: a stick-zone end recedes on this segment");
+        }
+        stick_whole(i);
+        changed = true;
+      }
+      if (!changed) break;
+    }
+    const T e0 = (b1_ + b2_) / 2;
+    int d1 = s1_, d2 = s2_;
+    if (d1 == 0) d1 = sgn(r_of(1, dq, ds, e0));
+    if (d2 == 0) d2 = sgn(r_of(2, dq, ds, e0));
+    if (d1 == 0 || d2 == 0)
+      throw error(status::not_applicable, "static_history: an edge stays stuck along the segment (r_i = 0)");
+
+    sh_segment<T> sg;
+    sg.q0 = q_;
+    sg.s0 = s_;
+    sg.dq = dq;
+    sg.ds = ds;
+    sg.d1 = d1;
+    sg.d2 = d2;
+    sg.b1s = b1_;
+    sg.b2s = b2_;
+
+    auto guess = [&](const T &lam, T &g1, T &g2) {
+      g1 = b1_;
+      g2 = b2_;
+      const T e = (b1_ + b2_) / 2;
+      if (b1_ >= 1) g1 = 1 - std::max(T(1e-6), lam * abs(r_of(1, dq, ds, e)) / 2);
+      if (b2_ >= 1) g2 = 1 - std::max(T(1e-6), lam * abs(r_of(2, dq, ds, e)) / 2);
+    };
+    // The ends along the segment. With v = (ds/4, -dq pi/2) the residual is F(b1, b2) + lambda v
+    // (F: the band sums), so the path of the ends is the curve v1 F2 - v2 F1 = 0, and lambda
+    // = -F.v/|v|^2 on it. The ends cross the cusps of the start state (memory points,
+    // pressure breakpoints) in order; each crossing is found with that end held on the cusp
+    // (a 1-D root in the other end, bracketed), and between crossings the ends are smooth in
+    // lambda (Gauss nodes, Newton from the neighbouring node).
+    std::vector<std::array<T, 3>> ev{{{T(0), b1_, b2_}}};
+    std::vector<int> evi{0};  // the end on the cusp at each event (0: none, lambda = 0)
+    {
+      const std::vector<T> cus = cusps_in(-b2_, b1_);
+      for (size_t guard = 0; guard < 2 * cus.size() + 4; ++guard) {
+        const auto cur = ev.back();
+        std::array<T, 3> best{{T(2), T(0), T(0)}};
+        int bi = 0;
+        for (int i = 1; i <= 2; ++i) {
+          // the next cusp inwards from end i
+          T m = 0;
+          bool have = false;
+          for (const T &c : cus) {
+            if (i == 1 && c < cur[1] && c > -cur[2] && (!have || c > m)) m = c, have = true;
+            if (i == 2 && c > -cur[2] && c < cur[1] && (!have || c < m)) m = c, have = true;
+          }
+          if (!have) continue;
+          std::array<T, 3> e;
+          if (end_driven(i, i == 1 ? m : -m, cur, d1, d2, dq, ds, e) && e[0] > cur[0] && e[0] < best[0]) {
+            best = e;
+            bi = i;
+          }
+        }
+        if (!(best[0] <= 1)) break;
+        ev.push_back(best);
+        evi.push_back(bi);
+      }
+    }
+    // pieces [ev[k], ev[k+1]], the last one ending at lambda = 1
+    const auto &R = *lrule_;
+    const int nl = R.n();
+    const T A = dq / 2, Bq = ds / 4;
+    T fb1 = 0, fb2 = 0;
+    if (ev.size() > 1) {
+      // An end crosses a cusp of the start state. The state at the vertex is exact (the
+      // static solve from the last crossing), but the ends leave a cusp like a power of the
+      // load with a near-singular residual, and the Gauss nodes in lambda are not resolved
+      // there yet: no trajectory, so no energies and no slip for this segment.
+      sg.trajectory = false;
+      sg.E1 = sg.E2 = std::numeric_limits<T>::quiet_NaN();
+      const auto &lst = ev.back();
+      const int i = evi.back();
+      T g1 = lst[1], g2 = lst[2];
+      (i == 1 ? g1 : g2) -= T(1e-6) * (1 + (i == 1 ? g1 : g2));
+      if (!(lst[0] < 1) || !solve(g1, g2, d1, d2, dq, ds))
+        throw error(status::not_applicable, "static_history: the static solve of the segment did not converge");
+      fb1 = g1;
+      fb2 = g2;
+    } else {
+      // no crossing: the ends are smooth in lambda; Gauss nodes, each solve from the one before
+      T wb1 = b1_, wb2 = b2_;
+      sh_piece<T> pc;
+      pc.lam.resize(nl);
+      pc.b1.resize(nl);
+      pc.b2.resize(nl);
+      pc.dlam.resize(nl);
+      for (int j = 0; j < nl; ++j) {
+        const T lam = (1 + R.t[j]) / 2;
+        T g1 = wb1, g2 = wb2;
+        if (j == 0) guess(lam, g1, g2);
+        if (!solve(g1, g2, d1, d2, dq * lam, ds * lam))
+          throw error(status::not_applicable, "static_history: the static solve of the segment did not converge");
+        if (j > 0 && (g1 > wb1 + 1e3 * eps<T>() || g2 > wb2 + 1e3 * eps<T>()))
+          throw error(status::not_applicable, "static_history: the ends did not advance monotonically");
+        pc.lam[j] = lam;
+        pc.b1[j] = wb1 = g1;
+        pc.b2[j] = wb2 = g2;
+        pc.dlam[j] = T(1) / 2;
+        const T c = (g1 - g2) / 2, e = (g1 + g2) / 2;
+        const T wl = R.w[j] * pc.dlam[j];
+        sg.E1 += wl * T(d1) * hist_zone_rate(*pm_, 32, +1, A, Bq, c, e, g1, T(1));
+        sg.E2 += wl * T(d2) * hist_zone_rate(*pm_, 32, -1, A, Bq, c, e, T(-1), -g2);
+      }
+      sg.pieces.push_back(std::move(pc));
+      fb1 = wb1;
+      fb2 = wb2;
+      if (!solve(fb1, fb2, d1, d2, dq, ds))
+        throw error(status::not_applicable, "static_history: the static solve of the segment did not converge");
+    }
+    if (ev.back()[0] == 1) {  // the last event is the vertex itself
+      fb1 = ev.back()[1];
+      fb2 = ev.back()[2];
+    }
+    // the ends advance throughout iff d_i r_i > 0 at the final half-width too (r_i is
+    // linear in e, and e only falls); no end may pass a cusp that was not located
+    {
+      const T ef = (fb1 + fb2) / 2;
+      if (!(T(d1) * r_of(1, dq, ds, ef) > 0) || !(T(d2) * r_of(2, dq, ds, ef) > 0))
+        throw error(status::not_applicable, "static_history: a stick-zone end stops advancing within the segment");
+      const auto &lst = ev.back();
+      if (fb1 > lst[1] || fb2 > lst[2]) throw error(status::not_applicable, "static_history: a stick-zone end recedes");
+      if (!cusps_in(-lst[2], -fb2).empty() || !cusps_in(fb1, lst[1]).empty())
+        throw error(status::not_applicable, "static_history: an end passed a memory point that was not located");
+    }
+    const T e1 = fb1, e2 = fb2;
+    sg.b1e = e1;
+    sg.b2e = e2;
+    // the new traction on panels over (-e2, e1)
+    std::vector<sh_panel<T>> np = new_panels(e1, e2, d1, d2, dq, ds);
+    // the friction limit inside the new stick zone (an interior slip zone otherwise)
+    check_limit(np);
+    panels_ = std::move(np);
+    b1_ = e1;
+    b2_ = e2;
+    s1_ = d1;
+    s2_ = d2;
+    q_ += dq;
+    s_ += ds;
+    segs_.push_back(sg);
+  }
+
+  // a zone sticks whole: the stick zone reaches the edge; q = s_old p there (analytic)
+  void stick_whole(int i) {
+    int &si = i == 1 ? s1_ : s2_;
+    sh_panel<T> P;
+    P.analytic = true;
+    P.c = T(si);
+    if (i == 1) {
+      P.l = b1_;
+      P.r = 1;
+      P.cusp_l = true;
+      auto add = split_at_breaks({P});
+      panels_.insert(panels_.end(), add.begin(), add.end());
+      b1_ = 1;
+    } else {
+      P.l = -1;
+      P.r = -b2_;
+      auto add = split_at_breaks({P});
+      if (!panels_.empty()) panels_.front().cusp_l = true;
+      panels_.insert(panels_.begin(), add.begin(), add.end());
+      b2_ = 1;
+    }
+    si = 0;
+  }
+
+  // The point where end i reaches m (b_i = m held), from the point cur (lambda, b1, b2): the
+  // other end solves v1 F2 - v2 F1 = 0 (bracketed: scanned inwards, then Illinois), and lambda
+  // = -F.v/|v|^2. False if there is no such point short of the stick zone closing.
+  bool end_driven(int i, const T &m, const std::array<T, 3> &cur, int d1, int d2, const T &dq, const T &ds,
+                  std::array<T, 3> &out) const {
+    using std::abs;
+    using std::max;
+    const T pi_ = pi<T>();
+    const T v1 = ds / 4, v2 = -dq * pi_ / 2;
+    auto F = [&](const T &bo, T &lam) {
+      const T x1 = i == 1 ? m : bo, x2 = i == 1 ? bo : m;
+      const auto f = residual(x1, x2, d1, d2, T(0), T(0));
+      lam = -(f[0] * v1 + f[1] * v2) / (v1 * v1 + v2 * v2);
+      return v1 * f[1] - v2 * f[0];
+    };
+    const T hiB = i == 1 ? cur[2] : cur[1];  // the other end now
+    const T loB = -m;                        // the stick zone closes
+    if (!(hiB > loB)) return false;
+    T lam;
+    T fa = F(hiB, lam);
+    T a = hiB;
+    if (fa == 0) {
+      out = {{lam, i == 1 ? m : a, i == 1 ? a : m}};
+      return true;
+    }
+    // scan inwards with growing steps
+    T d = max(T(1e-6), (hiB - loB) * T(1e-4)), b = a, fb = fa;
+    bool br = false;
+    for (int k = 0; k < 80; ++k) {
+      T nb = hiB - d;
+      if (!(nb > loB)) nb = loB + (b - loB) / 2;
+      const T fn = F(nb, lam);
+      if ((fn > 0) != (fa > 0)) {
+        b = nb;
+        fb = fn;
+        br = true;
+        break;
+      }
+      a = nb;
+      fa = fn;
+      d *= 2;
+      if (!(b - loB > 64 * eps<T>())) break;
+    }
+    if (!br) {
+      // the root may lie just outside the starting value (which is itself a root found to
+      // rounding): scan outwards, up to the edge
+      a = hiB;
+      fa = F(hiB, lam);
+      d = max(T(1e-6), (hiB - loB) * T(1e-4)) * 1e-6;
+      for (int k = 0; k < 80 && !br; ++k) {
+        T nb = hiB + d;
+        if (!(nb < 1)) nb = T(1);
+        const T fn = F(nb, lam);
+        if ((fn > 0) != (fa > 0)) {
+          b = nb;
+          fb = fn;
+          br = true;
+        }
+        if (nb == 1) break;
+        d *= 4;
+      }
+    }
+    if (!br) return false;
+    int side = 0;
+    T x = b;
+    for (int it = 0; it < 200; ++it) {
+      x = (a * fb - b * fa) / (fb - fa);
+      const T fx = F(x, lam);
+      if (fx == 0) break;
+      if ((fx > 0) == (fa > 0)) {
+        a = x;
+        fa = fx;
+        if (side == -1) fb /= 2;
+        side = -1;
+      } else {
+        b = x;
+        fb = fx;
+        if (side == 1) fa /= 2;
+        side = 1;
+      }
+      if (abs(a - b) <= 8 * eps<T>()) break;
+    }
+    F(x, lam);
+    out = {{lam, i == 1 ? m : x, i == 1 ? x : m}};
+    return true;
+  }
+
+  // traction after the segment at stick point x
+  T new_traction(const T &x, const T &b1, const T &b2, int d1, int d2) const {
+    using std::sqrt;
+    const auto o1 = band(1, b1, b2, d1, true, x);
+    const auto o2 = band(2, b1, b2, d2, true, x);
+    const T w = sqrt((b1 - x) * (x + b2));
+    return qS(x) + w / pi<T>() * (o1.K + o2.K);
+  }
+
+  std::vector<sh_panel<T>> new_panels(const T &b1, const T &b2, int d1, int d2, const T &dq, const T &ds) const {
+    (void)dq;
+    (void)ds;
+    std::vector<T> cuts{-b2};
+    for (const T &c : cusps_in(-b2, b1)) cuts.push_back(c);
+    cuts.push_back(b1);
+    std::vector<sh_panel<T>> out;
+    const auto &R = *rule_;
+    for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+      std::vector<std::pair<T, T>> todo{{cuts[k], cuts[k + 1]}};
+      bool first = true;
+      while (!todo.empty()) {
+        auto [l, r] = todo.front();
+        todo.erase(todo.begin());
+        sh_panel<T> P;
+        P.l = l;
+        P.r = r;
+        P.cusp_l = first && k > 0;
+        for (int j = 0; j < R.n(); ++j) {
+          const T xl = (r - l) * R.sh[j] * R.sh[j], xr = (r - l) * R.ch[j] * R.ch[j];
+          const T x = xl <= xr ? l + xl : r - xr;
+          P.v.push_back(new_traction(x, b1, b2, d1, d2));
+        }
+        // resolved? the last Legendre coefficients in theta, against the panel's scale
+        if (!resolved(P.v) && (r - l) > T(1e-6) && out.size() < 400) {
+          const T m = (l + r) / 2;
+          todo.insert(todo.begin(), {{l, m}, {m, r}});
+          continue;
+        }
+        first = false;
+        out.push_back(std::move(P));
+      }
+    }
+    return out;
+  }
+
+  bool resolved(const std::vector<T> &v) const {
+    using std::abs;
+    using std::max;
+    const auto &R = *rule_;
+    const int n = R.n();
+    T scale = 0;
+    for (const T &x : v) scale = max(scale, abs(x));
+    scale = max(scale, T(1e-3));
+    // coefficients of P_{n-1}, P_{n-2} in t
+    T cm[2] = {0, 0};
+    for (int j = 0; j < n; ++j) {
+      T p0 = 1, p1 = R.t[j];
+      for (int k = 2; k < n; ++k) {
+        const T p2 = (T(2 * k - 1) * R.t[j] * p1 - T(k - 1) * p0) / T(k);
+        p0 = p1;
+        p1 = p2;
+      }
+      // p1 = P_{n-1}, p0 = P_{n-2}
+      cm[0] += R.w[j] * v[j] * p1;
+      cm[1] += R.w[j] * v[j] * p0;
+    }
+    cm[0] *= T(2 * (n - 1) + 1) / 2;
+    cm[1] *= T(2 * (n - 2) + 1) / 2;
+    return max(abs(cm[0]), abs(cm[1])) <= 1e3 * eps<T>() * scale;
+  }
+
+  void check_limit(const std::vector<sh_panel<T>> &np) const {
+    using std::abs;
+    const auto &R = *rule_;
+    for (const auto &P : np)
+      for (int j = 0; j < R.n(); ++j) {
+        const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
+        const T x = xl <= xr ? P.l + xl : P.r - xr;
+        const T p = pm_->p(x);
+        if (abs(P.v[j]) > p * (1 + 1e3 * eps<T>()) + 1e3 * eps<T>())
+          throw error(status::not_applicable,
+                      "static_history: the stick traction passes the friction limit inside the stick zone (an "
+                      "interior slip zone)");
+      }
+  }
+
+  // ---- slip --------------------------------------------------------------------
+  T seg_slip(const sh_segment<T> &sg, const T &x) const {
+    using std::cos;
+    using std::sin;
+    if (sg.dq == 0 && sg.ds == 0) return T(0);
+    const T A = sg.dq / 2, B = sg.ds / 4;
+    const auto gr = gauss_legendre<T>(24);
+    const auto &R = *lrule_;
+    const T pi_ = pi<T>();
+    T h = 0;
+    for (const auto &pc : sg.pieces) {
+      for (int z = -1; z <= 1; z += 2) {
+        const int dz = z > 0 ? sg.d1 : sg.d2;
+        if (dz == 0) continue;
+        // depth of x into zone z at t (the ends only advance: it grows with t)
+        auto depth = [&](const T &t) {
+          return z > 0 ? x - R.interp(pc.b1, t) : -R.interp(pc.b2, t) - x;
+        };
+        if (!(depth(T(1)) > 0)) continue;
+        T t0 = -1;
+        if (!(depth(T(-1)) > 0)) {
+          T lo = -1, hi = 1;
+          for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
+            const T m = (lo + hi) / 2;
+            if (depth(m) > 0) hi = m;
+            else lo = m;
+          }
+          t0 = hi;
+        }
+        // the slip rate grows like sqrt(t - t0): t = t0 + (1 - t0) sin^2(phi/2)
+        const T span = 1 - t0;
+        for (size_t j = 0; j < gr->x.size(); ++j) {
+          const T ph = pi_ * (1 + gr->x[j]) / 2;
+          const T sh = sin(ph / 2);
+          const T t = t0 + span * sh * sh;
+          const T wt = pi_ / 2 * gr->w[j] * span * sin(ph) / 2;
+          const T b1 = R.interp(pc.b1, t), b2 = R.interp(pc.b2, t);
+          h += wt * R.interp(pc.dlam, t) * hist_hdot(z, A, B, (b1 - b2) / 2, (b1 + b2) / 2, x);
+        }
+      }
+    }
+    return h;
+  }
+
+  pressure_ptr pm_;
+  std::shared_ptr<const shdetail::trule<T>> rule_;
+  std::shared_ptr<const shdetail::trule<T>> lrule_;
+  std::vector<T> pbreaks_;
+  std::vector<sh_panel<T>> panels_;
+  std::vector<sh_segment<T>> segs_;
+  T q_{0}, s_{0}, b1_{1}, b2_{1};
+  int s1_ = 0, s2_ = 0;
+};
+
+}}  // namespace hs::core
