@@ -22,6 +22,7 @@
 #include "halfslip/core/history.hpp"
 #include "halfslip/reference/bem_history.hpp"
 #include "halfslip/reference/reversal_oracle.hpp"
+#include "halfslip/core/static_history.hpp"
 #include "halfslip/core/status.hpp"
 
 using namespace hs::core;
@@ -261,6 +262,18 @@ int main(int argc, char **argv) {
           },
           "march", setting);
     }
+    // the library's static solves from the state it reached (core/static_history.hpp): the
+    // ramp and the segment, with energies and slip where no end crosses a memory point
+    run(
+        [&](const seg &c, double &b1, double &b2, size_t &n) {
+          static_history<double> h(hertz);
+          h.add_vertex(c.q0, c.s0);
+          h.add_vertex(c.q1, c.s1);
+          b1 = h.b1();
+          b2 = h.b2();
+          n = 0;
+        },
+        "static_history", "(2 segments each)");
     for (double rtol : {1e-6, 1e-8, 1e-10}) {
       char setting[32];
       std::snprintf(setting, sizeof setting, "rtol %g", rtol);

@@ -119,52 +119,48 @@ TEST_CASE("static history: segments after a ramp against the static-solve oracle
 }
 
 // The march (core/history.hpp) converges to the static solution as its step shrinks. Path:
-// sigma first, then Q cycles. The third segment reverses both zones and zone 1's new end
-// passes two memory points: the static state at its vertex is exact, but this version keeps
-// no trajectory for such a segment (no energies, no slip), and the march there converges
-// only to first order or erratically (flat punch: 2.3e-4, 7.4e-5, 2.0e-5, 9.2e-6 a at steps
-// 1/128 ... 1/1024; Hertz: 1.9e-7 a at 1/128 to 1/512, 1.2e-6 at 1/1024), so only the
-// march's shrinking error is checked there. Elsewhere they agree to 2e-8.
+// sigma first, then Q cycles. In the third segment both zones reverse and zone 1's new end
+// passes two memory points; there the march converges only to first order or erratically
+// (flat punch: 2.3e-4, 7.4e-5, 2.0e-5, 9.2e-6 a at steps 1/128 ... 1/1024; Hertz: 1.9e-7 a at
+// 1/128 to 1/512, 1.2e-6 at 1/1024), so only the march's shrinking error (or agreement to
+// 5e-7) is checked there and in what it carries to the next vertex (traction, slip).
+// Elsewhere they agree to 2e-8.
 TEST_CASE("static history: the march converges to it (Hertz and flat punch, sigma then Q cycles)") {
   std::vector<std::shared_ptr<const pressure_model<double>>> pms{hertz_pm(),
                                                                  std::make_shared<flat_rounded_pressure<double>>(0.5)};
   const std::vector<std::pair<double, double>> path{{0, 0.6}, {0.4, 0.6}, {-0.3, 0.6}, {0.35, 0.6}};
   for (const auto &pm : pms) {
     static_history<double> h(pm);
-    std::vector<std::array<double, 5>> st;
+    std::vector<std::array<double, 6>> st;
     for (const auto &v : path) {
       h.add_vertex(v.first, v.second);
       const auto &sg = h.segments().back();
-      st.push_back({h.b1(), h.b2(), sg.E1, sg.E2, h.traction(0.5)});
+      st.push_back({h.b1(), h.b2(), sg.E1, sg.E2, h.traction(0.5), h.slip(0.97)});
     }
-    CHECK(h.segments()[1].trajectory);
-    CHECK(!h.segments()[2].trajectory);
-    CHECK(h.segments()[3].trajectory);
-    CHECK(std::isnan(h.segments()[2].E1));
-    CHECK_THROWS(h.slip(0.9));
-    std::vector<std::vector<std::array<double, 5>>> mr;
+    CHECK(h.segments()[2].pieces.size() == 3);  // two crossings
+    std::vector<std::vector<std::array<double, 6>>> mr;
     for (double step : {1.0 / 128, 1.0 / 512}) {
       history_options<double> o;
       o.max_step = step;
       history<double> m(pm, o);
-      std::vector<std::array<double, 5>> r;
+      std::vector<std::array<double, 6>> r;
       for (const auto &v : path) {
         m.add_vertex(v.first, v.second);
         const auto &mv = m.vertices().back();
-        r.push_back({mv.b1, mv.b2, mv.energy1, mv.energy2,
-                     history_traction_at(m, m.step_count(), 0.5, 1.0, 1.0, 1.0)});
+        r.push_back({mv.b1, mv.b2, mv.energy1, mv.energy2, history_traction_at(m, m.step_count(), 0.5, 1.0, 1.0, 1.0),
+                     m.slip(0.97, m.step_count())});
       }
       mr.push_back(r);
     }
     for (size_t k = 0; k < path.size(); ++k) {
       CAPTURE(k);
-      for (int j = 0; j < 5; ++j) {
-        if (k == 2 && (j == 2 || j == 3)) continue;  // no energies without a trajectory
+      for (int j = 0; j < 6; ++j) {
         CAPTURE(j);
         const double e128 = std::fabs(mr[0][k][j] - st[k][j]), e512 = std::fabs(mr[1][k][j] - st[k][j]);
         const double scale = (j == 2 || j == 3) ? st[k][2] + st[k][3] : 1.0;
-        // (the traction after the third segment carries the march's error there)
-        if (k == 2 || (k == 3 && j == 4)) CHECK(e512 < std::max(0.5 * e128, 5e-7 * scale));
+        // (there the Hertz march is erratic at 1.7e-6 of the energy and 1.9e-7 a, so the floor
+        // is the march's own error; the static side is checked against the oracle above)
+        if (k == 2 || (k == 3 && j >= 4)) CHECK(e512 < std::max(0.5 * e128, 5e-6 * scale));
         else CHECK(e512 < 2e-8 * scale);
       }
     }
@@ -173,6 +169,40 @@ TEST_CASE("static history: the march converges to it (Hertz and flat punch, sigm
       const double c = std::sqrt(1 - (0.35 + 0.3) / 2);
       CHECK(std::fabs(st[3][0] - c) < 64 * 2.2e-16);
       CHECK(std::fabs(st[3][1] - c) < 64 * 2.2e-16);
+    }
+  }
+}
+
+// Steady shear cycling at a constant bulk tension: after the first cycle every half cycle
+// returns to the turning point before (Masing), and by the superposition at constant normal
+// load the state at +-Qa is that at -+Qa plus twice the monotonic solution of Qa alone (no
+// sigma increment): the stick zone is the monotonic one of (Qa, 0), centred, and each zone
+// dissipates twice its monotonic energy at (Qa, 0) per half cycle. Closed forms for Hertz,
+// the general solver for the flat punch: independent of the static solves.
+TEST_CASE("static history: steady Q cycles at constant sigma (Masing returns, Ciavarella-Jager)") {
+  std::vector<std::shared_ptr<const pressure_model<double>>> pms{hertz_pm(),
+                                                                 std::make_shared<flat_rounded_pressure<double>>(0.5)};
+  for (const auto &pm : pms) {
+    for (const auto &c : {std::make_pair(0.3, 0.6), std::make_pair(0.2, 1.0), std::make_pair(0.45, 0.2)}) {
+      const double qa = c.first, sm = c.second;
+      CAPTURE(qa);
+      CAPTURE(sm);
+      general_scene<double> sc;
+      sc.q = qa;
+      sc.s = 0;
+      const auto m = solve_general<double>(*pm, sc);
+      static_history<double> h(pm);
+      h.add_vertex(0, sm);
+      for (int k = 0; k < 10; ++k) {
+        h.add_vertex(k % 2 ? qa : -qa, sm);
+        if (k < 2) continue;
+        const auto &sg = h.segments().back();
+        CAPTURE(k);
+        CHECK(std::fabs(h.b1() - m.b1()) < 1e-12);
+        CHECK(std::fabs(h.b2() - m.b2()) < 1e-12);
+        CHECK(std::fabs(sg.E1 - 2 * m.energy(1)) < 1e-10 * m.energy(1));
+        CHECK(std::fabs(sg.E2 - 2 * m.energy(2)) < 1e-10 * m.energy(2));
+      }
     }
   }
 }
