@@ -40,7 +40,7 @@ TEST_CASE("static history: the first segment from zero is the monotonic solution
     CHECK(std::fabs(h.b2() - m.b2()) < 64 * 2.2e-16);
     CHECK(h.dir1() == m.dir1());
     CHECK(h.dir2() == m.dir2());
-    const auto &sg = h.segments().back();
+    const auto &sg = h.last_segment();
     const double E = m.energy(1) + m.energy(2);
     CHECK(std::fabs(sg.E1 - m.energy(1)) <= 1e-12 * E);
     CHECK(std::fabs(sg.E2 - m.energy(2)) <= 1e-12 * E);
@@ -67,7 +67,7 @@ TEST_CASE("static history: the first segment of a general pressure is the monoto
       CAPTURE(c.second);
       CHECK(std::fabs(h.b1() - m.b1()) < 1e-12);
       CHECK(std::fabs(h.b2() - m.b2()) < 1e-12);
-      const auto &sg = h.segments().back();
+      const auto &sg = h.last_segment();
       const double E = m.energy(1) + m.energy(2);
       CHECK(std::fabs(sg.E1 - m.energy(1)) <= 1e-10 * E);
       CHECK(std::fabs(sg.E2 - m.energy(2)) <= 1e-10 * E);
@@ -134,10 +134,10 @@ TEST_CASE("static history: the march converges to it (Hertz and flat punch, sigm
     std::vector<std::array<double, 6>> st;
     for (const auto &v : path) {
       h.add_vertex(v.first, v.second);
-      const auto &sg = h.segments().back();
+      const auto &sg = h.last_segment();
       st.push_back({h.b1(), h.b2(), sg.E1, sg.E2, h.traction(0.5), h.slip(0.97)});
     }
-    CHECK(h.segments()[2].pieces.size() == 3);  // two crossings
+    CHECK(h.segment(2).pieces.size() == 3);  // two crossings
     std::vector<std::vector<std::array<double, 6>>> mr;
     for (double step : {1.0 / 128, 1.0 / 512}) {
       history_options<double> o;
@@ -196,7 +196,7 @@ TEST_CASE("static history: steady Q cycles at constant sigma (Masing returns, Ci
       for (int k = 0; k < 10; ++k) {
         h.add_vertex(k % 2 ? qa : -qa, sm);
         if (k < 2) continue;
-        const auto &sg = h.segments().back();
+        const auto &sg = h.last_segment();
         CAPTURE(k);
         CHECK(std::fabs(h.b1() - m.b1()) < 1e-12);
         CHECK(std::fabs(h.b2() - m.b2()) < 1e-12);

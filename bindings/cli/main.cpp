@@ -104,7 +104,8 @@ const char *kUsage =
     "  straight segments to each vertex; or periodic Q = Qm + Qa sin wt, sigma = Sm + Sa sin(wt + phase).\n"
     "  Loads are ratios Q/fP, sigma/(f p0), or forces per unit length and stresses with the dimensional\n"
     "  options (--P --R --E-star --f; no --Q/--sigma). Geometry and scale options as for solve.\n"
-    "  A path along one ray through the origin is solved by superposition (no march, \"method\").\n"
+    "  A path along one ray through the origin is solved by superposition; a path whose segments all\n"
+    "  advance (no zone recedes) by one static solve per segment; any other by the march (\"method\").\n"
     "  --digits N              certified digits (reference backend) for a --path along one ray\n"
     "  --cycles N              number of cycles (default 10)\n"
     "  --ramp R                how the cycle is reached from zero: sigma-first (default), together, q-first\n"
@@ -969,10 +970,11 @@ int cmd_history(int argc, char **argv) {
                  args.count("--fields-at") ? args.at("--fields-at") : "");
     hs_solution_free(st);
   }
-  // every vertex without a load step: the path lies on one ray and its states are
-  // sums of monotonic solutions (docs/history.md); the march always has a step
-  bool superposed = nv > 0;
-  for (const auto &v : vs) superposed = superposed && v.step == 0 && v.steps == 0;
+  // how the history took its states (superposition, static solves, march)
+  int method = HS_HISTORY_MARCH;
+  hs_history_method(h, &method);
+  const bool superposed = nv > 0 && method == HS_HISTORY_SUPERPOSITION;
+  const bool statics = nv > 0 && method == HS_HISTORY_STATIC;
   if (json) {
     // whole-path figures: the smallest step and the largest (per-segment) estimate
     double smin = nv ? vs[0].step : ho.max_step, emax = 0;
@@ -984,7 +986,8 @@ int cmd_history(int argc, char **argv) {
         "{\"geometry\": \"%s\", \"a\": %s, \"p0\": %s, \"P\": %s, \"f\": %s, \"E_star\": %s, "
         "\"rtol\": %s, \"method\": \"%s\", \"step\": %s, \"error_estimate\": %s, \"vertices\": [",
         geometry.c_str(), num(scene.a).c_str(), num(scene.p0).c_str(), num(P).c_str(), num(scene.f).c_str(),
-        num(scene.E_star).c_str(), num(ho.rtol).c_str(), superposed ? "superposition" : "march", num(smin).c_str(),
+        num(scene.E_star).c_str(), num(ho.rtol).c_str(), superposed ? "superposition" : statics ? "static" : "march",
+        num(smin).c_str(),
         num(emax).c_str());
     for (size_t i = 0; i < nv; ++i) {
       const auto &v = vs[i];
@@ -1050,6 +1053,10 @@ int cmd_history(int argc, char **argv) {
           "  a path along one ray: states by superposition of monotonic solutions (no march), estimated error "
           "%.2g\n",
           emax);
+    } else if (statics) {
+      std::printf(
+          "  every segment advances: one static solve per segment from the state before it (no march; "
+          "docs/history.md)\n");
     } else if (nv) {
       double smin = vs[0].step, smax = vs[0].step, emax = 0;
       for (const auto &v : vs) {

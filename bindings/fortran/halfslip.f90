@@ -98,6 +98,10 @@ module halfslip
   ! interior slip patches (hs_history_options%interior_patches, issue 14)
   integer(c_int), parameter, public :: HS_PATCHES_ERROR = 0
   integer(c_int), parameter, public :: HS_PATCHES_MERGE = 1
+  ! how a history computes its states (hs_history_method)
+  integer(c_int), parameter, public :: HS_HISTORY_SUPERPOSITION = 1
+  integer(c_int), parameter, public :: HS_HISTORY_STATIC        = 2
+  integer(c_int), parameter, public :: HS_HISTORY_MARCH         = 3
 
   integer(c_int), parameter, public :: HS_FIELD_TRACTION = 1
   integer(c_int), parameter, public :: HS_FIELD_SLIP     = 2
@@ -276,6 +280,7 @@ module halfslip
   public :: hs_solution_ramp, hs_solution_steady_cycle
   public :: hs_history_options_default, hs_history_new, hs_history_free, hs_history_add_vertices
   public :: hs_history_add_cycles, hs_history_vertex_count, hs_history_vertex_get, hs_history_eval
+  public :: hs_history_method
   public :: hs_history_cycle_summary, hs_history_slip_range, hs_history_state
   public :: hs_associated
 
@@ -629,6 +634,13 @@ module halfslip
       integer(c_int), value :: cycles
       integer(c_int) :: st
     end function c_hs_history_add_cycles
+
+    function c_hs_history_method(h, m) bind(c, name="hs_history_method") result(st)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: h
+      integer(c_int), intent(inout) :: m
+      integer(c_int) :: st
+    end function c_hs_history_method
 
     function c_hs_history_vertex_count(h, n) bind(c, name="hs_history_vertex_count") result(st)
       import :: c_int, c_ptr, c_size_t
@@ -1216,6 +1228,18 @@ contains
     call check(c_hs_history_add_cycles(hist%ptr, Qm_over_fP, Qa_over_fP, Sm_over_fp0, Sa_over_fp0, phase_deg, &
                                        int(cycles, c_int)), 'hs_history_add_cycles', ierr)
   end subroutine hs_history_add_cycles
+
+  ! How the history computes its states: HS_HISTORY_SUPERPOSITION, HS_HISTORY_STATIC or HS_HISTORY_MARCH.
+  subroutine hs_history_method(hist, method, ierr)
+    type(hs_history_t), intent(in) :: hist
+    integer, intent(inout) :: method
+    integer, intent(out), optional :: ierr
+    integer(c_int) :: cm, st
+    cm = 0
+    st = c_hs_history_method(hist%ptr, cm)
+    if (st == HS_OK) method = int(cm)
+    call check(st, 'hs_history_method', ierr)
+  end subroutine hs_history_method
 
   subroutine hs_history_vertex_count(hist, n, ierr)
     type(hs_history_t), intent(in) :: hist

@@ -225,6 +225,9 @@ core::contact_state<double> state_of_solution(const core::general_solution<doubl
 core::contact_state<double> state_of_solution(const hs::capi::history_state &s, double bulk2) {
   return core::history_contact_state<double>(s.hist, s.nsteps(), s.scene.a, s.scene.p0, s.scene.f, bulk2);
 }
+core::contact_state<double> state_of_solution(const hs::capi::static_state &s, double bulk2) {
+  return core::static_contact_state<double>(s.hist, s.scene.a, s.scene.p0, s.scene.f, bulk2);
+}
 template <class S> core::contact_state<double> state_of_solution(const S &s, double bulk2) {
   return core::make_state<double>(s, bulk2);
 }

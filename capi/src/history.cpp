@@ -13,6 +13,7 @@
 
 #include "halfslip/core/history.hpp"
 #include "halfslip/core/ray_history.hpp"
+#include "halfslip/core/static_history.hpp"
 #include "solution.hpp"
 
 namespace core = hs::core;
@@ -48,7 +49,19 @@ struct hs_history {
   std::vector<std::pair<double, double>> input;  // the vertices given, in order
   core::history_options<double> march_options;
   double march_rtol = 0;
-  size_t vertex_count() const { return ray_mode ? ray_vertices.size() : h->fine().vertices().size(); }
+  // issue 14: off the ray, while every segment advances, one static solve per segment
+  // (core/static_history.hpp): a snapshot of the history after each vertex (cheap: the
+  // segments are shared). The first segment it cannot take replays the path in the march.
+  bool static_mode = false;
+  std::shared_ptr<const core::static_history<double>> st;
+  struct static_vertex_rec {
+    std::shared_ptr<const core::static_history<double>> snap;
+    double E1 = 0, E2 = 0;  // the segment ending here, canonical units
+  };
+  std::vector<static_vertex_rec> static_vertices;
+  size_t vertex_count() const {
+    return ray_mode ? ray_vertices.size() : static_mode ? static_vertices.size() : h->fine().vertices().size();
+  }
 };
 
 namespace {
@@ -222,16 +235,61 @@ bool add_on_ray_solved(hs_history &h, double q, double s, core::ray_path<double>
   return true;
 }
 
-// Leaves the superposition: the march replays the path so far.
+// Leaves the superposition or the static solves: the march replays the path so far.
 void to_march(hs_history &h) {
-  if (!h.ray_mode) return;
+  if (!h.ray_mode && !h.static_mode) return;
   // into a fresh march: if the replay fails, the history stays as it was
   auto m = std::make_unique<core::refined_history<double>>(h.pm, h.march_options, h.march_rtol);
   for (const auto &v : h.input) m->add_vertex(v.first, v.second);
   h.h = std::move(m);
   h.ray_mode = false;
+  h.static_mode = false;
+  h.ray_vertices.clear();
+  h.static_vertices.clear();
+  h.st.reset();
+  h.mono_cache.clear();
+}
+
+// One vertex by a static solve from the history's static state (canonical loads); false
+// (nothing changed) when the segment does not only advance (not_applicable).
+bool add_static(const core::static_history<double> &from, double q, double s,
+                std::shared_ptr<const core::static_history<double>> &to, hs_history::static_vertex_rec &rec) {
+  auto next = std::make_shared<core::static_history<double>>(from);
+  try {
+    next->add_vertex(q, s);
+  } catch (const core::error &e) {
+    if (e.code() == core::status::not_applicable || e.code() == core::status::no_convergence) return false;
+    throw;
+  }
+  rec.E1 = double(next->last_segment().E1);
+  rec.E2 = double(next->last_segment().E2);
+  require(std::isfinite(rec.E1) && std::isfinite(rec.E2), core::status::overflow,
+          "history: an energy is not representable");
+  rec.snap = next;
+  to = std::move(next);
+  return true;
+}
+
+// Leaves the superposition for the static solves: they replay the path so far. False
+// (nothing changed) if a segment of it cannot be taken that way.
+bool to_static(hs_history &h) {
+  if (!h.ray_mode) return h.static_mode;
+  std::shared_ptr<const core::static_history<double>> cur = std::make_shared<core::static_history<double>>(h.pm);
+  std::vector<hs_history::static_vertex_rec> recs;
+  for (const auto &v : h.input) {
+    hs_history::static_vertex_rec rec;
+    std::shared_ptr<const core::static_history<double>> nx;
+    if (!add_static(*cur, v.first, v.second, nx, rec)) return false;
+    cur = nx;
+    recs.push_back(std::move(rec));
+  }
+  h.st = cur;
+  h.static_vertices = std::move(recs);
+  h.static_mode = true;
+  h.ray_mode = false;
   h.ray_vertices.clear();
   h.mono_cache.clear();
+  return true;
 }
 
 }  // namespace
@@ -243,6 +301,20 @@ int hs_history_add_vertices(hs_history *h, size_t n, const double *q, const doub
       if (h->ray_mode && add_on_ray(*h, q[i], s[i])) {
         h->input.emplace_back(q[i], s[i]);
         continue;
+      }
+      // off the ray: the static solves, while every segment advances
+      require(std::isfinite(q[i]) && std::isfinite(s[i]), core::status::not_finite,
+              "history: a path vertex is not finite");
+      require(std::fabs(q[i]) < 1, core::status::gross_sliding, "history: |Q| >= fP at a path vertex: gross sliding");
+      if ((h->ray_mode || h->static_mode) && to_static(*h)) {
+        hs_history::static_vertex_rec rec;
+        std::shared_ptr<const core::static_history<double>> nx;
+        if (add_static(*h->st, q[i], s[i], nx, rec)) {
+          h->st = nx;
+          h->static_vertices.push_back(std::move(rec));
+          h->input.emplace_back(q[i], s[i]);
+          continue;
+        }
       }
       to_march(*h);
       h->h->add_vertex(q[i], s[i]);
@@ -311,6 +383,13 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
   });
 }
 
+int hs_history_method(const hs_history *h, int *method) {
+  return guard([&] {
+    require(h != nullptr && method != nullptr, core::status::null_pointer, "NULL");
+    *method = h->ray_mode ? HS_HISTORY_SUPERPOSITION : h->static_mode ? HS_HISTORY_STATIC : HS_HISTORY_MARCH;
+  });
+}
+
 int hs_history_vertex_count(const hs_history *h, size_t *n) {
   return guard([&] {
     require(h != nullptr && n != nullptr, core::status::null_pointer, "NULL");
@@ -341,8 +420,26 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       out->interior_merges = 0;
       return;
     }
-    const auto &v = h->h->fine().vertices()[i];
     const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
+    if (h->static_mode) {  // static solves: exact to the tests' 1e-10, no steps
+      const auto &v = h->static_vertices[i];
+      const auto &st = *v.snap;
+      out->Q_over_fP = st.q();
+      out->sigma_over_fp0 = st.s();
+      out->b1 = sc.a * st.b1();
+      out->b2 = sc.a * st.b2();
+      out->slip_dir1 = st.b1() < 1 ? st.dir1() : 0;
+      out->slip_dir2 = st.b2() < 1 ? st.dir2() : 0;
+      out->energy1 = escale * v.E1;
+      out->energy2 = escale * v.E2;
+      out->cycle = 0;
+      out->steps = 0;
+      out->step = 0;
+      out->error_estimate = 0;
+      out->interior_merges = 0;
+      return;
+    }
+    const auto &v = h->h->fine().vertices()[i];
     out->Q_over_fP = v.q;
     out->sigma_over_fp0 = v.s;
     out->b1 = sc.a * v.b1;
@@ -393,6 +490,19 @@ int hs_history_eval(const hs_history *h, size_t vertex, int field, size_t n, con
       std::copy(tmp.begin(), tmp.end(), out);
       return;
     }
+    if (h->static_mode) {
+      const auto &sc = h->scene;
+      const auto &st = *h->static_vertices[vertex].snap;
+      for (size_t i = 0; i < n; ++i) {
+        require(std::isfinite(x[i]), core::status::not_finite, "x");
+        require(std::fabs(x[i]) <= sc.a, core::status::point_outside, "x outside the contact");
+        const double xi = x[i] / sc.a;
+        tmp[i] = field == HS_FIELD_TRACTION ? sc.f * sc.p0 * st.traction(xi)
+                                            : sc.f * sc.p0 * sc.a / sc.Estar * st.slip(xi);
+      }
+      std::copy(tmp.begin(), tmp.end(), out);
+      return;
+    }
     const size_t ns = h->h->fine().vertices()[vertex].step_end;
     for (size_t i = 0; i < n; ++i) tmp[i] = field_at(*h, ns, field, x[i]);
     std::copy(tmp.begin(), tmp.end(), out);
@@ -409,6 +519,14 @@ int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
       r->solution.emplace<hs::capi::ray_state>(v.parts, h->scene, v.q, v.s, v.r.b1, v.r.b2, v.r.dir1, v.r.dir2);
       r->model_used = 0;
       r->error_estimate = v.error_estimate;
+      *out = r.release();
+      return;
+    }
+    if (h->static_mode) {
+      auto r = std::make_unique<hs_solution>();
+      r->solution.emplace<hs::capi::static_state>(h->static_vertices[vertex].snap, h->scene);
+      r->model_used = 0;
+      r->error_estimate = 0;
       *out = r.release();
       return;
     }
@@ -495,7 +613,8 @@ int hs_solution_ramp(const hs_solution *sol, int *recedes, double *at) {
   return guard([&] {
     require(sol != nullptr && recedes != nullptr && at != nullptr, core::status::null_pointer, "NULL");
     require(!std::holds_alternative<hs::capi::history_state>(sol->solution) &&
-                !std::holds_alternative<hs::capi::ray_state>(sol->solution),
+                !std::holds_alternative<hs::capi::ray_state>(sol->solution) &&
+                !std::holds_alternative<hs::capi::static_state>(sol->solution),
             core::status::not_applicable,
             "a load-history state is not a monotonic solution");
     const double q = sol->visit([](const auto &v) { return double(v.scene.q); });
@@ -512,7 +631,8 @@ int hs_solution_steady_cycle(const hs_solution *sol, hs_steady_cycle *out) {
   return guard([&] {
     require(sol != nullptr && out != nullptr, core::status::null_pointer, "NULL");
     require(!std::holds_alternative<hs::capi::history_state>(sol->solution) &&
-                !std::holds_alternative<hs::capi::ray_state>(sol->solution),
+                !std::holds_alternative<hs::capi::ray_state>(sol->solution) &&
+                !std::holds_alternative<hs::capi::static_state>(sol->solution),
             core::status::not_applicable,
             "a load-history state is not a monotonic solution");
     require(out->struct_size == sizeof *out, core::status::struct_size, "steady cycle struct_size");

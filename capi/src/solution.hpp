@@ -1,6 +1,7 @@
 // halfslip C ABI, private: the solution handle and the model driver
 // (model selection by tolerance, docs/models.md). Not installed.
 #pragma once
+#include <cmath>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -16,6 +17,7 @@
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/history.hpp"
 #include "halfslip/core/history_fields.hpp"
+#include "halfslip/core/static_history.hpp"
 #include "halfslip/core/select.hpp"
 #include "halfslip/reference/backend.hpp"
 
@@ -160,6 +162,27 @@ class ray_state : public vertex_state {
   std::vector<part> parts_;
 };
 
+// The state at a vertex of a load history taken by static solves of advancing
+// segments (core/static_history.hpp, issue 14): a shared, immutable copy of the
+// history after the vertex (the segments are shared), physical units.
+class static_state : public vertex_state {
+ public:
+  static_state(std::shared_ptr<const core::static_history<double>> h, const core::general_scene<double> &sc)
+      : vertex_state(sc, h->q(), h->s(), sc.a * h->b1(), sc.a * h->b2(), h->b1() < 1 ? h->dir1() : 0,
+                     h->b2() < 1 ? h->dir2() : 0),
+        hist(std::move(h)) {}
+  std::shared_ptr<const core::static_history<double>> hist;
+  double slip(double x) const { return scene.f * scene.p0 * scene.a / scene.Estar * hist->slip(x / scene.a); }
+  double pressure(double x) const {
+    const double xi = x / scene.a;
+    return std::fabs(xi) < 1 ? scene.p0 * hist->pressure().p(xi) : 0.0;
+  }
+  double traction(double x) const {
+    const double xi = x / scene.a;
+    return std::fabs(xi) < 1 ? scene.f * scene.p0 * hist->traction(xi) : 0.0;
+  }
+};
+
 // The exact decimal expansion of a double (so that the reference sees the
 // very number the caller passed).
 std::string exact_decimal(double v);
@@ -173,7 +196,7 @@ struct hs_solution {
   // the solution of the model that ran (monostate only while it runs)
   std::variant<std::monostate, hs::core::hertz_solution<double>, hs::core::general_solution<double>,
                hs::core::edge_solution<double>, hs::capi::reference_double, hs::capi::history_state,
-               hs::capi::ray_state>
+               hs::capi::ray_state, hs::capi::static_state>
       solution;
   int model_used = 0;  // HS_MODEL_*
   double error_estimate = 0;  // relative, of the resolved zones (core/select.hpp)

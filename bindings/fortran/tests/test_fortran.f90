@@ -664,6 +664,9 @@ contains
     n = -1
     call hs_history_vertex_count(hist, n, ierr)
     call expect(ierr == HS_OK .and. n == 2, 'history: vertex count')
+    n = -1
+    call hs_history_method(hist, n, ierr)
+    call expect(ierr == HS_OK .and. n == HS_HISTORY_SUPERPOSITION, 'history: method along one ray')
     call hs_history_vertex_get(hist, 0, v0, ierr)
     call expect_code(ierr, HS_OK, 'history: vertex 0')
     call hs_history_vertex_get(hist, 1, v1)

@@ -155,6 +155,11 @@ RAMP_SIGMA_FIRST = 0
 RAMP_TOGETHER = 1
 RAMP_Q_FIRST = 2
 _RAMP_NAMES = {"sigma-first": RAMP_SIGMA_FIRST, "together": RAMP_TOGETHER, "q-first": RAMP_Q_FIRST}
+# how a history computes its states (History.method)
+HISTORY_SUPERPOSITION = 1
+HISTORY_STATIC = 2
+HISTORY_MARCH = 3
+_HISTORY_METHODS = {HISTORY_SUPERPOSITION: "superposition", HISTORY_STATIC: "static", HISTORY_MARCH: "march"}
 
 FIELD_TRACTION = 1
 FIELD_SLIP = 2
@@ -956,6 +961,14 @@ class History(_Handle):
         n = c_size_t(0)
         self._status(_lib.hs_history_vertex_count(self._handle(), byref(n)), "hs_history_vertex_count")
         return n.value
+
+    @property
+    def method(self):
+        """How the states are computed: "superposition" (one ray through the origin), "static"
+        (every segment advances: one static solve per segment) or "march" (load steps)."""
+        m = c_int(0)
+        self._status(_lib.hs_history_method(self._handle(), byref(m)), "hs_history_method")
+        return _HISTORY_METHODS[m.value]
 
     def vertex(self, i):
         """The HistoryVertex i (0 <= i < vertex_count)."""

@@ -634,12 +634,21 @@ class TestHistory(unittest.TestCase):
         with self.assertRaises(halfslip.HalfslipError) as e:
             halfslip.history_reference(30, [("0.6", "0"), ("0.2", "0.3")])
         self.assertEqual(e.exception.status, halfslip.ERR_NOT_APPLICABLE)
-        # a vertex off the ray: the whole path is marched (steps > 0), within its accuracy
+        # a vertex off the ray whose segments all advance: static solves, exact (no steps)
         with halfslip.History() as hm:
+            self.assertEqual(hm.method, "superposition")
             hm.add_vertices([0.6, 0.2, 0.2], [0.0, 0.0, 0.5])
+            self.assertEqual(hm.method, "static")
             v0, v1, v2 = hm.vertices
-            self.assertTrue(v2.steps > v1.steps > v0.steps > 0)
-            self.assertAlmostEqual(v1.b1, c, delta=1e-5 * c)
+            self.assertEqual(v2.steps, 0)
+            self.assertAlmostEqual(v1.b1, c, delta=64 * 2.2e-16)
+        # a receding end (r_1 < 0, e* = 2 dQ/dsigma = 0.8 > e): the whole path is marched
+        with halfslip.History() as hm:
+            hm.add_vertices([0.5, 0.1], [0.0, -1.0])
+            self.assertEqual(hm.method, "march")
+            v0, v1 = hm.vertices
+            self.assertTrue(v1.steps > v0.steps > 0)
+            self.assertAlmostEqual(v0.b1, math.sqrt(0.5), delta=1e-7)
 
     def test_state_stresses(self):
         # issue 15: the state after a vertex as a Solution. Unloading 0.6 -> 0.2 (sigma = 0): by

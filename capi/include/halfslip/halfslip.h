@@ -538,6 +538,17 @@ HS_EXPORT int hs_history_slip_range(const hs_history *h, size_t n, const double 
  * of range), OUT_OF_MEMORY; *out untouched on error. */
 HS_EXPORT int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out);
 
+/* How the history computes its states (issue 14, unreleased), as chosen by itself:
+ * HS_HISTORY_SUPERPOSITION: every vertex on one ray through the origin, sums of
+ * monotonic solutions; HS_HISTORY_STATIC: every segment so far advances (no zone
+ * recedes), one static solve per segment from the state before it (exact; no steps);
+ * HS_HISTORY_MARCH: load steps (steps, step and error_estimate of hs_history_vertex).
+ * The first vertex that a method cannot take replays the whole path in the next one. */
+#define HS_HISTORY_SUPERPOSITION 1
+#define HS_HISTORY_STATIC        2
+#define HS_HISTORY_MARCH         3
+HS_EXPORT int hs_history_method(const hs_history *h, int *method);
+
 /* Whether a proportional ramp from zero to the solution's (Q, sigma) would make a
  * slip zone recede on the way (the monotonic solution then is not the state such a
  * ramp reaches; docs/history.md), and the Q/fP where that first happens (NaN if not). */

@@ -15,6 +15,7 @@
 
 #include "fields.hpp"
 #include "history.hpp"
+#include "static_history.hpp"
 
 namespace hs { namespace core {
 
@@ -62,6 +63,34 @@ template <class T> contact_state<T> history_contact_state(std::shared_ptr<const 
     st.stick_lo = -a;
     st.stick_hi = a;
   }
+  st.q_analytic_on_stick = false;
+  return st;
+}
+
+// The state of a history taken by static solves (static_history.hpp, issue 14), as above:
+// q from the state's panels (O(1) per point), breakpoints at its memory points.
+template <class T> contact_state<T> static_contact_state(std::shared_ptr<const static_history<T>> h, const T &a,
+                                                         const T &p0, const T &f, const T &bulk2 = T(0)) {
+  if (!h) throw error(status::null_pointer, "history state: no history");
+  contact_state<T> st;
+  st.a = a;
+  st.bulk2 = bulk2;
+  st.bulk1 = h->s() * f * p0 + bulk2;
+  st.p = [h, a, p0](const T &x) {
+    const T xi = x / a;
+    return xi > -1 && xi < 1 ? p0 * h->pressure().p(xi) : T(0);
+  };
+  st.q = [h, a, p0, f](const T &x) {
+    const T xi = x / a;
+    return xi > -1 && xi < 1 ? f * p0 * h->traction(xi) : T(0);
+  };
+  for (const T &m : h->memory_points()) st.breaks.push_back(a * m);
+  for (const auto &bp : h->pressure().breakpoints()) {
+    st.breaks.push_back(a * bp.x);
+    st.kinks.push_back(a * bp.x);
+  }
+  st.stick_lo = -a * h->b2();
+  st.stick_hi = a * h->b1();
   st.q_analytic_on_stick = false;
   return st;
 }

@@ -115,7 +115,6 @@ template <class T> struct sh_segment {
   std::vector<sh_piece<T>> pieces;
   T E1{0}, E2{0};
   T b1e{1}, b2e{1};
-  bool trajectory = true;  // the ends along the segment are known (energies, slip)
 };
 
 template <class T> class static_history {
@@ -142,20 +141,28 @@ template <class T> class static_history {
   T b2() const { return b2_; }
   int dir1() const { return s1_; }
   int dir2() const { return s2_; }
-  const std::vector<sh_segment<T>> &segments() const { return segs_; }
+  // the segments so far (shared and immutable: a copy of the history is cheap)
+  size_t segment_count() const { return segs_.size(); }
+  const sh_segment<T> &segment(size_t k) const { return *segs_.at(k); }
+  const sh_segment<T> &last_segment() const { return *segs_.back(); }
   const pressure_model<T> &pressure() const { return *pm_; }
+
+  // the memory points inside the stick zone (cusps of the traction) and its ends
+  std::vector<T> memory_points() const {
+    std::vector<T> m{-b2_};
+    for (const auto &P : panels_)
+      if (P.cusp_l && P.l > -b2_ && P.l < b1_) m.push_back(P.l);
+    m.push_back(b1_);
+    return m;
+  }
 
   // traction of the current state at x in [-1, 1]
   T traction(const T &x) const { return qS(x); }
 
   // slip accumulated at x over all segments
   T slip(const T &x) const {
-    for (const auto &sg : segs_)
-      if (!sg.trajectory)
-        throw error(status::not_applicable,
-                    "static_history: the slip is not available after a segment whose end crossed a memory point");
     T h = 0;
-    for (const auto &sg : segs_) h += seg_slip(sg, x);
+    for (const auto &sg : segs_) h += seg_slip(*sg, x);
     return h;
   }
 
@@ -176,7 +183,7 @@ template <class T> class static_history {
       sg.d2 = s2_;
       sg.b1s = sg.b1e = b1_;
       sg.b2s = sg.b2e = b2_;
-      segs_.push_back(sg);
+      segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
       return;
     }
     // work on a copy: the state changes only if the segment succeeds
@@ -490,7 +497,35 @@ template <class T> class static_history {
         if (best[0] > 1 - T(1e-10)) best[0] = 1;
         ev.push_back(best);
         evi.push_back(bi);
-        if (best[0] == 1) break;
+        if (best[0] == 1) {
+          // At a return to an earlier turning point the other end may also lie in a region
+          // at the limit (Masing: the band sums are flat there), where its root is not
+          // unique: it is the region's outer end, the cusp the new zone has just reached.
+          const int o = bi == 1 ? 2 : 1;
+          auto &pt = ev.back();
+          const T bo = o == 1 ? pt[1] : pt[2];
+          const T from = o == 1 ? cur[1] : cur[2];  // the other end before (it only advances)
+          T mo = 0;
+          bool have = false;
+          for (const T &c : cus) {
+            const T bc = o == 1 ? c : -c;  // the cusp as a value of end o
+            if (bc > bo && bc <= from && (!have || bc < mo)) mo = bc, have = true;
+          }
+          if (have) {
+            auto Fat = [&](const T &b) {
+              return o == 1 ? residual(b, pt[2], d1, d2, T(0), T(0)) : residual(pt[1], b, d1, d2, T(0), T(0));
+            };
+            const auto f0 = Fat(bo);
+            const T sc = 1 + std::abs(f0[0]) + std::abs(f0[1]);
+            bool flat = true;
+            for (int q = 1; q <= 4 && flat; ++q) {
+              const auto f = Fat(bo + (mo - bo) * T(q) / 4);
+              flat = std::abs(f[0] - f0[0]) + std::abs(f[1] - f0[1]) <= T(1e5) * eps<T>() * sc;
+            }
+            if (flat) (o == 1 ? pt[1] : pt[2]) = mo;
+          }
+          break;
+        }
         // Masing: beyond the point the traction may be at the limit with the zone's new sign
         // (an earlier slip zone of that sign, restored), g = 0 there, and the band sums do not
         // change while the end moves through it. The end then sweeps it at constant load, to
@@ -608,7 +643,7 @@ template <class T> class static_history {
     s2_ = d2;
     q_ += dq;
     s_ += ds;
-    segs_.push_back(sg);
+    segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
   }
 
   // a zone sticks whole: the stick zone reaches the edge; q = s_old p there (analytic)
@@ -855,7 +890,7 @@ template <class T> class static_history {
   std::shared_ptr<const shdetail::trule<T>> lrule_;
   std::vector<T> pbreaks_;
   std::vector<sh_panel<T>> panels_;
-  std::vector<sh_segment<T>> segs_;
+  std::vector<std::shared_ptr<const sh_segment<T>>> segs_;
   T q_{0}, s_{0}, b1_{1}, b2_{1};
   int s1_ = 0, s2_ = 0;
 };
