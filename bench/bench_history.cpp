@@ -22,6 +22,7 @@
 #include "halfslip/core/history.hpp"
 #include "halfslip/reference/bem_history.hpp"
 #include "halfslip/reference/reversal_oracle.hpp"
+#include "halfslip/core/general.hpp"
 #include "halfslip/core/static_history.hpp"
 #include "halfslip/core/status.hpp"
 
@@ -446,6 +447,92 @@ int main(int argc, char **argv) {
         "| %d periodic loadings, Hertz (3 cycles) | march, step 1/32 | %d of %d complete (%d of %d with "
         "sigma_m + sigma_a <= 1); %.3g s in all |\n",
         n, ok, n, ok_low, n_low, tsum);
+  }
+  // 5. the static solves (core/static_history.hpp): exact where every segment advances.
+  // (a) sigma then 100 half cycles of Q at constant sigma (every segment advances; the issue's
+  // "non-proportional path of 100 vertices"), Hertz and flat punch, against the steady
+  // cycle's closed form / general solution; (b) how far they take the random walks and
+  // the periodic loadings above (the rest is marched by hs_history).
+  {
+    for (int g = 0; g < 2; ++g) {
+      std::shared_ptr<const pressure_model<double>> pm =
+          g == 0 ? hertz : std::shared_ptr<const pressure_model<double>>(std::make_shared<flat_rounded_pressure<double>>(0.5));
+      general_scene<double> sc;
+      sc.q = 0.3;
+      sc.s = 0;
+      const auto m = solve_general<double>(*pm, sc);
+      double err = 0;
+      const double t = median_time([&] {
+        static_history<double> h(pm);
+        h.add_vertex(0, 0.6);
+        for (int k = 0; k < 99; ++k) h.add_vertex(k % 2 ? 0.3 : -0.3, 0.6);
+        err = std::max(std::fabs(h.b1() - m.b1()), std::fabs(h.last_segment().E1 - 2 * m.energy(1)) / m.energy(1));
+      });
+      std::fprintf(csv, "%s_steady100,static solves,,0,%.6g,%.3g,0,0,100\n", g == 0 ? "hertz" : "flat0.5", t, err);
+      std::printf("| sigma/fp0 = 0.6, then 99 half cycles Q/fP = -+0.3, %s | static solves | %.3g ms | "
+                  "%.1e (ends, a; last energy, relative) against the steady cycle's monotonic solution |\n",
+                  g == 0 ? "Hertz" : "flat punch b_f/a = 0.5", t * 1e3, err);
+    }
+    for (int g = 0; g < 2; ++g) {
+      std::shared_ptr<const pressure_model<double>> pm =
+          g == 0 ? hertz : std::shared_ptr<const pressure_model<double>>(std::make_shared<flat_rounded_pressure<double>>(0.5));
+      int ok = 0;
+      size_t verts = 0;
+      double tsum = 0;
+      for (unsigned seed = 1; seed <= 8; ++seed) {
+        const path_t walk100 = random_path(100, seed);
+        static_history<double> h(pm);
+        size_t done = 0;
+        const auto t0 = std::chrono::steady_clock::now();
+        try {
+          for (const auto &p : walk100) {
+            h.add_vertex(p.first, p.second);
+            ++done;
+          }
+        } catch (const error &) {}
+        tsum += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        verts += done;
+        if (done == walk100.size()) ++ok;
+        std::fprintf(csv, "%s_random100_seed%u,static solves,,0,0,0,0,0,%zu\n", g == 0 ? "hertz" : "flat0.5", seed,
+                     done);
+      }
+      std::printf("| 8 random 100-vertex paths, %s | static solves | %d of 8 complete; %zu of 800 vertices before "
+                  "the first segment they cannot take; %.3g s in all |\n",
+                  g == 0 ? "Hertz" : "flat punch b_f/a = 0.5", ok, verts, tsum);
+    }
+    int ok = 0, n = 0;
+    double tsum = 0;
+    for (double qa : {0.1, 0.3, 0.6})
+      for (double qm : {0.0, 0.15})
+        for (double sm : {0.0, 0.5, 1.5})
+          for (double sa : {0.0, 0.3, 1.0})
+            for (double ph : {0.0, 45.0, 90.0, 180.0}) {
+              if (sa == 0 && ph != 0) continue;
+              ++n;
+              // the vertices of add_cycles with 16 chords, sigma first
+              path_t p;
+              const double d2r = M_PI / 180, s0 = sm + sa * std::sin(ph * d2r);
+              p.emplace_back(0.0, s0);
+              p.emplace_back(qm, s0);
+              for (int c = 0; c < 3; ++c)
+                for (int k = 1; k <= 16; ++k) {
+                  const double th = 2 * M_PI * k / 16;
+                  p.emplace_back(qm + qa * std::sin(th), sm + sa * std::sin(th + ph * d2r));
+                }
+              static_history<double> h(hertz);
+              bool done = true;
+              const auto t0 = std::chrono::steady_clock::now();
+              try {
+                for (const auto &v : p) h.add_vertex(v.first, v.second);
+              } catch (const error &) {
+                done = false;
+              }
+              tsum += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+              if (done) ++ok;
+            }
+    std::printf("| %d periodic loadings, Hertz (3 cycles of 16 chords) | static solves | %d of %d complete; %.3g s "
+                "in all |\n",
+                n, ok, n, tsum);
   }
   std::fclose(csv);
   return 0;

@@ -363,7 +363,10 @@ template <class T> class static_history {
   }
 
   // Newton for (b1, b2) at the load increment (dq, ds) from the state; ok = converged
-  bool solve(T &b1, T &b2, int d1, int d2, const T &dq, const T &ds) const {
+  // J (optional): a Jacobian to start from (that of the neighbouring node: the chord
+  // method), replaced by differences when a step does not cut the residual fourfold; the
+  // last one is returned in it
+  bool solve(T &b1, T &b2, int d1, int d2, const T &dq, const T &ds, std::array<T, 4> *J = nullptr) const {
     using boost::math::isfinite;
     using std::abs;
     using std::max;
@@ -376,13 +379,17 @@ template <class T> class static_history {
     auto norm = [](const std::array<T, 2> &r) { return max(abs(r[0]), abs(r[1])); };
     std::array<T, 2> r = residual(b1, b2, d1, d2, dq, ds);
     T last = -1;
+    bool fresh = !(J && isfinite((*J)[0]) && (*J)[0] * (*J)[3] - (*J)[1] * (*J)[2] != 0);
+    std::array<T, 4> Jc = J && !fresh ? *J : std::array<T, 4>{{0, 0, 0, 0}};
     for (int it = 0; it < 60; ++it) {
-      const T h1 = h * max(T(1e-3), 1 - b1), h2 = h * max(T(1e-3), 1 - b2);
-      // one-sided differences into the contact
-      const auto r1 = residual(b1 - h1, b2, d1, d2, dq, ds);
-      const auto r2 = residual(b1, b2 - h2, d1, d2, dq, ds);
-      const T j11 = (r[0] - r1[0]) / h1, j21 = (r[1] - r1[1]) / h1;
-      const T j12 = (r[0] - r2[0]) / h2, j22 = (r[1] - r2[1]) / h2;
+      if (fresh) {
+        const T h1 = h * max(T(1e-3), 1 - b1), h2 = h * max(T(1e-3), 1 - b2);
+        // one-sided differences into the contact
+        const auto r1 = residual(b1 - h1, b2, d1, d2, dq, ds);
+        const auto r2 = residual(b1, b2 - h2, d1, d2, dq, ds);
+        Jc = {{(r[0] - r1[0]) / h1, (r[0] - r2[0]) / h2, (r[1] - r1[1]) / h1, (r[1] - r2[1]) / h2}};
+      }
+      const T j11 = Jc[0], j12 = Jc[1], j21 = Jc[2], j22 = Jc[3];
       const T det = j11 * j22 - j12 * j21;
       const T x1 = (r[0] * j22 - r[1] * j12) / det, x2 = (j11 * r[1] - j21 * r[0]) / det;
       if (!isfinite(x1) || !isfinite(x2)) return false;
@@ -400,11 +407,18 @@ template <class T> class static_history {
           break;
         }
       }
-      if (!acc) return false;
+      if (!acc) {
+        if (fresh) return false;
+        fresh = true;  // the chord's step failed: differences
+        continue;
+      }
       const T stp = max(abs(b1 - n1), abs(b2 - n2));
+      const bool slow = !(norm(rn) <= norm(r) / 4);
       b1 = n1;
       b2 = n2;
       r = rn;
+      if (J) *J = Jc;
+      fresh = slow;
       // converged: the step at the rounding floor, and the residual small (a step that
       // only stalls, e.g. against a cusp where the residual has an infinite slope, is not)
       if (stp <= tol || (stp <= 1e6 * eps<T>() && last >= 0 && stp > last / 2))
@@ -583,11 +597,23 @@ template <class T> class static_history {
       pc.b1.resize(nl);
       pc.b2.resize(nl);
       pc.dlam.resize(nl);
+      std::array<T, 4> Jn{{std::numeric_limits<T>::quiet_NaN(), 0, 0, 0}};
+      T pl = la, ppl = la, pb1 = wb1, pb2 = wb2;  // the node before the last (extrapolation)
       for (int j = 0; j < nl; ++j) {
         const T lam = la + (lb - la) * (1 + R.t[j]) / 2;
         T g1 = wb1, g2 = wb2;
         if (j == 0 && la == 0) guess(lam, g1, g2);
-        if (!solve(g1, g2, d1, d2, dq * lam, ds * lam))
+        // from j = 2: linear extrapolation through the last two nodes (kept inside the last)
+        if (j >= 2) {
+          const T w = (lam - pl) / (pl - ppl);
+          const T e1 = wb1 + w * (wb1 - pb1), e2 = wb2 + w * (wb2 - pb2);
+          if (e1 <= wb1 && e2 <= wb2 && e1 + e2 > 0) g1 = e1, g2 = e2;
+        }
+        ppl = pl;
+        pl = lam;
+        pb1 = wb1;
+        pb2 = wb2;
+        if (!solve(g1, g2, d1, d2, dq * lam, ds * lam, &Jn))
           throw error(status::not_applicable, "static_history: the static solve of the segment did not converge");
         if (g1 > wb1 + 1e3 * eps<T>() || g2 > wb2 + 1e3 * eps<T>())
           throw error(status::not_applicable, "static_history: the ends did not advance monotonically");
