@@ -542,9 +542,21 @@ struct sweep_runner {
           err = double(e);
         }
         const double ratio = std::isnan(err) ? NAN : err / r.est;
-        // an error beyond the estimate that the truth's own uncertainty cannot explain
-        const bool real_excess = !std::isnan(err) && err > r.est && !(err <= 2 * std::fabs(p.t.unc)) &&
-                                 std::string(p.t.kind) != "samples-flat";
+        // the result's claim (hs_summary): a zone longer than zone_resolution is within the
+        // relative estimate, a shorter one (unresolved) within zone_resolution in units of a.
+        // Violated beyond what the truth's own uncertainty can explain: a finding.
+        bool real_excess = false;
+        if (!std::isnan(err) && std::string(p.t.kind) != "samples-flat") {
+          const double tu = std::fabs(p.t.unc);
+          const double dm[2] = {r.d1, r.d2};
+          const ld dt[2] = {p.t.d1, p.t.d2};
+          for (int z = 0; z < 2; ++z) {
+            const double abs_err = double(std::fabs(ld(dm[z]) - dt[z]));
+            if (dm[z] > r.res) {
+              if (dt[z] > 0 && abs_err / double(dt[z]) > r.est && abs_err / double(dt[z]) > 2 * tu) real_excess = true;
+            } else if (abs_err > r.res && abs_err > 2 * tu * double(dt[z])) real_excess = true;
+          }
+        }
         if (real_excess) {
           ++exceeded;
           notes.push_back(std::string("ESTIMATE EXCEEDED ") + chart + "/" + sweep + " " + M.name +
@@ -552,9 +564,12 @@ struct sweep_runner {
                           " s=" + fmt(p.s, "%.17g") + " err=" + fmt(err) + " est=" + fmt(r.est) +
                           (p.t.unc < 0 ? " (truth: sliding point, stick width not bounded here)" : ""));
         }
-        if (M.model == HS_MODEL_AUTO && status != 0 && std::string(p.t.kind) == "reference") {
+        // (the flat punch's reference is no truth for coarse samples of it: they may break the
+        // samples' rules, a status that names the reason)
+        if ((M.model == HS_MODEL_AUTO || M.model == HS_MODEL_DEFAULT) && status != 0 &&
+            std::string(p.t.kind) != "none" && std::string(p.t.kind) != "samples-flat") {
           ++auto_fail_ref_ok;
-          notes.push_back(std::string("AUTO FAILED WHERE THE REFERENCE SOLVES ") + chart + "/" + sweep + " " +
+          notes.push_back(std::string("FAILED WHERE A TRUTH EXISTS ") + chart + "/" + sweep + " " +
                           M.name + " param=" + fmt(p.param, "%.17g") + ": " + status_text(status));
         }
         out << chart << "," << sweep << "," << fmt(p.param, "%.17g") << "," << fmt(p.q, "%.17g") << ","
@@ -667,8 +682,9 @@ int main(int argc, char **argv) {
       L = sliding_point(flat, par, qq);
       limit_cache.push_back({{flat, par}, L});
     }
-    if (!cached) std::printf("sliding point %s %.17g q=%g: x0 = %.21Lf (+- %.2g, %d Newton steps, G(1)-1 = %.2g, %.2fs)\n",
-                flat ? "flat" : "power", par, qq, L.x0, L.unc, L.iterations, L.total_check, L.time);
+    if (!cached)
+      std::printf("sliding point %s %.17g q=%g: x0 = %.21Lf (+- %.2g, %d Newton steps, %.2fs)\n",
+                  flat ? "flat" : "power", par, qq, L.x0, L.unc, L.iterations, L.time);
     if (!L.ok) return t;
     t.kind = "limit";
     t.d1 = d1_is_short ? 1 - L.x0 : 1 + L.x0;
@@ -771,13 +787,20 @@ int main(int argc, char **argv) {
     g.kind = HS_GEOMETRY_POWER_LAW;
     g.par = 4;
     sigma_sweep("power", g, 4);
+    // the sliding point costs 10-90 s per exponent here (long double pow, on this loaded 2-core
+    // machine): a sparser grid at sigma 1000
     std::vector<double> ns = {1.1, 1.5, 2, 3, 5, 10, 20, 50, 100, 200, 500, 999, 999.9};
-    if (opt.quick) ns = {1.5, 50};
+    std::vector<double> nsbig = {1.1, 2, 10, 100, 999.9};
+    if (opt.quick) ns = nsbig = {1.5, 50};
     std::vector<sweep_runner::point> ex, exbig;
     for (double n : ns) {
       geo gn = g;
       gn.par = n;
       ex.push_back({n, gn, q, 1.0, reference_truth(g.kind, n, q, 1.0, opt.ref_budget)});
+    }
+    for (double n : nsbig) {
+      geo gn = g;
+      gn.par = n;
       exbig.push_back({n, gn, q, 1000.0, limit_truth(false, n, q, NAN, NAN, NAN, 1000)});
     }
     S.run("power", "exponent", ex, true);
@@ -831,8 +854,8 @@ int main(int argc, char **argv) {
       S.run("samples", sc.sweep, pts, false);
     }
   }
-  std::printf("done: %d rows, %.0f s; estimate exceeded (beyond the truth's uncertainty): %d; AUTO failed where "
-              "the reference solves: %d\n",
+  std::printf("done: %d rows, %.0f s; claim (estimate / zone resolution) exceeded beyond the truth's "
+              "uncertainty: %d; DEFAULT or AUTO failed where a truth exists: %d\n",
               S.rows, seconds_since(t_all), S.exceeded, S.auto_fail_ref_ok);
   for (const auto &n : S.notes) std::printf("%s\n", n.c_str());
   return 0;
