@@ -92,7 +92,7 @@ def draw(rows, chart, out):
     for pi, (sweep, ptitle, xl) in enumerate(panels):
         ax = axs[pi // ncol][pi % ncol]
         rs = [r for r in rows if r["chart"] == chart and r["sweep"] == sweep]
-        series, fails, hangs = [], [], []
+        series, fails, hangs, notruth = [], [], [], []
         for m in METHODS:
             pts = sorted((xval(sweep, r), r) for r in rs if r["method"] == m)
             if not pts:
@@ -103,6 +103,7 @@ def draw(rows, chart, out):
                                "label": m if pi == 0 else None})
             fails += [(x, COLORS[m]) for x, r in pts if r["status"] not in ("ok", "timeout", "skipped")]
             hangs += [(x, COLORS[m]) for x, r in pts if r["status"] in ("timeout", "skipped")]
+            notruth += [x for x, r in pts if r["status"] == "ok" and r["truth"] == "none"]
             if m == "auto 0":
                 est = [(x, max(fnum(r["estimate"]), FLOOR)) for x, r in pts
                        if r["status"] == "ok" and not math.isnan(fnum(r["estimate"]))]
@@ -121,6 +122,10 @@ def draw(rows, chart, out):
             ax.plot([x], [TOP], "x", color=c, ms=8)
         for x, c in hangs:
             ax.plot([x], [TOP * 2.5], "s", color=c, mfc="none", ms=6)
+        for x in sorted(set(notruth)):  # answered, but no trusted value to judge it by
+            ax.plot([x], [FLOOR * 30], "o", color="0.5", mfc="none", ms=7)
+            ax.annotate("no truth", (x, FLOOR * 30), textcoords="offset points", xytext=(5, -3), fontsize=7,
+                        color="0.4")
         ax.set_ylim(FLOOR / 3, TOP * 8)
         if sweep == "bf_to_0":
             ax.annotate("b_f/a = 0", (ZERO_AT, FLOOR), textcoords="offset points", xytext=(2, 6), fontsize=8)
@@ -136,7 +141,8 @@ def draw(rows, chart, out):
     axs[0][0].legend(loc="best", fontsize="x-small", ncol=2)
     fig.suptitle(title)
     fig.text(0.01, 0.002, f"Errors below {FLOOR:g} are drawn at {FLOOR:g}. x at the top: the solve returned an "
-             "error status; hollow square above it: timeout (or skipped after two).\nTruth: MPFR reference at 20 "
+             "error status; hollow square above it: timeout (or skipped after two); grey circle: answered, no trusted "
+             "value (the reference exceeded its budget).\nTruth: MPFR reference at 20 "
              "digits, the sliding stick point, or the Hertz solution (docs/benchmarks.md, \"Stability of the "
              "other geometries\").", fontsize=7)
     hp.save(fig, os.path.join(out, fname))
@@ -146,7 +152,7 @@ def draw(rows, chart, out):
 def summary(rows, path):
     with open(path, "w") as md:
         md.write("| chart | sweep | method | points | ok | error status | timeout / skipped | largest error "
-                 "(ok) | failed at (status, timeout) | claim exceeded |\n|---|---|---|---|---|---|---|---|---|---|\n")
+                 "(ok) | failed at (status, timeout) | claim exceeded | ok without truth |\n|---|---|---|---|---|---|---|---|---|---|---|\n")
         for chart, (_, _, panels) in CHARTS.items():
             for sweep, _, _ in panels:
                 for m in METHODS:
@@ -165,7 +171,8 @@ def summary(rows, path):
                     md.write((", ".join(f"{v:.3g}" for v in first) + " | ") if first else "- | ")
                     md.write(", ".join(f"{r['param']} ({fnum(r['error']):.2g} > {r['estimate']})" for r in broken)
                              or "0")
-                    md.write(" |\n")
+                    md.write(" | " + (", ".join(f"{fnum(r['param']):.3g}" for r in ok if r["truth"] == "none") or "-")
+                             + " |\n")
         checks = [r for r in rows if r["sweep"] == "truth-check"]
         if checks:
             md.write("\nSliding point against the reference where both exist (relative difference of d1, d2; "
