@@ -6,6 +6,9 @@
 #   bench/results/asymptotic_sweep.csv  asymptotic model vs full solution (estimate check)
 #   bench/results/methods.csv, stability.csv  every model: speed, accuracy, stability (issue 5);
 #     charts docs/figures/speed_accuracy.svg, docs/figures/stability.svg (docs/benchmarks.md)
+#   bench/results/stability_geometries.csv, stability_geometries_summary.md  stability of every method on
+#     the flat punch, the power law and sampled pressures, to each method's failure (issue 13; ~10-15 min);
+#     charts docs/figures/stability_flat.svg, stability_power.svg, stability_samples.svg
 #   bench/results/fields.csv, fields_accuracy.csv  stresses (issue 15; Google Benchmark)
 #   bench/results/samples.csv, samples_cli.csv  sampled pressure: time, peak memory and accuracy against
 #                                the sample count, C ABI and CLI (issue 13; scripts/bench_samples.sh)
@@ -28,6 +31,11 @@ python3 "$HS_ROOT/bench/mpmath_hertz.py" "$HS_ROOT/bench/results/reference.csv"
 "$HS_BUILD/bench/bench_methods" "$HS_ROOT/bench/results/methods.csv" "$HS_ROOT/bench/results/stability.csv"
 plot "$HS_ROOT/bench/plot_methods.py" "$HS_ROOT/bench/results/methods.csv" "$HS_ROOT/bench/results/stability.csv" \
   "$HS_ROOT/bench/results/reference.csv" "$HS_ROOT/docs/figures"
+# issue 13: stability of the other geometries, every method to its failure, per-call time budgets
+# (a hang is a "timeout" row); truths: MPFR reference, the sliding stick point, Hertz (docs/benchmarks.md)
+"$HS_BUILD/bench/bench_stability" "$HS_ROOT/bench/results/stability_geometries.csv" \
+  | tee "$HS_ROOT/bench/results/stability_geometries.log"
+plot "$HS_ROOT/bench/plot_stability.py" "$HS_ROOT/bench/results/stability_geometries.csv" "$HS_ROOT/docs/figures"
 # the sweep behind the asymptotic model's error estimate (core/select.hpp, docs/models.md)
 "$HS_BUILD/bench/asymptotic_sweep" "$HS_ROOT/bench/results/asymptotic_sweep.csv" 200
 # load histories: the march against the independent BEM, cycles, random paths (docs/history.md)
