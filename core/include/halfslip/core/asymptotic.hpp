@@ -40,7 +40,8 @@ template <class T> struct edge_model {
   }
   T energy() const {
     const T dd = d();
-    return pi<T>() * f * f * KN * KN * dd * dd * dd / (12 * Estar);
+    // without an intermediate overflow (issue 13: KN^2 ~ p0^2 overflowed at p0 ~ 1e200)
+    return scaled_product({pi<T>(), f, f, KN, KN, dd, dd, dd}, Estar, T(1) / 12);
   }
 };
 
