@@ -164,7 +164,7 @@ std::vector<scene_case> sweep(int n_per_geometry) {
 }  // namespace
 
 TEST_CASE("every model's error estimate is honest: true error <= estimate across a sweep") {
-  int small_asymptotic = 0, checked = 0;
+  int small_asymptotic = 0, checked = 0, refused = 0;
   for (const auto &c : sweep(24)) {
     const truth t = c.kind == HS_GEOMETRY_HERTZ ? hertz_truth(c.sc) : general_truth(c.kind, c.par, c.sc);
     std::vector<std::pair<int, double>> models = {
@@ -179,7 +179,12 @@ TEST_CASE("every model's error estimate is honest: true error <= estimate across
       CAPTURE(c.sc.sigma_over_fp0);
       CAPTURE(m.first);
       CAPTURE(m.second);
-      if (m.first == HS_MODEL_ASYMPTOTIC && st == HS_ERR_NOT_APPLICABLE) continue;  // zones cover the contact
+      // zones cover the contact, or (issue 13) the expansion's first correction is as large as
+      // a zone: no zone would be resolved, and the model refuses
+      if (m.first == HS_MODEL_ASYMPTOTIC && st == HS_ERR_NOT_APPLICABLE) {
+        ++refused;
+        continue;
+      }
       REQUIRE(st == HS_OK);
       const auto s = summary(sol);
       CHECK(s.model == m.first);
@@ -195,7 +200,11 @@ TEST_CASE("every model's error estimate is honest: true error <= estimate across
   }
   // the sweep exercises the regime where the asymptotic model is selected
   CHECK(small_asymptotic >= 20);
-  CHECK(checked >= 360);  // of 384 solves (5 geometries x 24 scenes x 3 models + 24 closed forms)
+  // of 384 solves (5 geometries x 24 scenes x 3 models + 24 closed forms); the asymptotic model
+  // refuses the scenes of large loads: 51 of its 120, 27 of them since issue 13's fuzz-findings
+  // round (before, it answered those with no zone resolved; the check was checked >= 360)
+  CHECK(checked + refused == 384);
+  CHECK(checked >= 330);
 }
 
 TEST_CASE("closed-form and quadrature estimates near the failure regions: d/a -> 0, the regime boundary, sliding") {

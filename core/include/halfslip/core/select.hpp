@@ -138,13 +138,14 @@ template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T>
     w[i] = om;
   }
   const T Dm = max(D[0], D[1]);
-  T ab[2];
+  T ab[2], corr[2];
   for (int i = 0; i < 2; ++i) {
-    ab[i] = 2 * Dm * Dm + 32 * D[i] * w[i] + 16 * eps<T>() * D[i];
+    corr[i] = 2 * Dm * Dm + 32 * D[i] * w[i];
+    ab[i] = corr[i] + 16 * eps<T>() * D[i];
     e.resolution = max(e.resolution, T(ab[i] + length_floor<T>()));
   }
   // The bound is a first correction to the edge expansion; where it is as large as
-  // the zone it corrects (ab_i >= D_i at either edge), the expansion has left its
+  // the zone it corrects (2 Dm^2 + 32 D_i w_i >= D_i at either edge), the expansion has left its
   // domain and bounds nothing: near sliding or under sigma the true zone can then
   // leave the edge region altogether (issue 13, fuzz_asymptotic: flat punch
   // b_f/a = 0.982, Q/fP = -0.9977, sigma/fp0 = -1: d2 = 0.018 a with r = 0.457 a,
@@ -154,7 +155,8 @@ template <class T> error_estimate<T> asymptotic_estimate(const pressure_model<T>
   // (asymptotic_bounds_nothing; the C ABI's model refuses such scenes).
   // A resolved zone has D_i >= d_i > r >= ab_i, so no scene with every zone
   // resolved is affected.
-  if (!(ab[0] < D[0]) || !(ab[1] < D[1])) {
+  // (D_i = 0: no load at that edge, nothing to correct)
+  if ((D[0] > 0 && !(corr[0] < D[0])) || (D[1] > 0 && !(corr[1] < D[1]))) {
     e.resolution = 2;
     e.unresolved = 2;
     e.slip_zone = e.energy = infinite<T>();
