@@ -26,15 +26,23 @@ template <class T> inline T eps() { return boost::math::tools::epsilon<T>(); }
 // overflows or underflows only where the value itself does. Used for the
 // dimensional scalings (issue 13: the zone energy (f^2 p0^2 a^2 / E*) times the
 // dimensionless energy overflowed in p0^2 for p0 ~ 1e200, E* ~ 1e200, although the
-// energy was ~1e200). A zero, infinite or NaN factor gives the plain product.
+// energy was ~1e200). A zero factor among finite ones gives 0; an infinite or NaN
+// factor (or a zero den) gives the plain product.
 // At most 14 factors in num.
 template <class T> T scaled_product(std::initializer_list<T> num, const T &den, const T &v) {
   using std::frexp;
   using std::isfinite;
   using std::ldexp;
-  bool plain = !(isfinite(den) && den != 0 && isfinite(v) && v != 0);
-  for (const T &x : num) plain = plain || !(isfinite(x) && x != 0);
-  if (plain) {
+  bool finite = isfinite(den) && den != 0 && isfinite(v), zero = v == 0;
+  for (const T &x : num) {
+    finite = finite && isfinite(x);
+    zero = zero || x == 0;
+  }
+  // a zero factor among finite ones: 0 (the plain product gave NaN = inf * 0 where the
+  // other factors overflowed, fuzz_dimensional: an energy that underflowed to 0 times
+  // f^2 p0^2 a^2/E* with p0 ~ 1e132, f ~ 1e22)
+  if (finite && zero) return T(0);
+  if (!finite) {
     T m = 1;
     for (const T &x : num) m *= x;
     return m / den * v;
