@@ -2,6 +2,8 @@
 // solution, and erratum E9 (the constant in eq 29).
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "halfslip/core/asymptotic.hpp"
@@ -132,4 +134,21 @@ TEST_CASE("edge_solution: zone lengths, slip directions and signs of B_x, h agre
       CHECK(m.energy(1) == doctest::Approx(full.energy(1)).epsilon(3e-2));
       CHECK(m.energy(2) == doctest::Approx(full.energy(2)).epsilon(3e-2));
     }
+}
+
+TEST_CASE("compare_asymptotic, bulk loading at a subnormal b/a: the load and d_full continue the normal range") {
+  // Issue 13 (fuzz_asymptotic, corpus input crash-bulk-subnormal-b): the moment of eq (18) was
+  // formed from a stick width 2b below the normal range without its logarithm (the basis reads
+  // ln e there), so b = 5.4e-309 gave s = 4.86 (for ~1.8e3) and d_full = 0.789 a for 1 - b.
+  // Check: as b -> 0, pi s / 8 = int_b^1 sqrt(1-t^2)/sqrt(t^2-b^2) dt = ln(2/b) - 1 + O(b^2 ln b),
+  // so s(b) - s(b0) = (8/pi) ln(b0/b) to rounding (relative to s ~ 1.8e3: 1e-13).
+  const double b0 = 1e-300;
+  const auto c0 = hs::core::compare_asymptotic<double>(-1, b0);
+  for (double b : {5.4377415341022824e-309, 1e-315, 4.9406564584124654e-324}) {
+    CAPTURE(b);
+    const auto c = hs::core::compare_asymptotic<double>(-1, b);
+    CHECK(c.d_full == doctest::Approx(1 - b).epsilon(4 * std::numeric_limits<double>::epsilon()));
+    const double want = c0.scene.s + 8 / hs::core::pi<double>() * std::log(b0 / b);
+    CHECK(std::abs(c.scene.s - want) <= 1e-13 * want);
+  }
 }

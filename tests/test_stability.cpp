@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -609,5 +610,156 @@ TEST_CASE("issue 13: AUTO takes the reference route where the general path does 
     CHECK(rel(sm.d1, ref.d1) <= sm.error_estimate);
     CHECK(rel(sm.d2, ref.d2) <= sm.error_estimate);
     hs_solution_free(sol);
+TEST_CASE("issue 13: dimensional energies near 1e200 without an intermediate overflow") {
+  // p0 = 1e200 Pa, E* = 1e200 Pa, a = 1 m: the energies are ~1e200 J/m, but the old scaling
+  // f^2 p0^2 a^2 / E* overflowed in p0^2: hs_solution_energy said HS_ERR_OVERFLOW ("energy
+  // not representable") for every geometry and model. Check: the solve is dimensionless, so
+  // the energies are those of the unit scene (p0 = E* = 1) times p0^2/E* = 1e200 (in long
+  // double, exact but for its rounding), slip and B_x those of the unit scene times
+  // p0/E* = 1; the scalings round a few times (16 eps).
+  const double big = 1e200;
+  for (int kind : {HS_GEOMETRY_HERTZ, HS_GEOMETRY_FLAT_ROUNDED, HS_GEOMETRY_POWER_LAW})
+    for (int model : {HS_MODEL_DEFAULT, HS_MODEL_ASYMPTOTIC}) {
+      CAPTURE(kind);
+      CAPTURE(model);
+      hs_scene unit;
+      hs_scene_default(&unit);
+      unit.a = 1;
+      unit.p0 = 1;
+      unit.E_star = 1;
+      unit.f = 0.5;
+      unit.Q_over_fP = model == HS_MODEL_ASYMPTOTIC ? 0.01 : 0.3;
+      unit.sigma_over_fp0 = 0.1;
+      hs_scene large = unit;
+      large.p0 = big;
+      large.E_star = big;
+      hs_options o;
+      hs_options_default(&o);
+      o.model = model;
+      hs_geometry g;
+      hs_geometry_default(&g);
+      g.kind = kind;
+      g.exponent = 3;
+      hs_solution *su = nullptr, *sl = nullptr;
+      REQUIRE(hs_solve_geometry(&unit, &g, &o, &su) == HS_OK);
+      REQUIRE(hs_solve_geometry(&large, &g, &o, &sl) == HS_OK);
+      double eu[2], el[2];
+      REQUIRE(hs_solution_energy(su, eu) == HS_OK);
+      REQUIRE(hs_solution_energy(sl, el) == HS_OK);  // HS_ERR_OVERFLOW before
+      const double e = std::numeric_limits<double>::epsilon();
+      for (int i = 0; i < 2; ++i) {
+        REQUIRE(eu[i] > 0);
+        const long double want = (long double)eu[i] * big;
+        CHECK(std::abs((el[i] - want) / want) <= 16 * e);
+      }
+      const double x[2] = {-0.995, 0.995};
+      double hu[2], hl[2], bu[2], bl[2];
+      REQUIRE(hs_eval_slip(su, 2, x, hu) == HS_OK);
+      REQUIRE(hs_eval_slip(sl, 2, x, hl) == HS_OK);
+      REQUIRE(hs_eval_Bx(su, 2, x, bu) == HS_OK);
+      REQUIRE(hs_eval_Bx(sl, 2, x, bl) == HS_OK);
+      for (int i = 0; i < 2; ++i) {
+        CHECK(hu[i] != 0);
+        CHECK(std::abs(hl[i] - hu[i]) <= 16 * e * std::abs(hu[i]));
+        CHECK(std::abs(bl[i] - bu[i]) <= 16 * e * std::abs(bu[i]));
+      }
+      hs_solution_free(su);
+      hs_solution_free(sl);
+    }
+  // an energy beyond the double range is still the status, naming no value it cannot hold
+  hs_scene s;
+  hs_scene_default(&s);
+  s.p0 = 1e300;
+  s.E_star = 1e-10;
+  hs_solution *sol = nullptr;
+  REQUIRE(hs_solve(&s, nullptr, &sol) == HS_OK);
+  double E[2] = {-1, -1};
+  CHECK(hs_solution_energy(sol, E) == HS_ERR_OVERFLOW);
+  CHECK(E[0] == -1);
+  hs_solution_free(sol);
+}
+
+TEST_CASE("issue 13: power law with 1 < n < 1.25 in bounded time (no quadrature per pressure value)") {
+  // The pressure for m = (n-1)/2 < 1/8 was a tanh-sinh integral per value: n = 1.05 at
+  // Q/fP = 0.9977, sigma/fp0 = 1.435 took 4.5-8.9 s; n = 1.2 at sigma/fp0 = 3 ran 3 s and
+  // failed (NO_CONVERGENCE), n = 1.02 there 38 s before failing. Now the regrouped
+  // connection formula (checked against 50 digits in test_switches.cpp). Each scene
+  // below solves, within its estimate of the long double solve; the times are a hang
+  // guard only (bench/ measures speed).
+  struct sc_t {
+    double n, q, s;
+  };
+  // (1.2, 0.9977, 3) is checked for its status only: the long double solver's continuation
+  // in sigma fails there (the band of sigma where zone 1 closes and reopens, docs/models.md)
+  // (1.001 and 1.01 at Q/fP = 0.9977, sigma/fp0 = 3 put the stick end next to the cusp: the
+  // next test case)
+  for (const sc_t &c : {sc_t{1.05, 0.9977, 1.435}, sc_t{1.2, 0.9977, 3}, sc_t{1.001, 0.5, 1},
+                        sc_t{1.01, 0.3, 0}, sc_t{1.1, -0.6, 2}}) {
+    CAPTURE(c.n);
+    CAPTURE(c.q);
+    CAPTURE(c.s);
+    const auto t0 = std::chrono::steady_clock::now();
+    hs_solution *sol = nullptr;
+    REQUIRE(solve_geometry(HS_GEOMETRY_POWER_LAW, c.n, c.q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
+    double E[2];
+    REQUIRE(hs_solution_energy(sol, E) == HS_OK);
+    hs_solution_free(sol);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    CAPTURE(secs);
+    CHECK(secs < 120.0);  // hang guard
+    if (c.n == 1.2) continue;
+    const core::power_law_pressure<double> pd(c.n);
+    const core::power_law_pressure<long double> pl(c.n);
+    check_against_long_double(pd, pl, c.q, c.s);
+  }
+  // Where the solver still fails for n -> 1 under large sigma (the stick zone crossing the
+  // pressure's cusp at x = 0; docs/models.md), it says so promptly: a status, not a hang.
+  hs_solution *sol = nullptr;
+  const auto t0 = std::chrono::steady_clock::now();
+  const int st = solve_geometry(HS_GEOMETRY_POWER_LAW, 1.02, 0.9977, 3, HS_MODEL_DEFAULT, &sol);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CHECK((st == HS_OK || st == HS_ERR_NO_CONVERGENCE));
+  if (st == HS_OK) hs_solution_free(sol);
+  CHECK(secs < 120.0);  // hang guard (38 s before)
+}
+
+TEST_CASE("issue 13: power law n -> 1, stick end next to the pressure's cusp: panels graded to the cusp") {
+  // n = 1.01 at Q/fP = 0.9977, sigma/fp0 = 3: the stick zone (-1.9e-5 a, 0.124 a) ends 1.9e-5 a
+  // from the cusp |x|^0.01 of the pressure at x = 0. The panels of zone 2 were graded towards
+  // its stick edge only down to the scale of the stick width, blind to the cusp just beyond
+  // the edge: E1 was off by 5.4e-6 (double's expansion and adaptive paths; the fixed rules and
+  // long double agreed with each other) against an estimate of 1.8e-13. Now they are graded
+  // to the nearer of the two (gdetail::grading_scale). Check: the long double solve (its own
+  // error ~2^-11 of double's). Tolerance: the zone ends are good to a few eps absolute and
+  // the energies depend on the distance delta = 1.9e-5 from the cusp like eps/delta ~ 1.2e-11
+  // (the open class of a stick end next to a pressure kink, docs/validation.md: measured
+  // 3.2e-13 and 5.5e-13 here, above the quadrature estimate's 1.8e-13).
+  for (double n : {1.01, 1.001}) {
+    CAPTURE(n);
+    const core::power_law_pressure<double> pd(n);
+    const core::power_law_pressure<long double> pl(n);
+    core::general_scene<double> sd;
+    sd.q = 0.9977;
+    sd.s = 3;
+    core::general_scene<long double> sl;
+    sl.q = sd.q;
+    sl.s = sd.s;
+    const auto a = core::solve_general(pd, sd);
+    const auto b = core::solve_general(pl, sl);
+    const double delta = a.b2();  // the cusp at x = 0 from the stick end -b2
+    CAPTURE(delta);
+    REQUIRE(delta > 0);
+    REQUIRE(delta < 1e-4);
+    const double tol = std::numeric_limits<double>::epsilon() / delta;
+    // the zones within the quadrature's own estimate
+    const auto est = core::quadrature_estimate(0.0, a.d1(), a.d2(), a.width, sd.q, pd.accuracy_eps(), a.conditioning);
+    CHECK(double(std::abs(a.d1() - b.d1())) <= est.slip_zone * a.d1());
+    CHECK(double(std::abs(a.d2() - b.d2())) <= est.slip_zone * a.d2());
+    for (int z : {1, 2}) {
+      CAPTURE(z);
+      const double r = double(std::abs((a.energy(z) - b.energy(z)) / b.energy(z)));
+      CAPTURE(r);
+      CHECK(r <= tol);
+    }
   }
 }

@@ -94,9 +94,16 @@ void take_estimate(hs_solution &h, const core::error_estimate<double> &e) {
 
 void run_asymptotic(hs_solution &h, const core::general_scene<double> &sc) {
   const auto &pm = pressure_of(h);
+  // issue 13: where the expansion's first correction is as large as a zone, its
+  // zones may be anywhere (the truth 1.97 a for a model zone of 0.018 a): no answer
+  const auto e = core::asymptotic_estimate(pm, sc);
+  if (core::asymptotic_bounds_nothing(e))
+    throw core::error(core::status::not_applicable,
+                      "asymptotic model does not apply: its first correction is as large as a slip zone, so it "
+                      "cannot bound the zones (use the quadrature or the closed forms)");
   h.solution.emplace<core::edge_solution<double>>(pm, sc);
   h.model_used = HS_MODEL_ASYMPTOTIC;
-  take_estimate(h, core::asymptotic_estimate(pm, sc));
+  take_estimate(h, e);
 }
 
 void run_closed_form(hs_solution &h, const core::general_scene<double> &sc, const request &r) {

@@ -10,11 +10,14 @@
 //     a^2 (pi - 2 phi0 - sin 2 phi0) = 4RP/E* with b_f = a sin phi0, 0 <= b_f/a < 1);
 //   - the routes agree: the power law with n = 2, A = 1/(2R) and the flat punch with
 //     b_f = 0 are the Hertz scene (same a, p0 and ratios);
-//   - the Hertz scene solves (hs_solve) with a known status.
+//   - the Hertz scene solves (hs_solve) with a known status, and its zone energies
+//     are the dimensionless scene's times f^2 p0^2 a^2 / E* wherever that is a
+//     double (HS_ERR_OVERFLOW only beyond it).
 #include <halfslip/halfslip.h>
 
 #include "fuzz_input.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
@@ -95,6 +98,29 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       hs_solution *sol = nullptr;
       const int ss = hs_solve(&s, nullptr, &sol);
       HS_REQUIRE(known(ss) && (ss == HS_OK) == (sol != nullptr));
+      // the energies are those of the dimensionless scene times f^2 p0^2 a^2 / E*
+      // (issue 13: p0^2 overflowed in an intermediate for p0 ~ 1e200, E* ~ 1e200)
+      if (ss == HS_OK) {
+        hs_scene u = s;
+        u.a = u.p0 = u.f = u.E_star = 1;
+        hs_solution *us = nullptr;
+        double eu[2], e[2] = {-1, -1};
+        if (hs_solve(&u, nullptr, &us) == HS_OK && hs_solution_energy(us, eu) == HS_OK) {
+          const int es = hs_solution_energy(sol, e);
+          HS_REQUIRE(known(es));
+          for (int i = 0; i < 2; ++i) {
+            const long double want = eu[i] * ((long double)s.f * s.f * s.p0 * s.p0 * s.a * s.a / s.E_star);
+            if (std::getenv("HS_FUZZ_DEBUG"))
+              std::fprintf(stderr, "energy %d: status %d %.17g want %.17Lg\n", i, es, e[i], want);
+            // representable with room for the rounding: must be given, to 1e-13
+            if (want < 0.999L * DBL_MAX && (want == 0 || want > 1e3L * DBL_MIN) && es == HS_OK)
+              HS_REQUIRE(std::fabs(e[i] - want) <= 1e-13L * want);
+            if (want < 0.999L * DBL_MAX && (want == 0 || want > 1e3L * DBL_MIN)) HS_REQUIRE(es == HS_OK);
+            if (want > 1.001L * DBL_MAX) HS_REQUIRE(es == HS_ERR_OVERFLOW);
+          }
+        }
+        hs_solution_free(us);
+      }
       hs_solution_free(sol);
       break;
     }

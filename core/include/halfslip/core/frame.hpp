@@ -85,14 +85,14 @@ template <class Derived, class T, class Scene> struct canonical_solution {
     T dl;
     const int z = locate(x, dl);
     if (z == 0) return T(0);
-    const T v = scene.f * scene.p0 / scene.Estar * self().bhat(z, dl);
+    const T v = scaled_product({scene.f, scene.p0}, scene.Estar, self().bhat(z, dl));
     return (mirror ? -sign() : sign()) * v;
   }
   T slip(const T &x) const {
     T dl;
     const int z = locate(x, dl);
     if (z == 0) return T(0);
-    return sign() * scene.f * scene.p0 * scene.a / scene.Estar * self().hhat(z, dl);
+    return sign() * scaled_product({scene.f, scene.p0, scene.a}, scene.Estar, self().hhat(z, dl));
   }
   // Shear traction q(x) on body 1 (docs/conventions.md), generic form
   // (traction.hpp); kinks: user-frame points where the pressure is not smooth.
@@ -107,8 +107,9 @@ template <class Derived, class T, class Scene> struct canonical_solution {
   // Energy dissipated in user zone i (1: (b1, a), 2: (-a, -b2)).
   T energy(int i) const {
     const int z = ((i == 1) != mirror) ? +1 : -1;
-    const T scale = scene.f * scene.f * scene.p0 * scene.p0 * scene.a * scene.a / scene.Estar;
-    return scale * self().energy_hat(z);
+    // without an intermediate overflow (issue 13: p0^2 overflowed at p0 ~ 1e200)
+    return scaled_product({scene.f, scene.f, scene.p0, scene.p0, scene.a, scene.a}, scene.Estar,
+                          self().energy_hat(z));
   }
 
  private:

@@ -115,6 +115,24 @@ template <class T> T kink_distance(int side, const T &d, const T &x) {
   return side > 0 ? T(x - 1 + d) : T(d - 1 - x);
 }
 
+// The scale towards which the panels of zone `side` are graded at its stick edge:
+// the stick width e (the near singularity at theta ~ i sqrt(e/d)), or, where
+// nearer, the distance to a pressure breakpoint just beyond the stick edge, in
+// the stick zone: a singularity of the integrands at theta ~ i sqrt(dist/d).
+// Issue 13: the power law at n = 1.01 (the cusp |x|^0.01 at x = 0, 1.9e-5 a
+// beyond the stick edge of zone 2, stick width 0.124 a) at Q/fP = 0.9977,
+// sigma/fp0 = 3 had zone energies off by 5e-6 (estimate 2e-13) from the
+// panels graded only to sqrt(e/d).
+template <class T> T grading_scale(const pressure_model<T> &pm, int side, const T &d, const T &e) {
+  using std::min;
+  T g = e;
+  for (const auto &bp : pm.breakpoints()) {
+    const T dist = -kink_distance(side, d, bp.x);  // > 0: beyond the stick edge
+    if (dist > 0 && dist < g) g = dist;
+  }
+  return g;
+}
+
 // The breakpoints inside zone `side` as theta = asin(sqrt(dist/d)), with their
 // grading flag (the kink -> theta map of every panel set of a zone).
 template <class T> std::vector<std::pair<T, bool>> zone_kinks(const pressure_model<T> &pm, int side, const T &d) {
@@ -227,7 +245,7 @@ template <class T> zone_nodes<T> make_zone_nodes(const pressure_model<T> &pm, in
   if (grade_all)
     for (auto &k : kinks) k.second = true;
   if (cut && *cut > 0 && *cut < pi<T>() / 2) kinks.push_back({*cut, false});
-  z.panels = make_panels<T>(d, e, kinks, layers);
+  z.panels = make_panels<T>(d, grading_scale(pm, side, d, e), kinks, layers);
   if (graded_only) {
     std::vector<panel<T>> g;
     for (const auto &pn : z.panels)

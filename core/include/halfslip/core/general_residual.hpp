@@ -194,7 +194,7 @@ zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, c
   zone_sums<T> r;
   if (!(d > 0)) return r;
   if (const knot_view<T> kv = pm.knots()) return gdetail::zone_integrals_knots(pm, kv, side, d, e, n, jac);
-  const auto panels = gdetail::make_panels<T>(d, e, gdetail::zone_kinks(pm, side, d));
+  const auto panels = gdetail::make_panels<T>(d, gdetail::grading_scale(pm, side, d, e), gdetail::zone_kinks(pm, side, d));
   gdetail::for_nodes<T>(panels, n,
                         [&](const T &th, const T &w) { gdetail::zone_node(pm, side, d, e, th, w, jac, r); });
   return r;

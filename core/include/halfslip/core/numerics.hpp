@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <vector>
 #include <boost/math/constants/constants.hpp>
@@ -16,6 +17,48 @@ namespace hs { namespace core {
 
 template <class T> inline T pi() { return boost::math::constants::pi<T>(); }
 template <class T> inline T eps() { return boost::math::tools::epsilon<T>(); }
+
+// (product of num) / den * v, in that order, without an intermediate overflow or
+// underflow: the mantissas are multiplied (each in [1/2, 1), so their running
+// product stays within [2^-16, 2)) and the exponents added, with one ldexp at the
+// end. Scaling by powers of two is exact, so where the plain product has no
+// intermediate outside the normal range the result is bitwise the plain one; it
+// overflows or underflows only where the value itself does. Used for the
+// dimensional scalings (issue 13: the zone energy (f^2 p0^2 a^2 / E*) times the
+// dimensionless energy overflowed in p0^2 for p0 ~ 1e200, E* ~ 1e200, although the
+// energy was ~1e200). A zero factor among finite ones gives 0; an infinite or NaN
+// factor (or a zero den) gives the plain product.
+// At most 14 factors in num.
+template <class T> T scaled_product(std::initializer_list<T> num, const T &den, const T &v) {
+  using std::frexp;
+  using std::isfinite;
+  using std::ldexp;
+  bool finite = isfinite(den) && den != 0 && isfinite(v), zero = v == 0;
+  for (const T &x : num) {
+    finite = finite && isfinite(x);
+    zero = zero || x == 0;
+  }
+  // a zero factor among finite ones: 0 (the plain product gave NaN = inf * 0 where the
+  // other factors overflowed, fuzz_dimensional: an energy that underflowed to 0 times
+  // f^2 p0^2 a^2/E* with p0 ~ 1e132, f ~ 1e22)
+  if (finite && zero) return T(0);
+  if (!finite) {
+    T m = 1;
+    for (const T &x : num) m *= x;
+    return m / den * v;
+  }
+  int e = 0, k = 0;
+  T m = 1;
+  for (const T &x : num) {
+    m *= frexp(x, &k);
+    e += k;
+  }
+  m /= frexp(den, &k);
+  e -= k;
+  m *= frexp(v, &k);
+  e += k;
+  return ldexp(m, e);
+}
 
 namespace detail {
 // The odd Taylor tail y^3/3! + sg y^5/5! + sg^2 y^7/7! + ... for 0 <= y <= 1:

@@ -29,6 +29,7 @@
 #include <boost/math/special_functions/gamma.hpp>
 #include <boost/math/special_functions/sin_pi.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
+#include <boost/math/special_functions/zeta.hpp>
 
 #include "gauss.hpp"
 #include "knots.hpp"
@@ -542,6 +543,14 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     // every m a power-law solve at n = 307.2 took 17 s (issue 13).
     using std::ldexp;
     near_int_ = !odd_ && abs(m_ - mr) < T(0.125) && abs(m_ - mr) < n * ldexp(T(1), -int(std::min(T(60), m_)));
+    // m near 0 (1 < n < 1.25): the connection formula without its cancellation
+    // (F_near_zero), not the quadrature (issue 13: n = 1.05 took 4.5-8.9 s a solve,
+    // n = 1.02 at Q/fP = 0.9977, sigma/fp0 = 3 ran 38 s and failed)
+    if (near_int_ && mr == 0) {
+      near_int_ = false;
+      near_zero_ = true;
+      lnc_ = log_connection_near_zero(m_);
+    }
     if (!even_ && !odd_ && !near_int_)
       // (sqrt(pi)/2) Gamma(-m)/Gamma(1/2 - m) by reflection,
       // = -(sqrt(pi)/2) cot(pi m) Gamma(m + 1/2)/Gamma(m + 1): the two Gammas
@@ -668,6 +677,7 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
       for (T p = T(0.5); p <= (n_ - 2) / 2 + T(0.25); p += 1) I = (1 + 2 * p * y * I) / (2 * p + 1);
       return I;
     }
+    if (near_zero_) return F_near_zero(x, y, z);
     if (!near_int_) {
       // 2F1(1, 1/2 - m; 1 - m; y), y < 1/2
       if (!(y == y)) return y;  // NaN: the test below would never hold
@@ -700,8 +710,78 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
   }
 
  private:
-  T n_, m_, conn_{0};
-  bool even_ = false, odd_ = false, near_int_ = false;
+  // F for 0 < m < 1/8, y = x^2 < 1/2, z = 1 - y. The connection formula
+  //   F = S(y)/(2m) + |x|^(2m) conn/sqrt(z),  S = 2F1(1, 1/2 - m; 1 - m; y),
+  //   conn = -c(m)/(2m),  c(m) = pi m cot(pi m) Gamma(1/2 + m)/(Gamma(1/2) Gamma(1 + m)) -> 1,
+  // has two parts ~ 1/(2m sqrt z) that cancel to F = O(1) (the n = 1 limit is
+  // asinh(sqrt(z)/|x|)/sqrt(z)). Regrouped around the m = 0 terms (S(y; 0) = 1/sqrt(z)):
+  //   F = A + B,  A = (S(y) - 1/sqrt(z))/(2m) = (1/2) sum_(j>=1) r_j e_j y^j,
+  //   B = -expm1(2m ln|x| + ln c(m)) / (2m sqrt(z)),
+  // with r_j = (1/2)_j/j! and e_j = (S's j-th coefficient / r_j - 1)/m by the exact
+  // recurrence e_j = e_(j-1) g_j + h_j, g_j = j (j - 1/2 - m)/((j - 1/2)(j - m)),
+  // h_j = -1/((2j - 1)(j - m)): every term of A negative and formed without
+  // cancellation; B's argument is negative (|x| < 1, ln c ~ -2 ln2 m) and its
+  // expm1 is accurate to a few eps relative. Checked against 50-digit quadrature
+  // of the definition in tests/test_switches.cpp.
+  T F_near_zero(const T &x, const T &y, const T &z) const {
+    using std::abs;
+    using std::expm1;
+    using std::log;
+    using std::sqrt;
+    const T e = eps<T>();
+    T ej = 0, rj = 1, yj = 1, A = 0;
+    int j = 1;
+    for (; j < 100000; ++j) {
+      const T jj = T(j);
+      ej = ej * (jj * (jj - T(0.5) - m_) / ((jj - T(0.5)) * (jj - m_))) - 1 / ((2 * jj - 1) * (jj - m_));
+      rj *= (jj - T(0.5)) / jj;
+      yj *= y;
+      const T term = rj * ej * yj;
+      A += term;
+      if (abs(term) <= e * abs(A) / 4) break;
+    }
+    check_iterations(j, 100000, "power law: the series of F near n = 1 did not converge");
+    const T B = x == 0 ? 1 / (2 * m_ * sqrt(z)) : -expm1(2 * m_ * log(abs(x)) + lnc_) / (2 * m_ * sqrt(z));
+    return A / 2 + B;
+  }
+  // ln c(m) for 0 < m < 1/8, to a few eps relative (c - 1 = O(m) must not be
+  // formed as a difference): ln(pi m cot(pi m)) = ln cos u - ln(sin u / u), u = pi m,
+  // by log1p of -2 sin^2(u/2) and of the sine series; and
+  // ln Gamma(1/2 + m) - ln Gamma(1/2) - ln Gamma(1 + m)
+  //   = -2 ln2 m + sum_(k>=2) (-1)^k (2^k - 2) zeta(k) m^k / k
+  // (the Taylor series of ln Gamma at 1 and 1/2: psi(1/2) - psi(1) = -2 ln 2,
+  // psi^(k-1)(1/2) = (-1)^k (k-1)! (2^k - 1) zeta(k)); terms fall like (2m)^k <= 4^-k.
+  static T log_connection_near_zero(const T &m) {
+    using std::abs;
+    using std::log;
+    using std::log1p;
+    using std::sin;
+    const T e = eps<T>();
+    const T u = pi<T>() * m, u2 = u * u;
+    T sr = 0, term = 1;  // sin(u)/u - 1
+    int k = 1;
+    for (; k < 1000; ++k) {
+      term *= -u2 / T((2 * k) * (2 * k + 1));
+      sr += term;
+      if (abs(term) <= e * abs(sr) / 4) break;
+    }
+    check_iterations(k, 1000, "power law: the sine series near n = 1 did not converge");
+    const T s2 = sin(u / 2);
+    T L = log1p(-2 * s2 * s2) - log1p(sr);
+    T G = -2 * boost::math::constants::ln_two<T>() * m, mk = m, p2 = 2;
+    for (k = 2; k < 1000; ++k) {
+      mk *= m;
+      p2 *= 2;
+      const T t = (k % 2 ? -1 : 1) * (p2 - 2) * boost::math::zeta(T(k)) * mk / T(k);
+      G += t;
+      if (abs(t) <= e * abs(G) / 4) break;
+    }
+    check_iterations(k, 1000, "power law: the log-gamma series near n = 1 did not converge");
+    return L + G;
+  }
+
+  T n_, m_, conn_{0}, lnc_{0};
+  bool even_ = false, odd_ = false, near_int_ = false, near_zero_ = false;
 };
 
 // ---------------------------------------------------------------------------
