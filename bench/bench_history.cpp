@@ -68,6 +68,18 @@ void errors(const result &a, const result &ref, double &eb, double &ee) {
   }
 }
 
+// the 162 periodic loadings of the robustness rows: (Q_a, Q_m, sigma_m, sigma_a, phase in degrees)
+std::vector<std::array<double, 5>> periodic_cases() {
+  std::vector<std::array<double, 5>> r;
+  for (double qa : {0.1, 0.3, 0.6})
+    for (double qm : {0.0, 0.15})
+      for (double sm : {0.0, 0.5, 1.5})
+        for (double sa : {0.0, 0.3, 1.0})
+          for (double ph : {0.0, 45.0, 90.0, 180.0})
+            if (!(sa == 0 && ph != 0)) r.push_back({{qa, qm, sm, sa, ph}});
+  return r;
+}
+
 // a random non-proportional path of n vertices: |Q/fP| <= 0.5, sigma/fp0 in [0, 1.2], steps <= 0.15
 path_t random_path(int n, unsigned seed) {
   std::mt19937 g(seed);
@@ -415,12 +427,8 @@ int main(int argc, char **argv) {
   {
     int ok = 0, n = 0, ok_low = 0, n_low = 0;
     double tsum = 0;
-    for (double qa : {0.1, 0.3, 0.6})
-      for (double qm : {0.0, 0.15})
-        for (double sm : {0.0, 0.5, 1.5})
-          for (double sa : {0.0, 0.3, 1.0})
-            for (double ph : {0.0, 45.0, 90.0, 180.0}) {
-              if (sa == 0 && ph != 0) continue;
+    for (const auto &pc : periodic_cases()) {
+              const double qa = pc[0], qm = pc[1], sm = pc[2], sa = pc[3], ph = pc[4];
               ++n;
               const bool low = sm + sa <= 1.0;
               if (low) ++n_low;
@@ -502,12 +510,8 @@ int main(int argc, char **argv) {
     }
     int ok = 0, n = 0;
     double tsum = 0;
-    for (double qa : {0.1, 0.3, 0.6})
-      for (double qm : {0.0, 0.15})
-        for (double sm : {0.0, 0.5, 1.5})
-          for (double sa : {0.0, 0.3, 1.0})
-            for (double ph : {0.0, 45.0, 90.0, 180.0}) {
-              if (sa == 0 && ph != 0) continue;
+    for (const auto &pc : periodic_cases()) {
+              const double qa = pc[0], qm = pc[1], sm = pc[2], sa = pc[3], ph = pc[4];
               ++n;
               // the vertices of add_cycles with 16 chords, sigma first
               path_t p;
