@@ -248,7 +248,6 @@ template <class T> class static_history {
   }
 
   static int sgn(const T &v) { return (v > 0) - (v < 0); }
-  static T r_of(int i, const T &dq, const T &ds, const T &e) { return hist_rate_end(i, dq, ds, e); }
 
   // ---- band sums -------------------------------------------------------------
   // For band i (1: (b1, 1), 2: (-1, -b2)), sum over its sub-intervals of
@@ -437,7 +436,7 @@ template <class T> class static_history {
       const T e = (b1_ + b2_) / 2;
       for (int i = 1; i <= 2 && !changed; ++i) {
         int &si = i == 1 ? s1_ : s2_;
-        const T ri = r_of(i, dq, ds, e);
+        const T ri = hist_rate_end(i, dq, ds, e);
         if (si == 0) continue;
         if (T(si) * ri > 0) continue;
         // the zone would recede if the stick zone can grow to e* (not modelled here)
@@ -454,8 +453,8 @@ template <class T> class static_history {
     }
     const T e0 = (b1_ + b2_) / 2;
     int d1 = s1_, d2 = s2_;
-    if (d1 == 0) d1 = sgn(r_of(1, dq, ds, e0));
-    if (d2 == 0) d2 = sgn(r_of(2, dq, ds, e0));
+    if (d1 == 0) d1 = sgn(hist_rate_end(1, dq, ds, e0));
+    if (d2 == 0) d2 = sgn(hist_rate_end(2, dq, ds, e0));
     if (d1 == 0 || d2 == 0)
       throw error(status::not_applicable, "static_history: an edge stays stuck along the segment (r_i = 0)");
 
@@ -473,8 +472,8 @@ template <class T> class static_history {
       g1 = b1_;
       g2 = b2_;
       const T e = (b1_ + b2_) / 2;
-      if (b1_ >= 1) g1 = 1 - std::max(T(1e-6), lam * abs(r_of(1, dq, ds, e)) / 2);
-      if (b2_ >= 1) g2 = 1 - std::max(T(1e-6), lam * abs(r_of(2, dq, ds, e)) / 2);
+      if (b1_ >= 1) g1 = 1 - std::max(T(1e-6), lam * abs(hist_rate_end(1, dq, ds, e)) / 2);
+      if (b2_ >= 1) g2 = 1 - std::max(T(1e-6), lam * abs(hist_rate_end(2, dq, ds, e)) / 2);
     };
     // The ends along the segment. With v = (ds/4, -dq pi/2) the residual is F(b1, b2) + lambda v
     // (F: the band sums), so the path of the ends is the curve v1 F2 - v2 F1 = 0, and lambda
@@ -648,7 +647,7 @@ template <class T> class static_history {
     // linear in e, and e only falls); no end may pass a cusp that was not located
     {
       const T ef = (fb1 + fb2) / 2;
-      if (!(T(d1) * r_of(1, dq, ds, ef) > 0) || !(T(d2) * r_of(2, dq, ds, ef) > 0))
+      if (!(T(d1) * hist_rate_end(1, dq, ds, ef) > 0) || !(T(d2) * hist_rate_end(2, dq, ds, ef) > 0))
         throw error(status::not_applicable, "static_history: a stick-zone end stops advancing within the segment");
       const auto &lst = ev.back();
       if (fb1 > lst[1] || fb2 > lst[2]) throw error(status::not_applicable, "static_history: a stick-zone end recedes");
@@ -659,7 +658,7 @@ template <class T> class static_history {
     sg.b1e = e1;
     sg.b2e = e2;
     // the new traction on panels over (-e2, e1)
-    std::vector<sh_panel<T>> np = new_panels(e1, e2, d1, d2, dq, ds);
+    std::vector<sh_panel<T>> np = new_panels(e1, e2, d1, d2);
     // the friction limit inside the new stick zone (an interior slip zone otherwise)
     check_limit(np);
     panels_ = std::move(np);
@@ -783,9 +782,7 @@ template <class T> class static_history {
     return qS(x) + w / pi<T>() * (o1.K + o2.K);
   }
 
-  std::vector<sh_panel<T>> new_panels(const T &b1, const T &b2, int d1, int d2, const T &dq, const T &ds) const {
-    (void)dq;
-    (void)ds;
+  std::vector<sh_panel<T>> new_panels(const T &b1, const T &b2, int d1, int d2) const {
     // cusps within rounding of an end or of each other are one point (a Masing return puts
     // an end on an earlier end position, to rounding): no panels narrower than that
     const T tiny = T(1e3) * eps<T>() * (b1 + b2);
