@@ -1,4 +1,5 @@
-// halfslip core: load histories by static solves of advancing segments (issue 14).
+// halfslip core: load histories by static solves of advancing segments and by the slide of
+// the stick zone where an end recedes (issue 14).
 //
 // Canonical frame as core/history.hpp: a = p0 = f = E* = 1, q = Q/fP, s = sigma/(f p0),
 // P = pi/2 for every pressure (p0 = 2P/(pi a)); the stick zone is (-b2, b1).
@@ -26,10 +27,15 @@
 // slip come from them through the slip rate of core/history.hpp (the rate of a fully stuck
 // interval), by quadrature in lambda.
 //
-// A segment that is not advancing-only (an end that recedes, an edge that stays stuck with
-// r_i = 0, a stick traction past the friction limit inside the stick zone: an interior slip
-// zone, a static solve that fails) throws status::not_applicable and leaves the state
-// unchanged; the caller marches such paths (core/history.hpp).
+// Where an end recedes (its zone would slip against its traction: r_i = 0 holds the stick
+// half-width at e*, and the stick zone slides towards that side while the other end advances),
+// the segment is cut into phases: advancing phases as above, and receding phases, whose slide
+// is an Abel equation in the distance slid (receding_phase; docs/history.md, "A receding end").
+//
+// A segment the phases cannot follow (an edge that stays stuck with r_i = 0, a stick traction
+// past the friction limit inside the stick zone: an interior slip zone, a static solve that
+// fails, e.g. at a fold next to a memory point) throws status::not_applicable and leaves the
+// state unchanged; the caller marches such paths (core/history.hpp).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -37,6 +43,8 @@
 #include <limits>
 #include <memory>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "gauss.hpp"
 #include "history_rates.hpp"
@@ -106,6 +114,7 @@ template <class T> struct sh_panel {
 // theta-map of the end that starts on a cusp), with d lambda / dt
 template <class T> struct sh_piece {
   std::vector<T> lam, b1, b2, dlam;
+  int d1 = 0, d2 = 0;  // the zones' directions on the piece (0: no zone)
 };
 // a segment: its loads and the ends along it, for the slip and the energies
 template <class T> struct sh_segment {
@@ -428,52 +437,178 @@ template <class T> class static_history {
   }
 
   // ---- the segment -------------------------------------------------------------
+  // A segment is a sequence of phases (lambda in [0, 1] along it): advancing phases (both
+  // ends advance: one static solve from the phase's start state) and receding phases (one
+  // end recedes with r_i = 0, the other advances: an Abel equation for the slide of the
+  // stick zone, receding_phase below). A phase ends at the vertex, where an advancing end
+  // stops advancing (d_i r_i reaches 0: it recedes from there), or where a receding zone
+  // closes (it sticks whole, and may reopen with the other sign).
   void advance(const T &dq, const T &ds) {
-    using std::abs;
-    // decide the zones (the rules of core/history.hpp's decide(), without the recede)
-    for (int pass = 0; pass < 4; ++pass) {
-      bool changed = false;
-      const T e = (b1_ + b2_) / 2;
-      for (int i = 1; i <= 2 && !changed; ++i) {
-        int &si = i == 1 ? s1_ : s2_;
-        const T ri = hist_rate_end(i, dq, ds, e);
-        if (si == 0) continue;
-        if (T(si) * ri > 0) continue;
-        // the zone would recede if the stick zone can grow to e* (not modelled here)
-        if (ds != 0) {
-          const T es = (i == 1 ? 2 : -2) * dq / ds;
-          const T bo = i == 1 ? b2_ : b1_;
-          if (es >= e && 2 * es - bo < 1)
-            throw error(status::not_applicable, "static_history: a stick-zone end recedes on this segment");
-        }
-        stick_whole(i);
-        changed = true;
-      }
-      if (!changed) break;
-    }
-    const T e0 = (b1_ + b2_) / 2;
-    int d1 = s1_, d2 = s2_;
-    if (d1 == 0) d1 = sgn(hist_rate_end(1, dq, ds, e0));
-    if (d2 == 0) d2 = sgn(hist_rate_end(2, dq, ds, e0));
-    if (d1 == 0 || d2 == 0)
-      throw error(status::not_applicable, "static_history: an edge stays stuck along the segment (r_i = 0)");
-
     sh_segment<T> sg;
     sg.q0 = q_;
     sg.s0 = s_;
     sg.dq = dq;
     sg.ds = ds;
-    sg.d1 = d1;
-    sg.d2 = d2;
-    sg.b1s = b1_;
-    sg.b2s = b2_;
+    const T q0 = q_, s0 = s_;
+    T lam = 0;
+    int force = 0;  // an end found to stop advancing at the phase's start: it recedes
+    // a receding zone that closed reopens at once, with r_i = 0 there: its direction is that of
+    // the growth of r_i as the other end goes on advancing (the advancing zone's direction)
+    std::array<int, 2> open{{0, 0}};
+    for (int phase = 0;; ++phase) {
+      if (phase >= 32)
+        throw error(status::not_applicable, "static_history: too many phases in one segment");
+      const int rec = decide(dq, ds, force);
+      if (phase == 0) {
+        sg.b1s = b1_;
+        sg.b2s = b2_;
+      }
+      force = 0;
+      T next;
+      if (rec != 0) {
+        next = receding_phase(rec, lam, dq, ds, sg);
+        open = {{0, 0}};
+        if ((rec == 1 ? s1_ : s2_) == 0) open[rec - 1] = rec == 1 ? s2_ : s1_;
+      } else {
+        stop_info st;
+        const auto hint = open;
+        open = {{0, 0}};
+        if (advancing_phase(lam, T(1), dq, ds, sg, &st, hint)) {
+          next = 1;
+        } else {
+          // an end stops advancing inside the phase: locate the point (e = e*) and take the
+          // phase to there; from there that end recedes
+          const T mu = locate_stop(st, lam, dq, ds, hint);
+          next = lam + (1 - lam) * mu;
+          if (next > lam && !advancing_phase(lam, next, dq, ds, sg, nullptr, hint))
+            throw error(status::not_applicable, "static_history: an end that stops advancing was not located");
+          if (!(next > lam)) next = lam;  // it stops at the phase's start
+          force = st.end;
+        }
+      }
+      lam = next;
+      q_ = q0 + lam * dq;
+      s_ = s0 + lam * ds;
+      if (!(lam < 1)) break;
+    }
+    sg.d1 = s1_;
+    sg.d2 = s2_;
+    sg.b1e = b1_;
+    sg.b2e = b2_;
+    q_ = q0 + dq;
+    s_ = s0 + ds;
+    segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
+  }
+
+  // The zones at the start of a phase under the rates (dq, ds) (the rules of core/history.hpp's
+  // decide()): an end whose r_i keeps the zone's sign advances; one that reverses recedes with
+  // r_i = 0 if the stick zone can grow to e* (a jump: the part of the zone between the end and
+  // 2 e* - b_other sticks at once, at the limit), else the zone sticks whole. Returns the
+  // receding end (0: none). force: an end located at r_i = 0 (it recedes, e* = e).
+  int decide(const T &dq, const T &ds, int force) {
+    using std::abs;
+    int rec = 0;
+    for (int pass = 0; pass < 4; ++pass) {
+      bool changed = false;
+      rec = 0;
+      const T e = (b1_ + b2_) / 2;
+      for (int i = 1; i <= 2 && !changed; ++i) {
+        int &si = i == 1 ? s1_ : s2_;
+        const T ri = hist_rate_end(i, dq, ds, e);
+        if (si == 0) continue;
+        // r_i = 0 to rounding at the start (the end of a receding phase, continued): the end
+        // advances iff r_i grows with the zone's sign as the other end advances (e falls: r_1
+        // grows like ds, r_2 like -ds), else it goes on receding
+        const T es0 = ds != 0 ? (i == 1 ? 2 : -2) * dq / ds : T(0);
+        const bool at_event = i == force || (ds != 0 && abs(es0 - e) <= T(1e-9) * (1 + abs(e)));
+        if (at_event && i != force) {
+          if (T(si) * (i == 1 ? ds : -ds) > 0) continue;
+        } else if (i != force && T(si) * ri > 0) {
+          continue;
+        }
+        if (ds != 0) {
+          T es = es0;
+          if (at_event) es = e;  // at the event itself (located to rounding)
+          const T bo = i == 1 ? b2_ : b1_;
+          const T bi = i == 1 ? b1_ : b2_;
+          if (es >= e && 2 * es - bo < 1) {
+            const T bn = 2 * es - bo;
+            if (bn > bi) stick_part(i, bn);
+            rec = i;
+            continue;
+          }
+        }
+        stick_whole(i);
+        changed = true;
+      }
+      if (!changed) return rec;
+    }
+    throw error(status::not_applicable, "static_history: the zones did not settle");
+  }
+
+  // an advancing phase stopped: end `end` reached d_i r_i = 0 between the phase's local
+  // parameters mu_lo and mu_hi (ends b1_lo, b2_lo at mu_lo)
+  struct stop_info {
+    int end = 0;
+    T mu_lo{0}, mu_hi{0}, b1_lo{1}, b2_lo{1};
+  };
+
+  // mu in [mu_lo, mu_hi] (of the phase from lam0 to 1) where the stopping end's r_i = 0
+  T locate_stop(const stop_info &st, const T &lam0, const T &dq, const T &ds, const std::array<int, 2> &open) const {
+    const T span = 1 - lam0;
+    const T DQ = dq * span, DS = ds * span;
+    int d1 = s1_, d2 = s2_;
+    const T e0 = (b1_ + b2_) / 2;
+    if (d1 == 0) d1 = open[0] != 0 ? open[0] : sgn(hist_rate_end(1, DQ, DS, e0));
+    if (d2 == 0) d2 = open[1] != 0 ? open[1] : sgn(hist_rate_end(2, DQ, DS, e0));
+    const int di = st.end == 1 ? d1 : d2;
+    T lo = st.mu_lo, hi = st.mu_hi, g1 = st.b1_lo, g2 = st.b2_lo;
+    for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
+      const T mid = lo + (hi - lo) / 2;
+      T x1 = g1, x2 = g2;
+      if (!solve(x1, x2, d1, d2, DQ * mid, DS * mid))
+        throw error(status::not_applicable, "static_history: the static solve did not converge (locating a stop)");
+      if (T(di) * hist_rate_end(st.end, DQ, DS, (x1 + x2) / 2) > 0) {
+        lo = mid;
+        g1 = x1;
+        g2 = x2;
+      } else {
+        hi = mid;
+      }
+    }
+    return lo;
+  }
+
+  // The advancing phase from lam0 (the current state) to lam1 of the segment (dq, ds): the ends
+  // are static solves from the current state. Appends its pieces and energies to sg and moves
+  // the state to lam1; returns false (state and sg unchanged) with *stop filled if an end
+  // stops advancing before lam1 (stop == nullptr: that is an error).
+  bool advancing_phase(const T &lam0, const T &lam1, const T &dq, const T &ds, sh_segment<T> &sg,
+                       stop_info *stop, const std::array<int, 2> &open) {
+    using std::abs;
+    const T span = lam1 - lam0;
+    const T DQ = dq * span, DS = ds * span;  // the phase's load increments
+    const T e0 = (b1_ + b2_) / 2;
+    int d1 = s1_, d2 = s2_;
+    if (d1 == 0) d1 = open[0] != 0 ? open[0] : sgn(hist_rate_end(1, DQ, DS, e0));
+    if (d2 == 0) d2 = open[1] != 0 ? open[1] : sgn(hist_rate_end(2, DQ, DS, e0));
+    if (d1 == 0 || d2 == 0)
+      throw error(status::not_applicable, "static_history: an edge stays stuck along the segment (r_i = 0)");
+    auto stops = [&](const T &g1, const T &g2) -> int {
+      const T e = (g1 + g2) / 2;
+      if (!(T(d1) * hist_rate_end(1, DQ, DS, e) > 0)) return 1;
+      if (!(T(d2) * hist_rate_end(2, DQ, DS, e) > 0)) return 2;
+      return 0;
+    };
+    std::vector<sh_piece<T>> pieces;
+    T E1 = 0, E2 = 0;
 
     auto guess = [&](const T &lam, T &g1, T &g2) {
       g1 = b1_;
       g2 = b2_;
       const T e = (b1_ + b2_) / 2;
-      if (b1_ >= 1) g1 = 1 - std::max(T(1e-6), lam * abs(hist_rate_end(1, dq, ds, e)) / 2);
-      if (b2_ >= 1) g2 = 1 - std::max(T(1e-6), lam * abs(hist_rate_end(2, dq, ds, e)) / 2);
+      if (b1_ >= 1) g1 = 1 - std::max(T(1e-6), lam * abs(hist_rate_end(1, DQ, DS, e)) / 2);
+      if (b2_ >= 1) g2 = 1 - std::max(T(1e-6), lam * abs(hist_rate_end(2, DQ, DS, e)) / 2);
     };
     // The ends along the segment. With v = (ds/4, -dq pi/2) the residual is F(b1, b2) + lambda v
     // (F: the band sums), so the path of the ends is the curve v1 F2 - v2 F1 = 0, and lambda
@@ -499,7 +634,7 @@ template <class T> class static_history {
           }
           if (!have) continue;
           std::array<T, 3> e;
-          if (end_driven(i, i == 1 ? m : -m, cur, d1, d2, dq, ds, e) && e[0] > cur[0] && e[0] < best[0]) {
+          if (end_driven(i, i == 1 ? m : -m, cur, d1, d2, DQ, DS, e) && e[0] > cur[0] && e[0] < best[0]) {
             best = e;
             bi = i;
           }
@@ -574,10 +709,10 @@ template <class T> class static_history {
         }
       }
     }
-    // pieces [ev[k], ev[k+1]], the last one ending at lambda = 1
+    // pieces [ev[k], ev[k+1]], the last one ending at lambda = 1 (mu: the phase's parameter)
     const auto &R = *lrule_;
     const int nl = R.n();
-    const T A = dq / 2, Bq = ds / 4;
+    const T A = dq / 2, Bq = ds / 4;  // the segment's rates (per unit lambda of the segment)
     T fb1 = 0, fb2 = 0;
     // Pieces between crossings: on each side of a crossing the band sums are smooth in the
     // ends (the crossing is a kink: the slope in that end jumps), so the ends are smooth in
@@ -592,6 +727,8 @@ template <class T> class static_history {
       if (evi[k] == 1) wb1 -= 64 * eps<T>();
       if (evi[k] == 2) wb2 -= 64 * eps<T>();
       sh_piece<T> pc;
+      pc.d1 = d1;
+      pc.d2 = d2;
       pc.lam.resize(nl);
       pc.b1.resize(nl);
       pc.b2.resize(nl);
@@ -612,18 +749,32 @@ template <class T> class static_history {
         pl = lam;
         pb1 = wb1;
         pb2 = wb2;
-        if (!solve(g1, g2, d1, d2, dq * lam, ds * lam, &Jn))
+        if (!solve(g1, g2, d1, d2, DQ * lam, DS * lam, &Jn))
           throw error(status::not_applicable, "static_history: the static solve of the segment did not converge");
-        if (g1 > wb1 + 1e3 * eps<T>() || g2 > wb2 + 1e3 * eps<T>())
-          throw error(status::not_applicable, "static_history: the ends did not advance monotonically");
-        pc.lam[j] = lam;
+        // (a trial past the point where an end stops: the static solve there has that end
+        // moving back, or its r_i of the other sign)
+        int se = stops(g1, g2);
+        if (!se && (g1 > wb1 + 1e3 * eps<T>() || g2 > wb2 + 1e3 * eps<T>())) {
+          if (!stop) throw error(status::not_applicable, "static_history: the ends did not advance monotonically");
+          se = g1 > wb1 + 1e3 * eps<T>() ? 1 : 2;
+        }
+        if (se) {
+          if (!stop) throw error(status::not_applicable, "static_history: a stick-zone end stops advancing within the segment");
+          stop->end = se;
+          stop->mu_lo = ppl;  // the node before (or the piece's start)
+          stop->mu_hi = lam;
+          stop->b1_lo = wb1;
+          stop->b2_lo = wb2;
+          return false;
+        }
+        pc.lam[j] = lam0 + span * lam;
         pc.b1[j] = wb1 = g1;
         pc.b2[j] = wb2 = g2;
-        pc.dlam[j] = (lb - la) / 2;
+        pc.dlam[j] = span * (lb - la) / 2;
         const T c = (g1 - g2) / 2, e = (g1 + g2) / 2;
         const T wl = R.w[j] * pc.dlam[j];
-        sg.E1 += wl * T(d1) * hist_zone_rate(*pm_, 32, +1, A, Bq, c, e, g1, T(1));
-        sg.E2 += wl * T(d2) * hist_zone_rate(*pm_, 32, -1, A, Bq, c, e, T(-1), -g2);
+        E1 += wl * T(d1) * hist_zone_rate(*pm_, 32, +1, A, Bq, c, e, g1, T(1));
+        E2 += wl * T(d2) * hist_zone_rate(*pm_, 32, -1, A, Bq, c, e, T(-1), -g2);
       }
       // the piece's nodes must lie between its ends: a crossing point that the nodes
       // passed, or did not reach, is a path the pieces do not follow
@@ -634,10 +785,10 @@ template <class T> class static_history {
       } else {
         fb1 = wb1;
         fb2 = wb2;
-        if (!solve(fb1, fb2, d1, d2, dq, ds))
+        if (!solve(fb1, fb2, d1, d2, DQ, DS))
           throw error(status::not_applicable, "static_history: the static solve of the segment did not converge");
       }
-      sg.pieces.push_back(std::move(pc));
+      pieces.push_back(std::move(pc));
     }
     if (ev.back()[0] == 1) {  // the last event is the vertex itself
       fb1 = ev.back()[1];
@@ -646,53 +797,69 @@ template <class T> class static_history {
     // the ends advance throughout iff d_i r_i > 0 at the final half-width too (r_i is
     // linear in e, and e only falls); no end may pass a cusp that was not located
     {
-      const T ef = (fb1 + fb2) / 2;
-      if (!(T(d1) * hist_rate_end(1, dq, ds, ef) > 0) || !(T(d2) * hist_rate_end(2, dq, ds, ef) > 0))
-        throw error(status::not_applicable, "static_history: a stick-zone end stops advancing within the segment");
+      if (const int se = stops(fb1, fb2)) {
+        if (!stop) {
+          // located to rounding by the caller: the phase ends where the end stops
+          const T ef = (fb1 + fb2) / 2;
+          const T es = (se == 1 ? 2 : -2) * dq / ds;
+          if (!(abs(ef - es) <= T(1e-9) * (1 + abs(es))))
+            throw error(status::not_applicable, "static_history: a stick-zone end stops advancing within the segment");
+        } else {
+          stop->end = se;
+          stop->mu_lo = pieces.empty() ? T(0) : (pieces.back().lam.back() - lam0) / span;
+          stop->mu_hi = 1;
+          stop->b1_lo = pieces.empty() ? b1_ : pieces.back().b1.back();
+          stop->b2_lo = pieces.empty() ? b2_ : pieces.back().b2.back();
+          return false;
+        }
+      }
       const auto &lst = ev.back();
       if (fb1 > lst[1] || fb2 > lst[2]) throw error(status::not_applicable, "static_history: a stick-zone end recedes");
       if (!cusps_in(-lst[2], -fb2).empty() || !cusps_in(fb1, lst[1]).empty())
         throw error(status::not_applicable, "static_history: an end passed a memory point that was not located");
     }
-    const T e1 = fb1, e2 = fb2;
-    sg.b1e = e1;
-    sg.b2e = e2;
-    // the new traction on panels over (-e2, e1)
-    std::vector<sh_panel<T>> np = new_panels(e1, e2, d1, d2);
+    // the new traction on panels over (-fb2, fb1)
+    std::vector<sh_panel<T>> np = new_panels(fb1, fb2, d1, d2);
     // the friction limit inside the new stick zone (an interior slip zone otherwise)
     check_limit(np);
     panels_ = std::move(np);
-    b1_ = e1;
-    b2_ = e2;
+    b1_ = fb1;
+    b2_ = fb2;
     s1_ = d1;
     s2_ = d2;
-    q_ += dq;
-    s_ += ds;
-    segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
+    for (auto &pc : pieces) sg.pieces.push_back(std::move(pc));
+    sg.E1 += E1;
+    sg.E2 += E2;
+    return true;
   }
 
   // a zone sticks whole: the stick zone reaches the edge; q = s_old p there (analytic)
   void stick_whole(int i) {
-    int &si = i == 1 ? s1_ : s2_;
+    stick_part(i, T(1));
+    (i == 1 ? s1_ : s2_) = 0;
+  }
+  // the part of zone i between its end and bn (> b_i) sticks at the limit, q = s_i p (analytic);
+  // the old end becomes a memory point
+  void stick_part(int i, const T &bn) {
+    const int si = i == 1 ? s1_ : s2_;
     sh_panel<T> P;
     P.analytic = true;
     P.c = T(si);
     if (i == 1) {
       P.l = b1_;
-      P.r = 1;
+      P.r = bn;
       P.cusp_l = true;
       auto add = split_at_breaks({P});
       panels_.insert(panels_.end(), add.begin(), add.end());
-      b1_ = 1;
+      b1_ = bn;
     } else {
-      P.l = -1;
+      P.l = -bn;
       P.r = -b2_;
       auto add = split_at_breaks({P});
       if (!panels_.empty()) panels_.front().cusp_l = true;
       panels_.insert(panels_.begin(), add.begin(), add.end());
-      b2_ = 1;
+      b2_ = bn;
     }
-    si = 0;
   }
 
   // The point of the segment's path where end i is at m (b_i = m held), next to the point cur
@@ -783,6 +950,10 @@ template <class T> class static_history {
   }
 
   std::vector<sh_panel<T>> new_panels(const T &b1, const T &b2, int d1, int d2) const {
+    return build_panels(b1, b2, [&](const T &x) { return new_traction(x, b1, b2, d1, d2); });
+  }
+  // the traction trac(x) on panels over (-b2, b1), cut at the state's cusps there
+  template <class Fn> std::vector<sh_panel<T>> build_panels(const T &b1, const T &b2, const Fn &trac) const {
     // cusps within rounding of an end or of each other are one point (a Masing return puts
     // an end on an earlier end position, to rounding): no panels narrower than that
     const T tiny = T(1e3) * eps<T>() * (b1 + b2);
@@ -805,7 +976,7 @@ template <class T> class static_history {
         for (int j = 0; j < R.n(); ++j) {
           const T xl = (r - l) * R.sh[j] * R.sh[j], xr = (r - l) * R.ch[j] * R.ch[j];
           const T x = xl <= xr ? l + xl : r - xr;
-          P.v.push_back(new_traction(x, b1, b2, d1, d2));
+          P.v.push_back(trac(x));
         }
         // resolved? the last Legendre coefficients in theta, against the panel's scale
         if (!resolved(P.v) && (r - l) > T(1e-6) && out.size() < 400) {
@@ -864,6 +1035,342 @@ template <class T> class static_history {
       }
   }
 
+  // ---- a receding end ------------------------------------------------------------
+  // One end (rec) recedes with r_rec = 0, which holds the stick half-width at e = e*, while the
+  // other advances: the stick zone (c - e, c + e) slides towards the receding side. With tau the
+  // distance slid (c = ca + dirn tau; dirn = +1 when end 1 recedes), the advancing end is
+  // xa(tau) = xa0 + dirn tau, and the receding end xr(tau) = xr0 + dirn tau. A point that the
+  // advancing end reaches has been stuck since the phase began, so its traction is the start
+  // state's plus the stuck-interval rates since (core/history.hpp); at the end it meets the
+  // limit, q(xa) = d p(xa). With phi = d lambda / d tau and r_rec = 0 that is the Abel equation
+  //   G(tau) = d p(xa) - q_S(xa) = kappa int_0^tau sqrt(2e - v) / sqrt(v) phi(tau') dtau',
+  //   v = tau - tau', kappa = dirn ds/4                       (docs/history.md, "A receding end").
+  // It is solved panel by panel (a Volterra equation: each panel from those before), collocated
+  // at the panel's theta-Gauss nodes, tau = a + L sin^2(theta/2): phi is smooth in sqrt(tau - a)
+  // where a panel starts at a cusp of G (the phase's start, a memory point, a breakpoint).
+  struct rpanel {
+    T a{0}, L{0}, lam_a{0};
+    std::vector<T> phi;  // phi at the lambda rule's nodes
+  };
+
+  // the Lagrange basis of the lambda rule at t (barycentric)
+  void rbasis(const T &t, std::vector<T> &l) const {
+    const auto &R = *lrule_;
+    const int n = R.n();
+    l.assign(n, T(0));
+    T den = 0;
+    for (int j = 0; j < n; ++j) {
+      const T d = t - R.t[j];
+      if (d == 0) {
+        l.assign(n, T(0));
+        l[j] = 1;
+        return;
+      }
+      l[j] = R.bw[j] / d;
+      den += l[j];
+    }
+    for (auto &v : l) v /= den;
+  }
+
+  // theta cuts of (0, pi), graded towards pi (near = +1) or 0 (near = -1) for a near
+  // singularity at relative distance rel beyond that end (none if rel >= 1)
+  std::vector<T> rcuts(const T &rel_hi, const T &rel_lo) const {
+    using std::max;
+    using std::sqrt;
+    const T pi_ = pi<T>();
+    std::vector<T> th{T(0), pi_ / 2, pi_};
+    if (rel_hi < 1)
+      for (T a = max(T(2) * sqrt(max(rel_hi, T(0))), T(64) * eps<T>()); a < pi_ / 2; a *= 2) th.push_back(pi_ - a);
+    if (rel_lo < 1)
+      for (T a = max(T(2) * sqrt(max(rel_lo, T(0))), T(64) * eps<T>()); a < pi_ / 2; a *= 2) th.push_back(a);
+    std::sort(th.begin(), th.end());
+    th.erase(std::unique(th.begin(), th.end()), th.end());
+    return th;
+  }
+
+  // int over panel Q of sqrt(2e - v)/sqrt(v) phi dtau', v = t - tau' (t at or beyond Q's end)
+  T abel_prev(const rpanel &Q, const T &t, const T &e) const {
+    using std::cos;
+    using std::max;
+    using std::sin;
+    using std::sqrt;
+    const auto &R = *lrule_;
+    const T pi_ = pi<T>();
+    const T D = max(t - (Q.a + Q.L), T(0));
+    T sum = 0;
+    auto add = [&](const T &sh, const T &ch, const T &ph, const T &w) {
+      const T v = D + Q.L * ch * ch;  // tau' = a + L sh^2, dtau' = L sh ch dtheta
+      sum += w * Q.L * sh * ch * sqrt(max(2 * e - v, T(0))) / sqrt(v) * ph;
+    };
+    if (D >= Q.L) {
+      for (int j = 0; j < R.n(); ++j) add(R.sh[j], R.ch[j], Q.phi[j], pi_ / 2 * R.w[j]);
+      return sum;
+    }
+    const auto th = rcuts(D / Q.L, T(2));
+    const auto gr = gauss_legendre<T>(16);
+    for (size_t m = 0; m + 1 < th.size(); ++m) {
+      const T hw = (th[m + 1] - th[m]) / 2, mid = (th[m] + th[m + 1]) / 2;
+      for (size_t k = 0; k < gr->x.size(); ++k) {
+        const T tt = mid + hw * gr->x[k];
+        add(sin(tt / 2), cos(tt / 2), R.interp(Q.phi, 2 * tt / pi_ - 1), hw * gr->w[k]);
+      }
+    }
+    return sum;
+  }
+
+  // lambda gained over panel Q from its start to theta (theta = pi: the whole panel)
+  T rlam(const rpanel &Q, const T &theta) const {
+    using std::cos;
+    using std::sin;
+    const auto &R = *lrule_;
+    const T pi_ = pi<T>();
+    T s = 0;
+    if (!(theta < pi_)) {
+      for (int j = 0; j < R.n(); ++j) s += pi_ / 2 * R.w[j] * Q.L * R.sh[j] * R.ch[j] * Q.phi[j];
+      return s;
+    }
+    const auto gr = gauss_legendre<T>(24);
+    const T hw = theta / 2;
+    for (size_t k = 0; k < gr->x.size(); ++k) {
+      const T tt = hw + hw * gr->x[k];
+      s += hw * gr->w[k] * Q.L * sin(tt / 2) * cos(tt / 2) * R.interp(Q.phi, 2 * tt / pi_ - 1);
+    }
+    return s;
+  }
+
+  // phi on the panel (a, a + L) after the panels P; rhs(t) = G(t)/kappa
+  template <class Gf>
+  rpanel rsolve_panel(const std::vector<rpanel> &P, const T &a, const T &L, const T &lam_a, const T &e,
+                      const Gf &rhs) const {
+    using std::max;
+    using std::sin;
+    using std::sqrt;
+    const auto &R = *lrule_;
+    const int n = R.n();
+    const T pi_ = pi<T>();
+    const auto gs = gauss_legendre<T>(32);
+    Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic> M(n, n);
+    Eigen::Matrix<T, Eigen::Dynamic, 1> r(n);
+    std::vector<T> l;
+    for (int j = 0; j < n; ++j) {
+      const T thj = pi_ * (1 + R.t[j]) / 2;
+      const T tj = a + L * R.sh[j] * R.sh[j];
+      T b = rhs(tj);
+      for (const auto &Q : P) b -= abel_prev(Q, tj, e);
+      r(j) = b;
+      for (int m = 0; m < n; ++m) M(j, m) = 0;
+      // int_0^thj sqrt(2e - v)/sqrt(v) l_m(theta') dtau'(theta'), theta' = thj (1 - s^2): the
+      // inverse square root at theta' = thj is taken by s
+      for (size_t k = 0; k < gs->x.size(); ++k) {
+        const T s = (1 + gs->x[k]) / 2, ws = gs->w[k] / 2;
+        const T th = thj * (1 - s * s);
+        const T v = L * sin(thj * s * s / 2) * sin((thj + th) / 2);
+        const T wgt = ws * 2 * thj * s * (L / 2) * sin(th) * sqrt(max(2 * e - v, T(0))) / sqrt(v);
+        rbasis(2 * th / pi_ - 1, l);
+        for (int m = 0; m < n; ++m) M(j, m) += wgt * l[m];
+      }
+    }
+    rpanel pn;
+    pn.a = a;
+    pn.L = L;
+    pn.lam_a = lam_a;
+    const Eigen::Matrix<T, Eigen::Dynamic, 1> x = M.partialPivLu().solve(r);
+    pn.phi.assign(x.data(), x.data() + n);
+    return pn;
+  }
+
+  // phi resolved on its panel: the last two Legendre coefficients in theta against max |phi|
+  bool rresolved(const std::vector<T> &v) const {
+    using boost::math::isfinite;
+    using std::abs;
+    using std::max;
+    const auto &R = *lrule_;
+    const int n = R.n();
+    T scale = 0;
+    for (const T &x : v) {
+      if (!isfinite(x)) return false;
+      scale = max(scale, abs(x));
+    }
+    T cm[2] = {0, 0};
+    for (int j = 0; j < n; ++j) {
+      T p0 = 1, p1 = R.t[j];
+      for (int k = 2; k < n; ++k) {
+        const T p2 = (T(2 * k - 1) * R.t[j] * p1 - T(k - 1) * p0) / T(k);
+        p0 = p1;
+        p1 = p2;
+      }
+      cm[0] += R.w[j] * v[j] * p1;
+      cm[1] += R.w[j] * v[j] * p0;
+    }
+    cm[0] *= T(2 * (n - 1) + 1) / 2;
+    cm[1] *= T(2 * (n - 2) + 1) / 2;
+    return max(abs(cm[0]), abs(cm[1])) <= T(1e5) * eps<T>() * scale;
+  }
+
+  // The receding phase from lam0 (the current state, with e = e* for end rec) towards lambda =
+  // 1 of the segment (dq, ds). Returns the lambda it reaches: 1, or where the receding zone
+  // closes (it then sticks whole). Appends its pieces and energies to sg and moves the state.
+  T receding_phase(int rec, const T &lam0, const T &dq, const T &ds, sh_segment<T> &sg) {
+    using std::abs;
+    using std::max;
+    using std::min;
+    using std::sqrt;
+    const int adv = 3 - rec;
+    const int dirn = rec == 1 ? 1 : -1;
+    const T e = (b1_ + b2_) / 2, ca = (b1_ - b2_) / 2;
+    const T A = dq / 2, B = ds / 4;
+    const T kappa = T(dirn) * B;
+    const int drec = rec == 1 ? s1_ : s2_;
+    int dadv = adv == 1 ? s1_ : s2_;
+    if (dadv == 0) dadv = sgn(hist_rate_end(adv, dq, ds, e));
+    if (drec == 0 || dadv == 0 || !(T(dadv) * kappa > 0))
+      throw error(status::not_applicable, "static_history: a receding end without an advancing one");
+    const T xa0 = adv == 1 ? b1_ : -b2_, xr0 = rec == 1 ? b1_ : -b2_;
+    const T tclose = 1 - (rec == 1 ? b1_ : b2_);
+    if (!(tclose > 0)) throw error(status::not_applicable, "static_history: a receding zone of no length");
+    const T tmax = min(tclose, 2 * e);
+    auto xa = [&](const T &tau) { return xa0 + T(dirn) * tau; };
+    const T G0 = T(dadv) * pm_->p(xa0) - qS(xa0);  // 0 but for rounding
+    auto rhs = [&](const T &tau) {
+      const T x = xa(tau);
+      return (T(dadv) * pm_->p(x) - qS(x) - G0) / kappa;
+    };
+    // the cusps of G: where xa passes a memory point or a pressure breakpoint
+    std::vector<T> brk;
+    for (const T &c : cusps_in(-b2_, b1_)) brk.push_back(abs(c - xa0));
+    std::sort(brk.begin(), brk.end());
+
+    const auto &R = *lrule_;
+    const int n = R.n();
+    const T pi_ = pi<T>();
+    std::vector<rpanel> P;
+    T tau = 0, lam = lam0, Lcap = tmax, tauf = 0;
+    bool closed = false;
+    for (size_t guard = 0;; ++guard) {
+      if (guard > 4000) throw error(status::not_applicable, "static_history: the receding phase needs too many panels");
+      T nb = tmax;
+      for (const T &b : brk)
+        if (b > tau * (1 + T(1e3) * eps<T>()) + T(1e3) * eps<T>()) {
+          nb = min(nb, b);
+          break;
+        }
+      T L = min(nb - tau, Lcap);
+      rpanel pn;
+      for (int tries = 0;; ++tries) {
+        if (tries > 60 || !(L > T(64) * eps<T>() * (1 + tau)))
+          throw error(status::not_applicable, "static_history: the slide of a receding phase is not resolved");
+        const T b = L == nb - tau ? nb : tau + L;
+        pn = rsolve_panel(P, tau, b - tau, lam, e, rhs);
+        if (rresolved(pn.phi)) break;
+        L /= 2;
+      }
+      for (const T &v : pn.phi)
+        if (!(v > 0)) throw error(status::not_applicable, "static_history: the advancing end stalls in a receding phase");
+      const T lb = lam + rlam(pn, pi_);
+      const T pend = pn.a + pn.L;
+      if (lb >= 1) {
+        // the vertex lies in this panel
+        T lo = 0, hi = pi_;
+        for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
+          const T mid = (lo + hi) / 2;
+          if (lam + rlam(pn, mid) < 1) lo = mid;
+          else hi = mid;
+        }
+        const T sh = std::sin(hi / 2);
+        tauf = min(pn.a + pn.L * sh * sh, pend);
+        P.push_back(std::move(pn));
+        break;
+      }
+      P.push_back(std::move(pn));
+      if (!(pend < tmax)) {
+        if (tmax < tclose)
+          throw error(status::not_applicable, "static_history: the stick zone slides past its own width");
+        tauf = tclose;
+        closed = true;
+        lam = lb;
+        break;
+      }
+      tau = pend;
+      lam = lb;
+      Lcap = 2 * P.back().L;
+    }
+    const T lam_end = closed ? lam : T(1);
+
+    // pieces (lambda-rule nodes over each panel, the last cut at tauf) and energies
+    std::vector<sh_piece<T>> pieces;
+    T E1 = 0, E2 = 0;
+    const int d1 = adv == 1 ? dadv : drec, d2 = adv == 1 ? drec : dadv;
+    for (const auto &Q : P) {
+      const T pb = min(Q.a + Q.L, tauf);
+      const T Lp = pb - Q.a;
+      if (!(Lp > 0)) continue;
+      sh_piece<T> pc;
+      pc.d1 = d1;
+      pc.d2 = d2;
+      for (int j = 0; j < n; ++j) {
+        const T t = Q.a + Lp * R.sh[j] * R.sh[j];
+        const T tq = shdetail::tpar(Q.a, Q.a + Q.L, t);
+        const T ph = R.interp(Q.phi, tq);
+        const T c = ca + T(dirn) * t;
+        const T b1 = c + e, b2 = e - c;
+        pc.lam.push_back(Q.lam_a + rlam(Q, pi_ * (1 + tq) / 2));
+        pc.b1.push_back(b1);
+        pc.b2.push_back(b2);
+        pc.dlam.push_back(ph * Lp * R.sh[j] * R.ch[j] * pi_ / 2);
+        const T wl = R.w[j] * pc.dlam.back();
+        E1 += wl * T(d1) * hist_zone_rate(*pm_, 32, +1, A, B, c, e, b1, T(1));
+        E2 += wl * T(d2) * hist_zone_rate(*pm_, 32, -1, A, B, c, e, T(-1), -b2);
+      }
+      pieces.push_back(std::move(pc));
+    }
+
+    // the traction after the phase on the new stick zone: a point stuck throughout has the
+    // start state's traction plus the rates, kappa sqrt(dr / da) per unit tau (da, dr: its
+    // distances from the advancing and the receding end); a point that the receding end
+    // passed at tau_in has d_rec p there plus the rates since
+    const T xaf = xa(tauf);
+    const T xrf = closed ? T(dirn) : xr0 + T(dirn) * tauf;
+    const auto gr = gauss_legendre<T>(16);
+    auto qnew = [&](const T &x) {
+      const T tin = T(dirn) * (x - xr0);
+      const bool entered = tin > 0;
+      T q = entered ? T(drec) * pm_->p(x) : qS(x);
+      const T lo = entered ? tin : T(0);
+      for (const auto &Q : P) {
+        const T pa = max(Q.a, lo), pb = min(Q.a + Q.L, tauf);
+        const T Lp = pb - pa;
+        if (!(Lp > 0)) continue;
+        const T da_b = abs(x - xa(pb));                          // from the advancing end at pb
+        const T dr_a = entered && pa == lo ? T(0) : abs(x - (xr0 + T(dirn) * pa));  // from the receding end at pa
+        const auto th = rcuts(da_b / Lp, dr_a / Lp);
+        for (size_t m = 0; m + 1 < th.size(); ++m) {
+          const T hw = (th[m + 1] - th[m]) / 2, mid = (th[m] + th[m + 1]) / 2;
+          for (size_t k = 0; k < gr->x.size(); ++k) {
+            const T tt = mid + hw * gr->x[k];
+            const T sh = std::sin(tt / 2), ch = std::cos(tt / 2);
+            const T da = da_b + Lp * ch * ch, dr = dr_a + Lp * sh * sh;
+            const T t = pa + Lp * sh * sh;
+            const T ph = R.interp(Q.phi, shdetail::tpar(Q.a, Q.a + Q.L, t));
+            q += hw * gr->w[k] * Lp * sh * ch * kappa * sqrt(dr / da) * ph;
+          }
+        }
+      }
+      return q;
+    };
+    const T nb1 = adv == 1 ? xaf : xrf, nb2 = adv == 1 ? -xrf : -xaf;
+    std::vector<sh_panel<T>> np = build_panels(nb1, nb2, qnew);
+    check_limit(np);
+    panels_ = std::move(np);
+    b1_ = nb1;
+    b2_ = nb2;
+    (adv == 1 ? s1_ : s2_) = dadv;
+    if (closed) (rec == 1 ? s1_ : s2_) = 0;
+    for (auto &pc : pieces) sg.pieces.push_back(std::move(pc));
+    sg.E1 += E1;
+    sg.E2 += E2;
+    return lam_end;
+  }
+
   // ---- slip --------------------------------------------------------------------
   T seg_slip(const sh_segment<T> &sg, const T &x) const {
     using std::cos;
@@ -876,29 +1383,33 @@ template <class T> class static_history {
     T h = 0;
     for (const auto &pc : sg.pieces) {
       for (int z = -1; z <= 1; z += 2) {
-        const int dz = z > 0 ? sg.d1 : sg.d2;
+        const int dz = z > 0 ? pc.d1 : pc.d2;
         if (dz == 0) continue;
-        // depth of x into zone z at t (the ends only advance: it grows with t)
+        // depth of x into zone z at t (monotonic on a piece: it grows where the zone
+        // advances, falls where it recedes)
         auto depth = [&](const T &t) {
           return z > 0 ? x - R.interp(pc.b1, t) : -R.interp(pc.b2, t) - x;
         };
-        if (!(depth(T(1)) > 0)) continue;
-        T t0 = -1;
-        if (!(depth(T(-1)) > 0)) {
-          T lo = -1, hi = 1;
+        const bool in0 = depth(T(-1)) > 0, in1 = depth(T(1)) > 0;
+        if (!in0 && !in1) continue;
+        T t0 = -1, t1 = 1;
+        if (in0 != in1) {
+          T lo = -1, hi = 1;  // depth(lo) and depth(hi) differ in sign
           for (int it = 0; it < 200 && hi - lo > 4 * eps<T>(); ++it) {
             const T m = (lo + hi) / 2;
-            if (depth(m) > 0) hi = m;
+            if ((depth(m) > 0) == in1) hi = m;
             else lo = m;
           }
-          t0 = hi;
+          if (in1) t0 = hi;
+          else t1 = lo;
         }
-        // the slip rate grows like sqrt(t - t0): t = t0 + (1 - t0) sin^2(phi/2)
-        const T span = 1 - t0;
+        // the slip rate grows like sqrt(t - t0) where x enters the zone: t = t0 + (t1 - t0)
+        // sin^2(phi/2) (mirrored where x leaves a receding zone)
+        const T span = t1 - t0;
         for (size_t j = 0; j < gr->x.size(); ++j) {
           const T ph = pi_ * (1 + gr->x[j]) / 2;
           const T sh = sin(ph / 2);
-          const T t = t0 + span * sh * sh;
+          const T t = in1 ? t0 + span * sh * sh : t1 - span * sh * sh;
           const T wt = pi_ / 2 * gr->w[j] * span * sin(ph) / 2;
           const T b1 = R.interp(pc.b1, t), b2 = R.interp(pc.b2, t);
           h += wt * R.interp(pc.dlam, t) * hist_hdot(z, A, B, (b1 - b2) / 2, (b1 + b2) / 2, x);
