@@ -329,3 +329,75 @@ TEST_CASE("static history: receding phases against the march (Hertz and flat pun
     if (h.dir2() != 0) CHECK(std::fabs(h.traction(-h.b2() + 1e-10) - h.dir2() * pm->p(-h.b2())) < 1e-4);
   }
 }
+
+// The slip of a static state from its phase's start, outside the stick zone, by the outer values
+// of the finite Hilbert inversion (sh_start, used for the phases with a fold): from the zero state
+// it is the monotonic slip, against the Hertz closed forms and the general solver (independent).
+TEST_CASE("static history: slip and energy of a static state from its start (sh_start) against monotonic solutions") {
+  std::vector<std::shared_ptr<const pressure_model<double>>> pms{hertz_pm(),
+                                                                 std::make_shared<flat_rounded_pressure<double>>(0.5)};
+  for (const auto &pm : pms) {
+    sh_start<double> S;
+    S.pm = pm;
+    S.rule = std::make_shared<shdetail::trule<double>>(24);
+    sh_panel<double> P;
+    P.l = -1;
+    P.r = 1;
+    P.analytic = true;
+    P.c = 0;
+    S.panels = {P};
+    for (const auto &bp : pm->breakpoints())
+      if (bp.x > -1 && bp.x < 1) S.cusps.push_back(bp.x);
+    for (const auto &c : {std::make_pair(0.5, 0.4), std::make_pair(0.3, 2.0), std::make_pair(-0.4, 0.3)}) {
+      general_scene<double> sc;
+      sc.q = c.first;
+      sc.s = c.second;
+      const auto m = solve_general<double>(*pm, sc);
+      const double b1 = m.b1(), b2 = m.b2();
+      const int d1 = m.dir1(), d2 = m.dir2();
+      CAPTURE(c.first);
+      CAPTURE(c.second);
+      for (int i = 1; i <= 2; ++i) CHECK(std::fabs(S.energy(i, b1, b2, d1, d2) - m.energy(i)) < 1e-11 * m.energy(i));
+      for (double x : {b1 + 0.3 * (1 - b1), 0.999, -b2 - 0.5 * (1 - b2), -0.999}) {
+        CAPTURE(x);
+        CHECK(std::fabs(S.dh(x, b1, b2, d1, d2) - m.slip(x)) < 1e-11);
+      }
+    }
+  }
+}
+
+// A fold on a random walk (Hertz): zone 2 reopens and reaches an earlier end position (a memory
+// point) behind which the traction is close to the limit with its sign, left by an earlier zone
+// of the same direction; there the path's load would fall as the end goes on, so the ends jump
+// at that load to where the path goes on. The state at the vertex is the static one, and the
+// phase's slip and energy come from its start and end states (every band point slips one way).
+// Against the march, which sweeps such a region at once too: it is erratic there (steps 2^-9 to
+// 2^-12: b1 0.9153604469 to 0.9153605502, E2 3.17114e-5 to 3.17117e-5 against 3.17135e-5 here),
+// so the comparison is at its floor.
+TEST_CASE("static history: a fold (the ends jump at a near-Masing return), against the march") {
+  const double path[][2] = {{-0.045517236661488734, 0.18251664855221592},
+                            {-0.036373579579636328, 0.014701545775238661},
+                            {-0.044572900770694188, 0.2500291447517029}};
+  static_history<double> h(hertz_pm());
+  for (const auto &p : path) h.add_vertex(p[0], p[1]);
+  const auto &sg = h.last_segment();
+  CHECK(sg.jumps.size() == 1);
+  history_options<double> o;
+  o.max_step = 1.0 / 512;
+  history<double> m(hertz_pm(), o);
+  for (const auto &p : path) m.add_vertex(p[0], p[1]);
+  const auto &v = m.vertices().back();
+  CHECK(v.dir1 == h.dir1());
+  CHECK(v.dir2 == h.dir2());
+  CHECK(std::fabs(v.b1 - h.b1()) < 1e-6);
+  CHECK(std::fabs(v.b2 - h.b2()) < 1e-6);
+  const double E = sg.E1 + sg.E2;
+  CHECK(std::fabs(v.energy1 - sg.E1) < 1e-4 * E);
+  CHECK(std::fabs(v.energy2 - sg.E2) < 1e-4 * E);
+  for (double x : {0.95, 0.99, -0.97, -0.99}) {
+    CAPTURE(x);
+    CHECK(std::fabs(m.slip(x, m.step_count()) - h.slip(x)) < 1e-6);
+  }
+  // the state: within the friction limit inside the stick zone, at it at the ends
+  for (double x = -h.b2() + 0.01; x < h.b1(); x += 0.05) CHECK(std::fabs(h.traction(x)) < hertz_pressure<double>().p(x));
+}

@@ -109,6 +109,186 @@ template <class T> struct sh_panel {
   bool cusp_l = false;  // l is a memory point (a square-root cusp of q)
 };
 
+namespace shdetail {
+// the traction of a state on its stick panels (sorted, contiguous over the stick zone)
+template <class T>
+T panels_value(const std::vector<sh_panel<T>> &panels, const pressure_model<T> &pm, const trule<T> &rule,
+               const T &x) {
+  size_t lo = 0, hi = panels.size();
+  while (hi - lo > 1) {
+    const size_t m = (lo + hi) / 2;
+    if (panels[m].l <= x) lo = m;
+    else hi = m;
+  }
+  const auto &P = panels[lo];
+  if (P.analytic) return P.c * pm.p(x);
+  return rule.interp(P.v, tpar(P.l, P.r, x));
+}
+
+// PV int over the pieces [cuts_k, cuts_k+1] of f(eta) / (eta - x), x inside [cuts.front(),
+// cuts.back()] (one of the cuts) or outside it: theta-maps on each piece, which take
+// square-root behaviour at the cuts; the singular part f(x) ln((hi - x)/(x - lo)) in closed form
+template <class T, class F> T pv_pieces(const std::vector<T> &cuts, const F &f, const T &x, bool inside) {
+  using std::cos;
+  using std::log;
+  using std::sin;
+  const T pi_ = pi<T>();
+  const auto gr = gauss_legendre<T>(32);
+  T fx = 0, s = 0;
+  if (inside) {
+    fx = f(x);
+    s = fx * log((cuts.back() - x) / (x - cuts.front()));
+  }
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const T l = cuts[k], L = cuts[k + 1] - l;
+    if (!(L > 0)) continue;
+    for (size_t j = 0; j < gr->x.size(); ++j) {
+      const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
+      const T xl = L * sh * sh, xr = L * ch * ch;
+      const T eta = xl <= xr ? l + xl : cuts[k + 1] - xr;
+      const T w = pi_ / 2 * gr->w[j] * L * sh * ch;
+      s += w * (f(eta) - fx) / (eta - x);
+    }
+  }
+  return s;
+}
+
+}  // namespace shdetail
+
+// The start of an advancing phase, kept where the ends jump at a fold: the slip of a static
+// state (ends b1, b2, directions d1, d2, at the same load) relative to this start, outside its
+// stick zone (docs/history.md, "Folds"). With g = d p - q_S on the bands and X = +W on band 1,
+// -W on band 2 (W = sqrt|(x - b1)(x + b2)|), the slip gradient there is
+//   dh'(x) = -(2/pi) X(x) PV int_bands g(eta) / (X(eta) (eta - x)) d eta
+// (the outer values of the stick zone's finite Hilbert inversion; checked against the Hertz
+// closed forms), and dh(x) is its integral from the stick end.
+template <class T> struct sh_start {
+  std::shared_ptr<const pressure_model<T>> pm;
+  std::shared_ptr<const shdetail::trule<T>> rule;
+  std::vector<sh_panel<T>> panels;
+  std::vector<T> cusps;  // memory points, ends and pressure breakpoints in (-1, 1)
+  T b1{1}, b2{1};
+  int s1 = 0, s2 = 0;
+
+  T traction(const T &x) const {
+    if (x > b1) return T(s1) * pm->p(x);
+    if (x < -b2) return T(s2) * pm->p(x);
+    return shdetail::panels_value(panels, *pm, *rule, x);
+  }
+  // the cuts of (lo, hi): its ends and the cusps inside, plus x if it lies inside, with cuts
+  // graded away from x at multiples of its distance to the nearer end (where the integrand
+  // varies on that scale: next to the stick end, f ~ 1/sqrt)
+  std::vector<T> cuts(const T &lo, const T &hi, const T *x) const {
+    using std::min;
+    std::vector<T> c{lo};
+    for (const T &m : cusps)
+      if (m > lo && m < hi) c.push_back(m);
+    if (x && *x > lo && *x < hi) {
+      c.push_back(*x);
+      const T D = min(*x - lo, hi - *x);
+      for (T d = 2 * D; d < hi - lo; d *= 2) {
+        if (*x + d < hi) c.push_back(*x + d);
+        if (*x - d > lo) c.push_back(*x - d);
+      }
+    }
+    c.push_back(hi);
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    return c;
+  }
+  // dh'(x) of the state (b1, b2, d1, d2), x outside its stick zone
+  T dhp(const T &x, const T &e1, const T &e2, int d1, int d2) const {
+    using std::sqrt;
+    T K = 0;
+    for (int i = 1; i <= 2; ++i) {
+      const int d = i == 1 ? d1 : d2;
+      if (d == 0) continue;
+      const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
+      if (!(hi > lo)) continue;
+      const bool in = x > lo && x < hi;
+      auto f = [&](const T &eta) {
+        const T X = i == 1 ? sqrt((eta - e1) * (eta + e2)) : -sqrt((e1 - eta) * (-e2 - eta));
+        return (T(d) * pm->p(eta) - traction(eta)) / X;
+      };
+      K += shdetail::pv_pieces(cuts(lo, hi, in ? &x : nullptr), f, x, in);
+    }
+    const T X = x > e1 ? sqrt((x - e1) * (x + e2)) : -sqrt((e1 - x) * (-e2 - x));
+    return -2 / pi<T>() * X * K;
+  }
+  // dh(x): the integral of dh' from the stick end of x's zone (0 on the stick zone)
+  T dh(const T &x, const T &e1, const T &e2, int d1, int d2) const {
+    using std::cos;
+    using std::sin;
+    if (x <= e1 && x >= -e2) return T(0);
+    const T lo = x > e1 ? e1 : x, hi = x > e1 ? x : -e2;
+    const auto c = cuts(lo, hi, nullptr);
+    const auto gr = gauss_legendre<T>(24);
+    const T pi_ = pi<T>();
+    T s = 0;
+    for (size_t k = 0; k + 1 < c.size(); ++k) {
+      const T l = c[k], L = c[k + 1] - l;
+      for (size_t j = 0; j < gr->x.size(); ++j) {
+        const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
+        s += pi_ / 2 * gr->w[j] * L * sh * ch * dhp(l + L * sh * sh, e1, e2, d1, d2);
+      }
+    }
+    return x > e1 ? s : -s;
+  }
+  // the energy dissipated in zone i by the slip dh of the state: d_i int_band p dh dx =
+  // d_i int_band Pbar dh' (Pbar: the pressure's integral from the point to the edge)
+  T energy(int i, const T &e1, const T &e2, int d1, int d2) const {
+    using std::cos;
+    using std::sin;
+    const int d = i == 1 ? d1 : d2;
+    if (d == 0) return T(0);
+    const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
+    if (!(hi > lo)) return T(0);
+    std::vector<T> c = cuts(lo, hi, nullptr);
+    for (const auto &bp : pm->breakpoints())
+      if (bp.x > lo && bp.x < hi) c.push_back(bp.x);
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    const auto gr = gauss_legendre<T>(24);
+    const T pi_ = pi<T>();
+    auto pbar = [&](const T &xi) {  // int from xi to the edge of p
+      T s = 0;
+      const T a = i == 1 ? xi : T(-1), b = i == 1 ? T(1) : xi;
+      std::vector<T> pcs{a};
+      for (const auto &bp : pm->breakpoints())
+        if (bp.x > a && bp.x < b) pcs.push_back(bp.x);
+      pcs.push_back(b);
+      std::sort(pcs.begin(), pcs.end());
+      for (size_t k = 0; k + 1 < pcs.size(); ++k) {
+        const T l = pcs[k], L = pcs[k + 1] - l;
+        for (size_t j = 0; j < gr->x.size(); ++j) {
+          const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
+          s += pi_ / 2 * gr->w[j] * L * sh * ch * pm->p(l + L * sh * sh);
+        }
+      }
+      return s;
+    };
+    T s = 0;
+    for (size_t k = 0; k + 1 < c.size(); ++k) {
+      const T l = c[k], L = c[k + 1] - l;
+      for (size_t j = 0; j < gr->x.size(); ++j) {
+        const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
+        const T xi = l + L * sh * sh;
+        s += pi_ / 2 * gr->w[j] * L * sh * ch * pbar(xi) * dhp(xi, e1, e2, d1, d2);
+      }
+    }
+    // zone 2: dh' integrates to dh from the end leftwards with dh = -int, so p dh = Pbar (-dh')
+    return T(d) * (i == 1 ? s : -s);
+  }
+};
+
+// an advancing phase with a fold, whose slip is that of its end state (b1, b2, d1, d2) from
+// its start state
+template <class T> struct sh_jump {
+  std::shared_ptr<const sh_start<T>> start;
+  T b1{1}, b2{1};
+  int d1 = 0, d2 = 0;
+};
+
 // a piece of a segment between crossings: the loads' parameter lambda and the ends at the
 // Gauss nodes t_j of a parameter t in (-1, 1) in which they are smooth (lambda itself, or a
 // theta-map of the end that starts on a cusp), with d lambda / dt
@@ -124,6 +304,7 @@ template <class T> struct sh_segment {
   std::vector<sh_piece<T>> pieces;
   T E1{0}, E2{0};
   T b1e{1}, b2e{1};
+  std::vector<sh_jump<T>> jumps;  // phases with a fold (their slip from their start and end states)
 };
 
 template <class T> class static_history {
@@ -210,18 +391,7 @@ template <class T> class static_history {
     if (x < -b2_) return T(s2_) * pm_->p(x);
     return panel_value(x);
   }
-  T panel_value(const T &x) const {
-    // panels are sorted and contiguous over [-b2, b1]
-    size_t lo = 0, hi = panels_.size();
-    while (hi - lo > 1) {
-      const size_t m = (lo + hi) / 2;
-      if (panels_[m].l <= x) lo = m;
-      else hi = m;
-    }
-    const auto &P = panels_[lo];
-    if (P.analytic) return P.c * pm_->p(x);
-    return rule_->interp(P.v, shdetail::tpar(P.l, P.r, x));
-  }
+  T panel_value(const T &x) const { return shdetail::panels_value(panels_, *pm_, *rule_, x); }
 
   std::vector<sh_panel<T>> split_at_breaks(std::vector<sh_panel<T>> in) const {
     std::vector<sh_panel<T>> out;
@@ -618,6 +788,7 @@ template <class T> class static_history {
     // lambda (Gauss nodes, Newton from the neighbouring node).
     std::vector<std::array<T, 3>> ev{{{T(0), b1_, b2_}}};
     std::vector<int> evi{0};  // the end on the cusp at each event (0: none, lambda = 0)
+    std::vector<std::pair<std::array<T, 3>, std::array<T, 3>>> jumps;  // fold jumps (from, to)
     {
       const std::vector<T> cus = cusps_in(-b2_, b1_);
       for (size_t guard = 0; guard < 2 * cus.size() + 4; ++guard) {
@@ -707,6 +878,18 @@ template <class T> class static_history {
           ev.push_back(np);
           evi.push_back(i);
         }
+        // A fold: just inside the point the path's lambda falls back (the region beyond is close
+        // to the friction limit with the zone's sign: a near-Masing return). The ends jump at this
+        // load to where the path goes on; the jump's slip is the difference of the two static
+        // states (docs/history.md, "Folds").
+        {
+          std::array<T, 3> to;
+          if (fold_jump(evi.back(), ev.back(), d1, d2, DQ, DS, to)) {
+            jumps.push_back({ev.back(), to});
+            ev.push_back(to);
+            evi.push_back(evi.back());
+          }
+        }
       }
     }
     // pieces [ev[k], ev[k+1]], the last one ending at lambda = 1 (mu: the phase's parameter)
@@ -772,6 +955,7 @@ template <class T> class static_history {
         pc.b2[j] = wb2 = g2;
         pc.dlam[j] = span * (lb - la) / 2;
         const T c = (g1 - g2) / 2, e = (g1 + g2) / 2;
+        check_slip_sign(d1, d2, A, Bq, c, e);
         const T wl = R.w[j] * pc.dlam[j];
         E1 += wl * T(d1) * hist_zone_rate(*pm_, 32, +1, A, Bq, c, e, g1, T(1));
         E2 += wl * T(d2) * hist_zone_rate(*pm_, 32, -1, A, Bq, c, e, T(-1), -g2);
@@ -818,6 +1002,33 @@ template <class T> class static_history {
       if (!cusps_in(-lst[2], -fb2).empty() || !cusps_in(fb1, lst[1]).empty())
         throw error(status::not_applicable, "static_history: an end passed a memory point that was not located");
     }
+    // A phase with a fold: the ends jump, and the pieces' quadrature in lambda (next to a fold
+    // the ends move like the square root of the load) misses the jump's slip. Every point of
+    // the bands slips in its zone's direction throughout the phase, so the slip and the energy
+    // of the whole phase follow from its start and end states alone (sh_start; docs/history.md,
+    // "Folds"): they replace the pieces'.
+    std::vector<sh_jump<T>> jrec;
+    if (!jumps.empty()) {
+      auto st = std::make_shared<sh_start<T>>();
+      st->pm = pm_;
+      st->rule = rule_;
+      st->panels = panels_;
+      st->cusps = cusps_in(T(-1), T(1));
+      st->b1 = b1_;
+      st->b2 = b2_;
+      st->s1 = s1_;
+      st->s2 = s2_;
+      sh_jump<T> J;
+      J.start = st;
+      J.b1 = fb1;
+      J.b2 = fb2;
+      J.d1 = d1;
+      J.d2 = d2;
+      E1 = st->energy(1, fb1, fb2, d1, d2);
+      E2 = st->energy(2, fb1, fb2, d1, d2);
+      jrec.push_back(std::move(J));
+      pieces.clear();
+    }
     // the new traction on panels over (-fb2, fb1)
     std::vector<sh_panel<T>> np = new_panels(fb1, fb2, d1, d2);
     // the friction limit inside the new stick zone (an interior slip zone otherwise)
@@ -828,8 +1039,45 @@ template <class T> class static_history {
     s1_ = d1;
     s2_ = d2;
     for (auto &pc : pieces) sg.pieces.push_back(std::move(pc));
+    for (auto &J : jrec) sg.jumps.push_back(std::move(J));
     sg.E1 += E1;
     sg.E2 += E2;
+    return true;
+  }
+
+  // The fold after end i landed on a cusp at pt (lambda, b1, b2): if just inside the point the
+  // path's lambda falls (end_driven, the path with end i held), the first point inwards where
+  // the path is back at pt's lambda, by a geometric scan and bisection; false if the path goes
+  // on inwards from pt (no fold) or does not come back to that load.
+  bool fold_jump(int i, const std::array<T, 3> &pt, int d1, int d2, const T &dq, const T &ds,
+                 std::array<T, 3> &out) const {
+    using std::abs;
+    using std::max;
+    const T bi = i == 1 ? pt[1] : pt[2], bo = i == 1 ? pt[2] : pt[1];
+    const T width = bi + bo;
+    if (!(width > 0)) return false;
+    const T lc = pt[0];
+    std::array<T, 3> o;
+    auto good = [&](const T &d) { return end_driven(i, bi - d, pt, d1, d2, dq, ds, o) && o[0] >= lc; };
+    const T d0 = max(T(1e-9) * width, T(1e4) * eps<T>());
+    if (end_driven(i, bi - d0, pt, d1, d2, dq, ds, o) && o[0] > lc) return false;
+    T lo = d0, hi = 0;  // lambda below lc (or no path) at lo, back at hi
+    for (T d = 2 * d0; d < width; d *= 2) {
+      if (good(d)) {
+        hi = d;
+        break;
+      }
+      lo = d;
+    }
+    if (!(hi > 0)) return false;
+    for (int it = 0; it < 200 && hi - lo > 4 * eps<T>() * (1 + bi); ++it) {
+      const T mid = lo + (hi - lo) / 2;
+      if (good(mid)) hi = mid;
+      else lo = mid;
+    }
+    if (!good(hi) || !(abs(o[0] - lc) <= T(1e-8) * (1 + abs(lc)))) return false;
+    o[0] = lc;
+    out = o;
     return true;
   }
 
@@ -1033,6 +1281,21 @@ template <class T> class static_history {
                       "static_history: the stick traction passes the friction limit inside the stick zone (an "
                       "interior slip zone)");
       }
+  }
+
+  // The slip rate of a zone has the sign of r_i next to its stick end and changes sign at most
+  // once along it (the B term wins far from the end); where it would change, the part next to the
+  // contact edge would slip back, against its traction: a zone of the other direction opens
+  // there, which the phases do not model (core/history.hpp stops such steps too). Checked at the
+  // edge, where the rate is farthest from the end's (to rounding: the rate scale |A| + |B|).
+  void check_slip_sign(int d1, int d2, const T &A, const T &B, const T &c, const T &e) const {
+    using std::abs;
+    const T tol = T(1e3) * eps<T>() * (abs(A) + abs(B));
+    if ((d1 != 0 && c + e < 1 && T(d1) * hist_hdot(+1, A, B, c, e, T(1)) < -tol) ||
+        (d2 != 0 && c - e > -1 && T(d2) * hist_hdot(-1, A, B, c, e, T(-1)) < -tol))
+      throw error(status::not_applicable,
+                  "static_history: a slip zone would slip back next to the contact edge (a zone of the other "
+                  "direction would open there)");
   }
 
   // ---- a receding end ------------------------------------------------------------
@@ -1313,6 +1576,7 @@ template <class T> class static_history {
         const T ph = R.interp(Q.phi, tq);
         const T c = ca + T(dirn) * t;
         const T b1 = c + e, b2 = e - c;
+        check_slip_sign(d1, d2, A, B, c, e);
         pc.lam.push_back(Q.lam_a + rlam(Q, pi_ * (1 + tq) / 2));
         pc.b1.push_back(b1);
         pc.b2.push_back(b2);
@@ -1381,6 +1645,7 @@ template <class T> class static_history {
     const auto &R = *lrule_;
     const T pi_ = pi<T>();
     T h = 0;
+    for (const auto &J : sg.jumps) h += J.start->dh(x, J.b1, J.b2, J.d1, J.d2);
     for (const auto &pc : sg.pieces) {
       for (int z = -1; z <= 1; z += 2) {
         const int dz = z > 0 ? pc.d1 : pc.d2;
