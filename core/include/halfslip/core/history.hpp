@@ -953,6 +953,29 @@ template <class T> class history {
       if (it >= 40) return false;
       const T w = r.second;  // the side past the root: s_i F >= 0
       G(w, &out);
+      // G need not be monotone in w: a root past the one the end reaches first leaves the stick
+      // traction just inside the end past the friction limit (a step too long for its move; on
+      // a Q cycle at sigma/fp0 = 0.5 the landing step on a memory point was 16 times too long,
+      // the traction inside 19 % past the limit, and the vertex 3.9e-4 a off). Then the
+      // earliest sign change on a geometric grid below w is taken, if there is one.
+      if (past_limit_inside(i, out, abs(bt - (i == 1 ? b1_ : b2_)))) {
+        T wp = lo, gp = glo;
+        for (int k = 12; k >= 1; --k) {
+          const T wk = std::ldexp(w, -k);
+          if (!(wk > wp)) continue;
+          const T gk = G(wk, nullptr);
+          if (gk > 0) {
+            std::uintmax_t it2 = 40;
+            auto r2 = boost::math::tools::toms748_solve([&](const T &v) { return G(v, nullptr); }, wp, wk, gp, gk,
+                                                        tol, it2);
+            if (it2 < 40) G(r2.second, &out);
+            else G(w, &out);
+            break;
+          }
+          wp = wk;
+          gp = gk;
+        }
+      }
       return true;
     } catch (const error &err) {
       if (err.code() != status::no_convergence) throw;
@@ -1257,6 +1280,17 @@ template <class T> class history {
       if (v > worst) worst = v;
     }
     return worst;
+  }
+  // The stick traction just inside advancing end i of step t past the friction limit (the
+  // end's root is spurious: the end belongs further in), sampled at move/4 and move (the end's
+  // move in the step) and 1e-3, 4e-3 of the stick zone in from the end.
+  bool past_limit_inside(int i, const history_step<T> &t, const T &move) const {
+    const T b = i == 1 ? t.e1.bb : t.e2.bb, L = t.e1.bb + t.e2.bb;
+    for (const T &d : {move / 4, move, L / 1000, L / 250}) {
+      if (!(d > 0) || !(d < L / 2)) continue;
+      if (limit_ratio(i, i == 1 ? b - d : -(b - d), &t) > limit_tol()) return true;
+    }
+    return false;
   }
   // A step whose advancing end i stops short of its memory point while the stick traction
   // between the point and the new end is past the friction limit: the continuity residual
