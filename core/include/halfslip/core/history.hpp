@@ -1302,17 +1302,22 @@ template <class T> class history {
   // loadings at sigma_m = 1.5, against the static solves and the BEM; docs/history.md).
   // limit_margin() samples from 1 % of the stick zone in from the end, and a band this
   // thin falls between its points: here the band between the end and the point is sampled,
-  // quadratically spaced from the end (b - gap k^2/16, k = 1..4, the last the point).
+  // quadratically spaced from the end (b - gap k^2/16, k = 1..3), within 3/4 of the stick zone
+  // from the end as in limit_margin() (near the other end, slipping the same way, q tends to
+  // s p from below). Not at the point itself: where it is the end of an earlier zone of the
+  // same direction the traction there is at the limit to the march's error (1.2e-6 past it at
+  // the other end's earlier position made a Q_a 0.6, sigma_a 1 loading stagnate).
   bool stalls_short(const history_step<T> &t, int i) const {
     const mode mi = i == 1 ? m1_ : m2_;
     const bool ok = i == 1 ? mem1_ok_ : mem2_ok_;
     if (mi != adv || !ok) return false;
     const T m = i == 1 ? mem1_ : -mem2_;  // the point as a value of end i
     const T bn = i == 1 ? t.e1.bb : t.e2.bb;
-    const T gap = bn - m;
+    const T gap = bn - m, L = t.e1.bb + t.e2.bb;
     if (!(gap > 0)) return false;
-    for (int k = 1; k <= 4; ++k) {
-      const T b = k == 4 ? m : bn - gap * T(k * k) / 16;
+    for (int k = 1; k <= 3; ++k) {
+      const T b = bn - gap * T(k * k) / 16;
+      if (!(bn - b <= T(0.75) * L)) break;
       if (limit_ratio(i, i == 1 ? b : -b, &t) > limit_tol()) return true;
     }
     return false;
