@@ -3,7 +3,12 @@
 
 #include <boost/multiprecision/mpfr.hpp>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
 
+#include "halfslip/core/general.hpp"
+#include "halfslip/core/pressure.hpp"
 #include "halfslip/core/status.hpp"
 
 namespace hs { namespace reference {
@@ -67,6 +72,66 @@ struct release_mpfr_thread_caches {
 };
 }  // namespace
 
+namespace {
+// A decimal as a double for the start only: false unless it is a normal double
+// or exactly zero (a value that underflows could change the canonical frame).
+bool start_double(const std::string &s, double &v) {
+  if (s.empty() || s.size() > 4096) return false;
+  char *end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  if (end == nullptr || *end != 0 || !std::isfinite(v)) return false;
+  if (std::isnormal(v)) return true;
+  if (v != 0) return false;
+  for (char c : s) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') return false;
+  }
+  return true;
+}
+
+// The work tier's start (issue 16): the double solution of the same scene, whose
+// canonical state is within ~1e-13 of the tier's root, so that Newton at the
+// tier's precision needs about three steps (each doubling the digits) where it
+// needed ten from the Hertz start. Any failure of the double solve (its own
+// limits, NO_CONVERGENCE, bad input): no start, the tier's own starts answer.
+void double_start(text_scene &sc) {
+  double beta = 0, n = 0, q = 0, s = 0, a = 1, p0 = 1, f = 1, E = 1;
+  if (!sc.P.empty() || !start_double(sc.q, q) || !start_double(sc.s, s) || !start_double(sc.a, a) ||
+      !start_double(sc.p0, p0) || !start_double(sc.f, f) || !start_double(sc.Estar, E))
+    return;
+  try {
+    std::unique_ptr<core::pressure_model<double>> pm;
+    if (sc.geometry == geometry_flat_rounded) {
+      if (!start_double(sc.flat_over_a, beta)) return;
+      pm.reset(new core::flat_rounded_pressure<double>(beta));
+    } else if (sc.geometry == geometry_power_law) {
+      if (!start_double(sc.exponent, n)) return;
+      pm.reset(new core::power_law_pressure<double>(n));
+    } else {
+      return;
+    }
+    core::general_scene<double> g;
+    g.a = a;
+    g.p0 = p0;
+    g.f = f;
+    g.Estar = E;
+    g.q = q;
+    g.s = s;
+    const core::general_solution<double> sol = core::solve_general(*pm, g);
+    if (sol.reg == core::regime::stuck) return;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17e", sol.reg == core::regime::opposite_sign ? -sol.delta1 : sol.delta1);
+    sc.start_x1 = buf;
+    std::snprintf(buf, sizeof buf, "%.17e", sol.log_width);
+    sc.start_ln_e = buf;
+    sc.start_order = 0;
+  } catch (const std::exception &) {
+    sc.start_x1.clear();
+    sc.start_ln_e.clear();
+  }
+}
+}  // namespace
+
 solution::solution(const text_scene &sc, int digits, int max_iterations) : digits_(digits) {
   release_mpfr_thread_caches on_exit;
   if (digits < 1 || digits > max_digits())
@@ -79,8 +144,25 @@ solution::solution(const text_scene &sc, int digits, int max_iterations) : digit
   const auto &t = tiers();
   size_t i = 0;
   while (int(t[i]) < digits + guard_digits) ++i;
-  work_ = solve_at(t[i], sc, max_iterations);
-  check_ = solve_at(t[i + 1], sc, max_iterations);
+  if (sc.geometry == geometry_hertz || !sc.start_x1.empty()) {
+    work_ = solve_at(t[i], sc, max_iterations);
+    check_ = solve_at(t[i + 1], sc, max_iterations);
+    return;
+  }
+  // Non-Hertz (issue 16): the work tier from the double solution, the check tier
+  // from the work tier's state and Newton order (its order control still validates
+  // the order at twice it, and its tolerances are its own: the start changes the
+  // path, not the root; a start from which Newton fails falls back to the usual ones)
+  text_scene w = sc;
+  double_start(w);
+  work_ = solve_at(t[i], w, max_iterations);
+  text_scene c = sc;
+  if (!work_->general_start(c.start_x1, c.start_ln_e, c.start_order)) {
+    c.start_x1.clear();
+    c.start_ln_e.clear();
+    c.start_order = 0;
+  }
+  check_ = solve_at(t[i + 1], c, max_iterations);
 }
 
 namespace {

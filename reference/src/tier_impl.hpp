@@ -147,6 +147,12 @@ template <unsigned D> class tier_solution_impl final : public tier_solution {
       opt.max_iterations = max_iterations;
       opt.rtol = 0;  // full precision of T
       opt.max_order = general_max_order(D);
+      if (!in.start_x1.empty()) {
+        opt.has_start = true;
+        opt.start_x1 = parse_decimal<T>(in.start_x1, "start x1 is not a decimal number");
+        opt.start_ln_e = parse_decimal<T>(in.start_ln_e, "start ln e is not a decimal number");
+        opt.start_order = in.start_order;
+      }
       general_.reset(new core::general_solution<T>(core::solve_general(*model_, sc, opt)));
     } else {
       throw core::error(core::status::bad_option, "digits above the limit for non-Hertz geometries");
@@ -166,6 +172,15 @@ template <unsigned D> class tier_solution_impl final : public tier_solution {
     return visit([](const auto &s) { return s.iterations; });
   }
   int quadrature_order() const override { return general_ ? general_->order : 0; }
+  bool general_start(std::string &x1, std::string &ln_e, int &order) const override {
+    if (!general_ || general_->reg == core::regime::stuck) return false;
+    const auto &g = *general_;
+    const T x = g.reg == core::regime::opposite_sign ? T(-g.delta1) : T(g.delta1);
+    x1 = to_text(x, int(D));
+    ln_e = to_text(g.log_width, int(D));
+    order = g.order / 2;
+    return true;
+  }
   std::string value(quantity q, int sig) const override {
     return visit([&](const auto &s) -> std::string {
       switch (q) {

@@ -21,6 +21,7 @@ namespace hs { namespace core {
 template <class T> struct gl_rule {
   std::vector<T> x, w;  // nodes and weights on [-1, 1], x increasing
 };
+template <class T> std::shared_ptr<const gl_rule<T>> gauss_legendre(int n);
 
 // Gauss-Legendre rule of order n with its Legendre table P_j(x_k), j <= n, and
 // the cumulative matrix S_ik = int_{x_i}^{1} l_k(x) dx of the Lagrange basis
@@ -58,6 +59,7 @@ template <class T> struct rule_cache {
   struct entry {
     std::shared_ptr<const gl_rule<T>> rule;
     std::shared_ptr<const gl_cumulative<T>> cum;
+    std::shared_ptr<const gl_cumulative<T>> tab;  // the Legendre table alone (S empty)
   };
   std::mutex mtx;
   std::map<std::pair<int, int>, entry> map;
@@ -67,12 +69,17 @@ template <class T> struct rule_cache {
   }
 };
 
+template <class T> std::shared_ptr<const gl_rule<T>> make_rule_wide(int n, int max_newton);
+
 // Nodes by Newton's method on P_n from Tricomi's asymptotic start, iterated
 // until the correction is below a few eps (quadratic convergence: one more
 // step then changes nothing). Running out of max_newton throws no_convergence.
+// Beyond long double (the reference backend's MPFR tiers), make_rule_wide.
 template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n, int max_newton = 100) {
   using std::abs;
   using std::cos;
+  if constexpr (std::numeric_limits<T>::digits10 > std::numeric_limits<long double>::digits10)
+    return make_rule_wide<T>(n, max_newton);
   auto r = std::make_shared<gl_rule<T>>();
   r->x.resize(n);
   r->w.resize(n);
@@ -108,7 +115,78 @@ template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n, int max_ne
   return r;
 }
 
-template <class T> std::shared_ptr<const gl_cumulative<T>> make_cumulative(std::shared_ptr<const gl_rule<T>> rule) {
+// The rule of order n beyond long double (issue 16: at 80 and 120 digits the
+// rules were most of a reference solve). Each node starts from the long double
+// rule's (cached, shared by every precision; correct to ~1e-19), and Newton on
+// P_n runs in T with the recurrence's coefficients (2j - 1)/j, (j - 1)/j formed
+// once per rule and in-place arithmetic (no division, no temporary per step):
+// 2 or 3 steps, each doubling the digits. Newton's error after a step dx is
+// about |P''/(2 P')| dx^2 = |x|/(1 - x^2) dx^2 (Legendre's equation at a root),
+// so the iteration stops once twice that is below eps/16: the node is then
+// converged without the confirming step of make_rule (whose next correction
+// would be below eps). The weight is 2/((1 - x^2) P_n'(x)^2) at the final node,
+// as in make_rule. Running out of max_newton throws no_convergence.
+template <class T> std::shared_ptr<const gl_rule<T>> make_rule_wide(int n, int max_newton) {
+  using std::abs;
+  using std::swap;
+  auto r = std::make_shared<gl_rule<T>>();
+  r->x.resize(n);
+  r->w.resize(n);
+  if (n < 1) return r;
+  // long double start: the cached long double rule of the same order
+  const auto start = gauss_legendre<long double>(n);
+  std::vector<T> a(std::size_t(n) + 1), c(std::size_t(n) + 1);
+  for (int j = 2; j <= n; ++j) {
+    a[j] = T(2 * j - 1);
+    a[j] /= j;
+    c[j] = T(j - 1);
+    c[j] /= j;
+  }
+  T p0, p1, p2, t, x, dp, dx, omx2;
+  const T tol = eps<T>() / 16;
+  // P_n(x) in p1, P_{n-1}(x) in p0
+  auto eval = [&](const T &xv) {
+    p0 = 1;
+    p1 = xv;
+    for (int j = 2; j <= n; ++j) {
+      p2 = xv;
+      p2 *= p1;
+      p2 *= a[j];
+      t = p0;
+      t *= c[j];
+      p2 -= t;
+      swap(p0, p1);
+      swap(p1, p2);
+    }
+  };
+  for (int k = 1; k <= (n + 1) / 2; ++k) {
+    x = T(start->x[n - k]);  // k-th largest root
+    int it = 0;
+    for (; it < max_newton; ++it) {
+      eval(x);
+      omx2 = 1 - x * x;
+      dp = T(n) * (p0 - x * p1) / omx2;
+      dx = p1 / dp;
+      x -= dx;
+      if (!(abs(dx) > eps<T>() / 4)) break;
+      // predicted error of the new x: |x|/(1 - x^2) dx^2
+      if (!(2 * abs(x) * dx * dx > tol * omx2)) break;
+    }
+    check_iterations(it, max_newton, "Gauss-Legendre nodes: Newton iteration on P_n did not converge");
+    eval(x);
+    dp = T(n) * (x * p1 - p0) / (x * x - 1);
+    const T w = 2 / ((1 - x * x) * dp * dp);
+    r->x[n - k] = x;
+    r->w[n - k] = w;
+    r->x[k - 1] = -x;
+    r->w[k - 1] = w;
+  }
+  if (n % 2 == 1) r->x[n / 2] = 0;
+  return r;
+}
+
+// The rule with its Legendre table P_j(x_k) (S left empty): O(n^2).
+template <class T> std::shared_ptr<gl_cumulative<T>> make_table(std::shared_ptr<const gl_rule<T>> rule) {
   auto c = std::make_shared<gl_cumulative<T>>();
   const int n = int(rule->x.size());
   c->n = n;
@@ -121,6 +199,13 @@ template <class T> std::shared_ptr<const gl_cumulative<T>> make_cumulative(std::
     p[1] = x[k];
     for (int j = 2; j <= n; ++j) p[j] = legendre_next(j, x[k], p[j - 1], p[j - 2]);
   }
+  return c;
+}
+
+template <class T> std::shared_ptr<const gl_cumulative<T>> make_cumulative(std::shared_ptr<const gl_rule<T>> rule) {
+  const std::shared_ptr<gl_cumulative<T>> c = make_table<T>(std::move(rule));
+  const int n = c->n;
+  const auto &x = c->rule->x;
   // int_{x_i}^{1} P_0 = 1 - x_i; int_{x_i}^{1} P_j = (P_{j-1}(x_i) - P_{j+1}(x_i))/(2j + 1)
   c->S.assign(std::size_t(n) * n, T(0));
   // O(n^3): at n = 1024, the energies' largest order, 3.1 s before on this machine (loaded),
@@ -190,6 +275,44 @@ template <class T> std::shared_ptr<const gl_cumulative<T>> gauss_legendre_cumula
   return gauss_detail::cached<T, gl_cumulative<T>>(&gauss_detail::rule_cache<T>::entry::cum, n, [n] {
     return gauss_detail::make_cumulative<T>(gauss_legendre<T>(n));
   });
+}
+
+// The rule of order n with its Legendre table P_j(x_k) only (same cache; for
+// the two-stage cumulative integral of cumulate_tail, O(n^2) where the matrix
+// S costs O(n^3)).
+template <class T> std::shared_ptr<const gl_cumulative<T>> gauss_legendre_table(int n) {
+  return gauss_detail::cached<T, gl_cumulative<T>>(&gauss_detail::rule_cache<T>::entry::tab, n, [n] {
+    return std::shared_ptr<const gl_cumulative<T>>(gauss_detail::make_table<T>(gauss_legendre<T>(n)));
+  });
+}
+
+// tail_i = int_{x_i}^{1} of the degree < n interpolant of f/w (i.e. sum_k S_ik f_k / w_k for
+// the cumulative matrix S of the rule), given g_k = w_k times the interpolated values at
+// the nodes: the Legendre coefficients c_j = sum_k P_j(x_k) g_k (times (2j + 1)/2, which
+// cancels against int_{x_i}^1 P_j = (P_{j-1}(x_i) - P_{j+1}(x_i))/(2j + 1)), then
+// tail_i = c_0 (1 - x_i)/2 + sum_{j>=1} c_j (P_{j-1}(x_i) - P_{j+1}(x_i))/2: 2 n^2
+// operations, the same sums as S regrouped (issue 16).
+template <class T> void cumulate_tail(const gl_cumulative<T> &tab, const T *g, T *tail, std::vector<T> &coef) {
+  const int n = tab.n;
+  const std::size_t ld = std::size_t(n) + 1;
+  coef.assign(std::size_t(n), T(0));
+  for (int k = 0; k < n; ++k) {
+    const T *pk = &tab.P[std::size_t(k) * ld];
+    for (int j = 0; j < n; ++j) coef[j] += pk[j] * g[k];
+  }
+  const auto &x = tab.rule->x;
+  T dj;
+  for (int i = 0; i < n; ++i) {
+    const T *pi_ = &tab.P[std::size_t(i) * ld];
+    T s = coef[0] * (1 - x[i]);
+    for (int j = 1; j < n; ++j) {
+      dj = pi_[j - 1];
+      dj -= pi_[j + 1];
+      dj *= coef[j];
+      s += dj;
+    }
+    tail[i] = s / 2;
+  }
 }
 
 }}  // namespace hs::core

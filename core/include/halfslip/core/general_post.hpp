@@ -476,9 +476,30 @@ template <class T> class general_solution : public canonical_solution<general_so
     gdetail::zone_nodes<T> G;
     if (Kg > 0) G = gdetail::make_zone_nodes<T>(*pm, z, d, width, Kg, nullptr, true);
     const std::vector<T> g = hgrad_nodes(z, O, IR, IL, O.s2.size(), Kg > 0 ? &G : nullptr);
-    const auto cum = gauss_legendre_cumulative<T>(M);
     std::vector<T> f(M);
     T after = 0, E = 0;
+    if (std::numeric_limits<T>::digits10 > std::numeric_limits<long double>::digits10) {
+      // beyond long double (the reference): the tail by cumulate_tail, 2 M^2 per
+      // panel from the Legendre table (O(M^2) to make), where the matrix S of
+      // the branch below costs O(M^3) to make (issue 16: 2 s of 14 at 120 digits)
+      const auto tab = gauss_legendre_table<T>(M);
+      std::vector<T> gw(M), tail(M), coef;
+      for (std::size_t P = O.panels.size(); P-- > 0;) {
+        const std::size_t b = P * M;
+        T tot = 0;
+        for (int k = 0; k < M; ++k) {
+          f[k] = O.p[b + k] * 2 * d * sqrt(O.s2[b + k] * O.c2[b + k]);
+          gw[k] = O.w[b + k] * f[k];
+          tot += gw[k];
+        }
+        cumulate_tail(*tab, gw.data(), tail.data(), coef);
+        for (int i = 0; i < M; ++i)
+          E += O.w[b + i] * 2 * d * sqrt(O.s2[b + i] * O.c2[b + i]) * (tail[i] + after) * g[b + i];
+        after += tot;
+      }
+      return abs(E);
+    }
+    const auto cum = gauss_legendre_cumulative<T>(M);
     for (std::size_t P = O.panels.size(); P-- > 0;) {
       const std::size_t b = P * M;
       T tot = 0;

@@ -22,6 +22,15 @@ template <class T> struct general_options {
   int max_iterations = 100;  // Newton iterations per solve (continuation: per step)
   T rtol = T(0);             // 0: full precision of T
   int max_order = 1024;      // largest Gauss-Legendre order per panel (solver, energies and slips)
+  // A start from a solve at a lower precision (issue 16: the reference backend
+  // starts its work tier from the double solution and its check tier from the
+  // work tier's): the canonical state x1 = +-d1 (+ same sign, - opposite sign),
+  // ln e, and the order at which Newton begins (at least the one the tolerance
+  // gives; 0: that one). Only a start: the order control and the tolerances are
+  // unchanged, and if Newton fails from it the usual starts follow.
+  bool has_start = false;
+  T start_x1 = T(0), start_ln_e = T(0);
+  int start_order = 0;
 };
 
 namespace gdetail {
@@ -363,7 +372,20 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
   }
   int its = 0;
   general_state<T> trial = st;
-  bool ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+  bool ok = false;
+  if (opt.has_start) {
+    // the given start at the given order (a state of the same canonical frame)
+    const int n0 = n;
+    while (2 * n <= opt.start_order && 4 * n <= opt.max_order) n *= 2;
+    trial = general_state<T>::from_log(opt.start_x1, opt.start_ln_e);
+    if (trial.d2() > 0 && trial.d1() < 2 && trial.lw() == trial.lw())
+      ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+    if (!ok) {
+      n = n0;
+      trial = st;
+    }
+  }
+  if (!ok) ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
   if (!ok && st.x1 < 0 && st.e < T(0.1)) {
     // large sigma: start from the sliding stick point (issue 13)
     if (gdetail::large_sigma_start(P, q, s, n, trial))

@@ -35,6 +35,14 @@ struct text_scene {
   // geometry is read: b_f/a in [0, 1), or 1 < n < 1000.
   int geometry = geometry_hertz;
   std::string flat_over_a = "0.5", exponent = "2";
+  // Non-Hertz only: a start for the solver from a solve at a lower precision
+  // (core::general_options::has_start; issue 16), the canonical x1 = +-d1 and
+  // ln e as decimals (empty: the solver's own starts) and the order at which
+  // Newton begins (0: from the tolerance). Set by solution (the double
+  // solution for the work tier, the work tier's for the check tier); a start
+  // changes the path to the tier's root, not the root.
+  std::string start_x1, start_ln_e;
+  int start_order = 0;
 };
 
 enum class quantity : int { b1 = 1, b2 = 2, d1 = 3, d2 = 4, energy1 = 5, energy2 = 6, a = 7, p0 = 8 };
@@ -53,6 +61,10 @@ class tier_solution {
   virtual int iterations() const = 0;
   // Gauss-Legendre order per panel of the accepted residual (0: Hertz closed forms).
   virtual int quadrature_order() const = 0;
+  // Non-Hertz: the canonical state (x1 = +-d1, ln e) at all the digits of the
+  // tier and the Newton order before the accepted residual's, as a start for
+  // a wider tier (text_scene::start_x1); false for Hertz.
+  virtual bool general_start(std::string &x1, std::string &ln_e, int &order) const = 0;
   // Value printed in scientific notation with `sig` significant digits.
   virtual std::string value(quantity q, int sig) const = 0;
   virtual std::string eval(point_eval what, const std::string &x, int sig) const = 0;
