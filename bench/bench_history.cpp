@@ -2,7 +2,7 @@
 // independent collocation BEM a user could write instead. Writes
 // bench/results/history.csv (one row per method and setting) and prints a
 // markdown summary (bench/results/history_summary.md via scripts/bench.sh).
-//   bench_history OUT.csv
+//   bench_history OUT.csv [--static-only]   (--static-only: section 5, the static solves, alone)
 // Errors are against the same path marched at step 1/256 (zone ends in units
 // of a, energies relative to the largest segment energy); times are medians of
 // 3 runs on this machine.
@@ -10,6 +10,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -98,12 +99,15 @@ path_t random_path(int n, unsigned seed) {
 
 int main(int argc, char **argv) {
   const char *out = argc > 1 ? argv[1] : "history.csv";
+  // --static-only: only section 5, the static solves (a minute; the march's sections take ~20 min)
+  const bool static_only = argc > 2 && std::strcmp(argv[2], "--static-only") == 0;
   FILE *csv = std::fopen(out, "w");
   if (!csv) return 1;
   std::fprintf(csv, "case,method,setting,steps,seconds,err_b,err_E,error_estimate,interior_merges\n");
   auto hertz = std::make_shared<hertz_pressure<double>>();
   auto flat = std::make_shared<flat_rounded_pressure<double>>(0.5);
 
+  if (!static_only) {
   // 1. steady proportional Hertz cycle (+-(0.5, 0.4)): energy per cycle vs 4 x monotonic
   {
     hertz_scene<double> sc;
@@ -456,6 +460,7 @@ int main(int argc, char **argv) {
         "sigma_m + sigma_a <= 1); %.3g s in all |\n",
         n, ok, n, ok_low, n_low, tsum);
   }
+  }  // !static_only
   // 5. the static solves (core/static_history.hpp): exact where every segment advances.
   // (a) sigma then 100 half cycles of Q at constant sigma (every segment advances; the issue's
   // "non-proportional path of 100 vertices"), Hertz and flat punch, against the steady
