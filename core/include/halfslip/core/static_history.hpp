@@ -128,15 +128,73 @@ template <class T> struct sh_segment {
   T b1e{1}, b2e{1};
 };
 
+// The quadrature orders and tolerances of the static solves. The defaults are full accuracy
+// (rounding level: ~1e-15 in the ends). for_rtol(rtol) picks cheaper ones whose result
+// agrees with the full-accuracy solve to within rtol (ends in units of a, energies relative
+// to the segment's, tractions in f p0, slip relative to its scale): chosen by the measured
+// sweeps of bench/bench_history.cpp (docs/benchmarks.md, "Load histories") and checked by
+// tests/test_static_history.cpp.
+template <class T> struct static_history_accuracy {
+  int theta = 24;                // Gauss-Legendre order in theta of the state's panels and bands
+  int lambda = 16;               // Gauss nodes in lambda per piece of a segment (energies, slip)
+  int band = 16;                 // Gauss order of a band's graded theta intervals
+  int band_theta = 24;           // Gauss order in theta of a band's ungraded pieces in the residual
+                                 // (the new traction's take the theta order)
+  int zone = 32;                 // hist_zone_rate's order (energies)
+  int slip = 24;                 // Gauss order of seg_slip's onset map
+  T panel_tol = T(1e3) * eps<T>();  // panels resolved: last Legendre coefficients below this of the scale
+  T rtol = 0;                    // the accuracy asked (0: full)
+
+  static static_history_accuracy for_rtol(const T &rtol) {
+    static_history_accuracy a;
+    a.rtol = rtol > 0 ? rtol : T(0);
+    if (!(rtol > 0)) return a;
+    // (the theta order stays: fewer nodes a panel need many more panels, 3 at 24 where 53 at 16
+    // for rtol 1e-8, and run away at tight tolerances)
+    const double r = double(rtol);
+    if (r >= 1e-6) {
+      a.lambda = 8, a.band_theta = 8, a.band = 12, a.zone = 12, a.slip = 12;
+    } else if (r >= 1e-8) {
+      a.lambda = 10, a.band_theta = 10, a.band = 12, a.zone = 16, a.slip = 16;
+    } else if (r >= 1e-10) {
+      a.lambda = 12, a.band_theta = 12, a.band = 14, a.zone = 20, a.slip = 20;
+    } else if (r >= 1e-12) {
+      a.lambda = 14, a.band_theta = 16, a.band = 16, a.zone = 24, a.slip = 24;
+    } else {
+      return static_history_accuracy{};
+    }
+    // the panels are resolved to a hundredth of the tolerance (never below the default)
+    using std::max;
+    a.panel_tol = max(a.panel_tol, rtol / 100);
+    return a;
+  }
+};
+
 template <class T> class static_history {
  public:
   using pressure_ptr = std::shared_ptr<const pressure_model<T>>;
+  using accuracy = static_history_accuracy<T>;
   explicit static_history(pressure_ptr pm, int order = 24, int lam_order = 16)
+      : static_history(std::move(pm), [&] {
+          accuracy a;
+          a.theta = order;
+          a.lambda = lam_order;
+          return a;
+        }()) {}
+  // orders and tolerances from acc (accuracy::for_rtol(rtol): the cheapest that meet rtol)
+  static_history(pressure_ptr pm, const accuracy &acc)
       : pm_(std::move(pm)),
-        rule_(std::make_shared<shdetail::trule<T>>(order)),
-        lrule_(std::make_shared<shdetail::trule<T>>(lam_order)),
-        brule_(gauss_legendre<T>(16)) {
+        rule_(std::make_shared<shdetail::trule<T>>(acc.theta)),
+        lrule_(std::make_shared<shdetail::trule<T>>(acc.lambda)),
+        brule_(gauss_legendre<T>(acc.band)),
+        urule_(acc.band_theta == acc.theta ? rule_ : std::make_shared<shdetail::trule<T>>(acc.band_theta)),
+        zorder_(acc.zone),
+        sorder_(acc.slip),
+        ptol_(acc.panel_tol),
+        rtol_(acc.rtol) {
     if (!pm_) throw error(status::null_pointer, "static_history: no pressure model");
+    if (acc.theta < 4 || acc.lambda < 2 || acc.band < 2 || acc.band_theta < 2 || acc.zone < 2 || acc.slip < 2 || !(acc.panel_tol > 0))
+      throw error(status::bad_option, "static_history: an order or tolerance out of range");
     for (const auto &bp : pm_->breakpoints())
       if (bp.x > -1 && bp.x < 1) pbreaks_.push_back(bp.x);
     sh_panel<T> p0;
@@ -146,6 +204,10 @@ template <class T> class static_history {
     p0.c = 0;
     panels_ = split_at_breaks({p0});
   }
+  // the accuracy asked (0: full)
+  T rtol() const { return rtol_; }
+  // the panels of the state's stick traction (its cost: each costs theta-order values)
+  size_t panel_count() const { return panels_.size(); }
 
   T q() const { return q_; }
   T s() const { return s_; }
@@ -276,14 +338,15 @@ template <class T> class static_history {
   struct bnode {
     T xi, xl, xr, sh, ch, gw;
   };
-  // The theta intervals of a piece, by code: -1 the theta rule on (0, pi), ungraded; graded
+  // The theta intervals of a piece, by code: -1 the band's rule on (0, pi), ungraded (the
+  // residual's sums), -2 the state's theta rule on (0, pi), ungraded (the new traction's); graded
   // towards one end, in u (the angle from that end: theta = u for band 1, pi - u for band 2):
   // 0: (pi/2, pi); m = 1, 2, ...: (pi 2^-(m+1), pi 2^-m); kcore + K: (0, pi 2^-K). A piece
   // graded at level K is the intervals 0, 1, ..., K - 1 and kcore + K: dyadic cuts, so that
   // the intervals are shared by every point x of the kernel 1/(xi - x) with the same K.
   static constexpr int kcore = 64;
-  static int code_slot(int code) { return code + 1; }
-  static constexpr int nslots = 2 * kcore + 2;
+  static int code_slot(int code) { return code + 2; }
+  static constexpr int nslots = 2 * kcore + 3;
 
   // the grading level K of a piece of length L whose graded end lies D from the singularity
   // (0: not graded)
@@ -297,9 +360,9 @@ template <class T> class static_history {
     while (K < kcore - 1 && pi_ * T(std::ldexp(1.0, -K)) > a0) ++K;
     return K;
   }
-  template <class F> static void for_codes(int K, F &&f) {
+  template <class F> static void for_codes(int K, int ucode, F &&f) {
     if (K == 0) {
-      f(-1);
+      f(ucode);
       return;
     }
     for (int m = 0; m < K; ++m) f(m);
@@ -322,7 +385,7 @@ template <class T> class static_history {
       out.push_back({xi, xl, xr, sh, ch, g * wt});
     };
     if (code < 0) {
-      const auto &R = *rule_;
+      const auto &R = code == -1 ? *urule_ : *rule_;
       for (int j = 0; j < R.n(); ++j) push(R.sh[j], R.ch[j], pi_ / 2 * R.w[j]);
       return;
     }
@@ -450,6 +513,9 @@ template <class T> class static_history {
     const T inner = i == 1 ? b1 : -b2;
     const T c = (b1 - b2) / 2;
     std::vector<bnode> scratch;
+    bool inner_cusp = inner == b1_ || inner == -b2_;
+    for (const T &b : pbreaks_) inner_cusp = inner_cusp || inner == b;
+    for (const auto &P : panels_) inner_cusp = inner_cusp || (P.cusp_l && P.l == inner);
     for (size_t k = 0; k + 1 < cuts.size(); ++k) {
       const T l = cuts[k], r = cuts[k + 1];
       const T L = r - l;
@@ -465,9 +531,11 @@ template <class T> class static_history {
       }
       const int K = grade_level(D, L);
       const T sL = sqrt(L);
-      for_codes(K, [&](int code) {
+      for_codes(K, want_k ? -2 : -1, [&](int code) {
         const std::vector<bnode> *nd;
-        if (at_inner) {
+        // (a piece at the new end is kept only where that end is on a cusp of the state, as
+        // in the crossings; the ends of a Newton iteration are not)
+        if (at_inner && !inner_cusp) {
           make_nodes(i, d, l, r, code, scratch);
           nd = &scratch;
         } else {
@@ -513,7 +581,10 @@ template <class T> class static_history {
     using std::max;
     using std::sqrt;
     const T h = sqrt(eps<T>());
-    const T tol = 64 * eps<T>();
+    // (at an accuracy asked, rtol: a step below rtol/1e3 ends the iteration; the updates
+    // converge superlinearly, so the error left is far below the step)
+    const T tol = max(T(64) * eps<T>(), rtol_ / 1000);
+    const T rtolr = max(T(1e5) * eps<T>(), rtol_ / 100);
     auto inside = [&](const T &x1, const T &x2) {
       return x1 < 1 && x2 < 1 && x1 + x2 > 0 && (d1 != 0 || x1 == 1) && (d2 != 0 || x2 == 1);
     };
@@ -555,6 +626,18 @@ template <class T> class static_history {
       }
       const T stp = max(abs(b1 - n1), abs(b2 - n2));
       const bool slow = !(norm(rn) <= norm(r) / 4);
+      // Broyden's update of the Jacobian along the step taken (the chord from the node
+      // before converges only linearly, ~7x an iteration; the update makes it superlinear
+      // at no cost: the residual decides convergence, the Jacobian only the steps)
+      {
+        const T s1 = n1 - b1, s2 = n2 - b2, ss = s1 * s1 + s2 * s2;
+        const T y1 = rn[0] - r[0] - (Jc[0] * s1 + Jc[1] * s2), y2 = rn[1] - r[1] - (Jc[2] * s1 + Jc[3] * s2);
+        if (ss > 0) {
+          const std::array<T, 4> Jb{{Jc[0] + y1 * s1 / ss, Jc[1] + y1 * s2 / ss, Jc[2] + y2 * s1 / ss,
+                                     Jc[3] + y2 * s2 / ss}};
+          if (isfinite(Jb[0] * Jb[3] - Jb[1] * Jb[2]) && Jb[0] * Jb[3] - Jb[1] * Jb[2] != 0) Jc = Jb;
+        }
+      }
       b1 = n1;
       b2 = n2;
       r = rn;
@@ -563,7 +646,7 @@ template <class T> class static_history {
       // converged: the step at the rounding floor, and the residual small (a step that
       // only stalls, e.g. against a cusp where the residual has an infinite slope, is not)
       if (stp <= tol || (stp <= 1e6 * eps<T>() && last >= 0 && stp > last / 2))
-        return norm(r) <= T(1e5) * eps<T>() * (1 + abs(dq) + abs(ds));
+        return norm(r) <= rtolr * (1 + abs(dq) + abs(ds));
       last = stp;
     }
     return false;
@@ -968,7 +1051,7 @@ template <class T> class static_history {
         const T l = P.l, r = P.r, L = r - l;
         const T base = i == 1 ? l - x : x - r;  // xi - x = base + xl (band 1), -(base + xr) (band 2)
         const int K = P.at_inner ? grade_level(base, L) : P.K;
-        for_codes(K, [&](int code) {
+        for_codes(K, -2, [&](int code) {
           auto &v = P.lev[code_slot(code)];
           if (v.empty()) {
             const std::vector<bnode> *nd;
@@ -1085,7 +1168,7 @@ template <class T> class static_history {
     using std::sin;
     if (sg.dq == 0 && sg.ds == 0) return T(0);
     const T A = sg.dq / 2, B = sg.ds / 4;
-    const auto gr = gauss_legendre<T>(24);
+    const auto gr = gauss_legendre<T>(sorder_);
     const auto &R = *lrule_;
     const T pi_ = pi<T>();
     T h = 0;
@@ -1127,7 +1210,9 @@ template <class T> class static_history {
   std::shared_ptr<const shdetail::trule<T>> rule_;
   std::shared_ptr<const shdetail::trule<T>> lrule_;
   std::shared_ptr<const gl_rule<T>> brule_;  // the band's graded theta intervals
+  std::shared_ptr<const shdetail::trule<T>> urule_;  // the band's ungraded pieces
   int zorder_ = 32;                          // hist_zone_rate's Gauss order
+  int sorder_ = 24;                          // seg_slip's Gauss order
   T ptol_ = T(1e3) * eps<T>();               // panel resolution (last Legendre coefficients)
   T rtol_ = 0;                               // the accuracy asked (0: full)
   mutable bcache bc_;
