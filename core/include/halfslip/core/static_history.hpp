@@ -377,6 +377,7 @@ template <class T> class static_history {
     using std::cos;
     using std::sin;
     out.clear();
+    out.reserve(code < 0 ? (code == -1 ? urule_->n() : rule_->n()) : int(brule_->x.size()));
     const T L = r - l, pi_ = pi<T>();
     auto push = [&](const T &sh, const T &ch, const T &wt) {
       // xi - l = L sh^2, r - xi = L ch^2, exactly
