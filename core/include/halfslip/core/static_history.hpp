@@ -386,7 +386,8 @@ template <class T> class static_history {
       // p with the exact distances to the edges where the sub-interval ends there
       const T dm = (i == 2 && l == T(-1)) ? xl : 1 + xi;
       const T dp = (i == 1 && r == T(1)) ? xr : 1 - xi;
-      const T g = T(d) * pm_->p(xi, dm, dp) - qS(xi);
+      const T px = pm_->p(xi, dm, dp);
+      const T g = T(d) * px - qS_p(xi, px);
       out.push_back({xi, xl, xr, sh, ch, g * wt});
     };
     if (code < 0) {
@@ -406,6 +407,22 @@ template <class T> class static_history {
       if (i == 1) push(su, cu, hw * gr.w[j]);
       else push(cu, su, hw * gr.w[j]);
     }
+  }
+
+  // q_S at x given p(x) (the slip zones and the analytic panels are multiples of it: one
+  // evaluation of the pressure a band node, not two)
+  T qS_p(const T &x, const T &px) const {
+    if (x > b1_) return T(s1_) * px;
+    if (x < -b2_) return T(s2_) * px;
+    size_t lo = 0, hi = panels_.size();
+    while (hi - lo > 1) {
+      const size_t m = (lo + hi) / 2;
+      if (panels_[m].l <= x) lo = m;
+      else hi = m;
+    }
+    const auto &P = panels_[lo];
+    if (P.analytic) return P.c * px;
+    return rule_->interp(P.v, shdetail::tpar(P.l, P.r, x));
   }
 
   // the band cache: per state (checked by a signature of the state's traction: the cache is
