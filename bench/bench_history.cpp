@@ -12,7 +12,9 @@
 #include <cmath>
 #include <cstring>
 #include <cstdio>
+#include <ctime>
 #include <functional>
+#include <string>
 #include <memory>
 #include <random>
 #include <vector>
@@ -95,19 +97,122 @@ path_t random_path(int n, unsigned seed) {
   return p;
 }
 
+
+// The static solves at an accuracy asked (static_history_accuracy::for_rtol, what hs_history
+// passes from hs_history_options.rtol): time (wall median of 3, and the process CPU time of
+// one run, which a loaded machine inflates less) and the true error against the full-accuracy
+// static solve of the same path: ends in a, segment energies relative to the path's largest,
+// the traction at 39 points in f p0, the slip at 39 points relative to its largest; for the
+// steady path also against the steady cycle's monotonic solution (closed forms, solve_general).
+void static_rtol_rows(FILE *csv) {
+  struct out {
+    std::vector<double> b, E, q, h;
+  };
+  auto run = [](const std::shared_ptr<const pressure_model<double>> &pm, const static_history_accuracy<double> &acc,
+                const path_t &p, static_history<double> *keep) {
+    out o;
+    static_history<double> h(pm, acc);
+    for (const auto &v : p) {
+      h.add_vertex(v.first, v.second);
+      o.b.push_back(h.b1());
+      o.b.push_back(h.b2());
+      o.E.push_back(h.last_segment().E1);
+      o.E.push_back(h.last_segment().E2);
+    }
+    if (keep) *keep = h;
+    return o;
+  };
+  auto fields = [](const static_history<double> &h, out &o) {
+    for (int k = -19; k <= 19; ++k) {
+      o.q.push_back(h.traction(0.05 * k + 0.001));
+      o.h.push_back(h.slip(0.05 * k + 0.001));
+    }
+  };
+  path_t steady{{0.0, 0.6}};
+  for (int k = 0; k < 99; ++k) steady.emplace_back(k % 2 ? 0.3 : -0.3, 0.6);
+  const path_t cross{{0, 0.6}, {0.4, 0.6}, {-0.3, 0.6}, {0.35, 0.6}};
+  for (int g = 0; g < 2; ++g) {
+    std::shared_ptr<const pressure_model<double>> pm =
+        g == 0 ? std::shared_ptr<const pressure_model<double>>(std::make_shared<hertz_pressure<double>>())
+               : std::shared_ptr<const pressure_model<double>>(std::make_shared<flat_rounded_pressure<double>>(0.5));
+    const char *gname = g == 0 ? "hertz" : "flat0.5";
+    general_scene<double> sc;
+    sc.q = 0.3;
+    sc.s = 0;
+    const auto m = solve_general<double>(*pm, sc);
+    for (int pi = 0; pi < 2; ++pi) {
+      const path_t &p = pi == 0 ? steady : cross;
+      const char *pname = pi == 0 ? "steady100" : "sigma_then_Q_4";
+      static_history<double> hf(pm);
+      const out full0 = run(pm, static_history_accuracy<double>{}, p, &hf);
+      out full = full0;
+      fields(hf, full);
+      double Emax = 0, hmax = 0;
+      for (double e : full.E) Emax = std::max(Emax, e);
+      for (double v : full.h) hmax = std::max(hmax, std::fabs(v));
+      for (double rtol : {0.0, 1e-6, 1e-8, 1e-10, 1e-12}) {
+        const auto acc = static_history_accuracy<double>::for_rtol(rtol);
+        static_history<double> h(pm);
+        out o;
+        const double t = median_time([&] { o = run(pm, acc, p, &h); });
+        const std::clock_t c0 = std::clock();
+        run(pm, acc, p, nullptr);
+        const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
+        fields(h, o);
+        double eb = 0, eE = 0, eq = 0, eh = 0;
+        for (size_t k = 0; k < o.b.size(); ++k) eb = std::max(eb, std::fabs(o.b[k] - full.b[k]));
+        for (size_t k = 0; k < o.E.size(); ++k) eE = std::max(eE, std::fabs(o.E[k] - full.E[k]) / Emax);
+        for (size_t k = 0; k < o.q.size(); ++k) eq = std::max(eq, std::fabs(o.q[k] - full.q[k]));
+        for (size_t k = 0; k < o.h.size(); ++k) eh = std::max(eh, std::fabs(o.h[k] - full.h[k]) / hmax);
+        const double err = std::max({eb, eE, eq, eh});
+        // the steady cycle's monotonic solution (the steady path only)
+        double emono = 0;
+        if (pi == 0)
+          emono = std::max(std::fabs(h.b1() - m.b1()), std::fabs(h.last_segment().E1 - 2 * m.energy(1)) / m.energy(1));
+        char setting[32];
+        if (rtol > 0) std::snprintf(setting, sizeof setting, "rtol %g", rtol);
+        else std::snprintf(setting, sizeof setting, "full");
+        std::fprintf(csv, "%s_%s,static solves,%s,0,%.6g,%.3g,%.3g,%.3g,%zu\n", gname, pname, setting, t, eb, eE, err,
+                     p.size());
+        std::printf("| %s, %s | static solves, %s | %.3g ms (CPU %.3g ms) | %.1e against the full-accuracy solve "
+                    "(ends %.1e a, energies %.1e, traction %.1e, slip %.1e)%s |\n",
+                    g == 0 ? "Hertz" : "flat punch b_f/a = 0.5",
+                    pi == 0 ? "sigma/fp0 = 0.6, then 99 half cycles Q/fP = -+0.3" : "sigma then Q cycles, 4 vertices",
+                    setting, t * 1e3, cpu * 1e3, err, eb, eE, eq, eh,
+                    pi == 0 ? (std::string("; ") + [&] {
+                      char b[64];
+                      std::snprintf(b, sizeof b, "%.1e against the monotonic solution", emono);
+                      return std::string(b);
+                    }()).c_str()
+                            : "");
+      }
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
-  const char *out = argc > 1 ? argv[1] : "history.csv";
-  // --static-only: only section 5, the static solves (a minute; the march's sections take ~20 min)
-  const bool static_only = argc > 2 && std::strcmp(argv[2], "--static-only") == 0;
+  // bench_history OUT.csv: every row; bench_history --static-rtol OUT.csv: only the static
+  // solves' speed-accuracy rows (a minute, where the whole run takes many); bench_history OUT.csv
+  // --static-only: only section 5, the static solves' robustness and cost rows (a minute)
+  const bool static_only = argc > 1 && std::string(argv[1]) == "--static-rtol";
+  const char *out = argc > 1 + int(static_only) ? argv[1 + int(static_only)] : "history.csv";
+  const bool section5_only = !static_only && argc > 2 && std::strcmp(argv[2], "--static-only") == 0;
   FILE *csv = std::fopen(out, "w");
   if (!csv) return 1;
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  if (static_only) {
+    std::fprintf(csv, "case,method,setting,steps,seconds,err_b,err_E,error,vertices\n");
+    static_rtol_rows(csv);
+    std::fclose(csv);
+    return 0;
+  }
   std::fprintf(csv, "case,method,setting,steps,seconds,err_b,err_E,error_estimate,interior_merges\n");
   auto hertz = std::make_shared<hertz_pressure<double>>();
   auto flat = std::make_shared<flat_rounded_pressure<double>>(0.5);
 
-  if (!static_only) {
+  if (!section5_only) {
   // 1. steady proportional Hertz cycle (+-(0.5, 0.4)): energy per cycle vs 4 x monotonic
   {
     hertz_scene<double> sc;
@@ -460,7 +565,7 @@ int main(int argc, char **argv) {
         "sigma_m + sigma_a <= 1); %.3g s in all |\n",
         n, ok, n, ok_low, n_low, tsum);
   }
-  }  // !static_only
+  }  // !section5_only
   // 5. the static solves (core/static_history.hpp): exact where every segment advances.
   // (a) sigma then 100 half cycles of Q at constant sigma (every segment advances; the issue's
   // "non-proportional path of 100 vertices"), Hertz and flat punch, against the steady
@@ -486,6 +591,8 @@ int main(int argc, char **argv) {
                   "%.1e (ends, a; last energy, relative) against the steady cycle's monotonic solution |\n",
                   g == 0 ? "Hertz" : "flat punch b_f/a = 0.5", t * 1e3, err);
     }
+    // the same at an accuracy asked (hs_history_options.rtol)
+    static_rtol_rows(csv);
     for (int g = 0; g < 2; ++g) {
       std::shared_ptr<const pressure_model<double>> pm =
           g == 0 ? hertz : std::shared_ptr<const pressure_model<double>>(std::make_shared<flat_rounded_pressure<double>>(0.5));

@@ -401,3 +401,66 @@ TEST_CASE("static history: a fold (the ends jump at a near-Masing return), again
   // the state: within the friction limit inside the stick zone, at it at the ends
   for (double x = -h.b2() + 0.01; x < h.b1(); x += 0.05) CHECK(std::fabs(h.traction(x)) < hertz_pressure<double>().p(x));
 }
+
+// An accuracy asked (static_history_accuracy::for_rtol, what hs_history passes from its
+// rtol): the cheaper orders agree with the full-accuracy solve to within rtol on every
+// vertex: ends in units of a, segment energies relative to the path's largest, the traction
+// in f p0, the slip relative to its largest value. Paths: sigma then Q cycles (the issue's
+// non-proportional path), a steady Q cycle, and two segments after a ramp.
+TEST_CASE("static history: an rtol-driven solve agrees with the full-accuracy one to within rtol") {
+  std::vector<std::shared_ptr<const pressure_model<double>>> pms{hertz_pm(),
+                                                                 std::make_shared<flat_rounded_pressure<double>>(0.5)};
+  using path = std::vector<std::pair<double, double>>;
+  std::vector<path> paths{{{0, 0.6}, {0.4, 0.6}, {-0.3, 0.6}, {0.35, 0.6}},
+                          {{0, 0.2}, {0.45, 0.2}, {-0.45, 0.2}, {0.45, 0.2}, {-0.45, 0.2}},
+                          {{0.5, 0.4}, {0.2, 0.6}},
+                          {{0.4, 0.5}, {-0.1, 0.3}}};
+  struct out {
+    std::vector<double> b, E, q, h;
+  };
+  auto run = [](const std::shared_ptr<const pressure_model<double>> &pm, const static_history_accuracy<double> &acc,
+                const path &p) {
+    out o;
+    static_history<double> h(pm, acc);
+    for (const auto &v : p) {
+      h.add_vertex(v.first, v.second);
+      o.b.push_back(h.b1());
+      o.b.push_back(h.b2());
+      o.E.push_back(h.last_segment().E1);
+      o.E.push_back(h.last_segment().E2);
+      for (int k = -19; k <= 19; ++k) o.q.push_back(h.traction(0.05 * k + 0.001));
+    }
+    for (int k = -19; k <= 19; ++k) o.h.push_back(h.slip(0.05 * k + 0.001));
+    return o;
+  };
+  CHECK(static_history_accuracy<double>::for_rtol(1e-8).lambda < static_history_accuracy<double>{}.lambda);
+  for (const auto &pm : pms) {
+    for (const auto &p : paths) {
+      const out full = run(pm, static_history_accuracy<double>{}, p);
+      double Emax = 0, hmax = 0;
+      for (double e : full.E) Emax = std::max(Emax, e);
+      for (double v : full.h) hmax = std::max(hmax, std::fabs(v));
+      // below 1e-12 the full orders themselves
+      {
+        const out o = run(pm, static_history_accuracy<double>::for_rtol(1e-14), p);
+        CHECK(o.b == full.b);
+        CHECK(o.E == full.E);
+      }
+      for (double rtol : {1e-6, 1e-8, 1e-10, 1e-12}) {
+        CAPTURE(rtol);
+        CAPTURE(p.front().second);
+        CAPTURE(p.back().first);
+        const out o = run(pm, static_history_accuracy<double>::for_rtol(rtol), p);
+        double eb = 0, eE = 0, eq = 0, eh = 0;
+        for (size_t k = 0; k < o.b.size(); ++k) eb = std::max(eb, std::fabs(o.b[k] - full.b[k]));
+        for (size_t k = 0; k < o.E.size(); ++k) eE = std::max(eE, std::fabs(o.E[k] - full.E[k]) / Emax);
+        for (size_t k = 0; k < o.q.size(); ++k) eq = std::max(eq, std::fabs(o.q[k] - full.q[k]));
+        for (size_t k = 0; k < o.h.size(); ++k) eh = std::max(eh, std::fabs(o.h[k] - full.h[k]) / hmax);
+        CHECK(eb <= rtol);
+        CHECK(eE <= rtol);
+        CHECK(eq <= rtol);
+        CHECK(eh <= rtol);
+      }
+    }
+  }
+}

@@ -49,6 +49,9 @@ struct hs_history {
   std::vector<std::pair<double, double>> input;  // the vertices given, in order
   core::history_options<double> march_options;
   double march_rtol = 0;
+  // the static solves' orders and tolerances, from opts->rtol (core::static_history_accuracy::for_rtol:
+  // the result agrees with the full-accuracy static solve to within rtol)
+  core::static_history_accuracy<double> static_accuracy;
   // issue 14: off the ray, while every segment advances, one static solve per segment
   // (core/static_history.hpp): a snapshot of the history after each vertex (cheap: the
   // segments are shared). The first segment it cannot take replays the path in the march.
@@ -141,6 +144,7 @@ int hs_history_new(const hs_scene *scene, const hs_geometry *geometry, const hs_
     r->pm = pm;
     r->march_options = ho;
     r->march_rtol = o.rtol;
+    r->static_accuracy = core::static_history_accuracy<double>::for_rtol(o.rtol);
     r->hertz = geometry == nullptr || geometry->kind == HS_GEOMETRY_HERTZ;
     *out = r.release();
   });
@@ -274,7 +278,8 @@ bool add_static(const core::static_history<double> &from, double q, double s,
 // (nothing changed) if a segment of it cannot be taken that way.
 bool to_static(hs_history &h) {
   if (!h.ray_mode) return h.static_mode;
-  std::shared_ptr<const core::static_history<double>> cur = std::make_shared<core::static_history<double>>(h.pm);
+  std::shared_ptr<const core::static_history<double>> cur =
+      std::make_shared<core::static_history<double>>(h.pm, h.static_accuracy);
   std::vector<hs_history::static_vertex_rec> recs;
   for (const auto &v : h.input) {
     hs_history::static_vertex_rec rec;

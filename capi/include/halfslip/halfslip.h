@@ -459,7 +459,9 @@ typedef struct hs_history_options {
   double steady_rtol;       /* cycles are steady when the zone ends and energies repeat to this (default 1e-6) */
   double rtol;              /* the step is halved (path replayed) until steps h and 2h agree to rtol at every
                                vertex (zone ends / a, energies / the largest one); 0: march at max_step
-                               only. Default 1e-8. */
+                               only. Default 1e-8. The static solves (off the ray, advancing segments)
+                               take their quadrature orders from it: within rtol of the exact static
+                               solve; 0 or below 1e-12: full accuracy. */
   /* issue 14 (added after 0.4.0; a 0.4.0 caller's smaller struct_size still
    * works, with the default): where the friction limit is reached inside the
    * stick zone, away from its ends, a third slip zone would open, which the

@@ -59,6 +59,8 @@ namespace shdetail {
 // Gauss-Legendre rule in theta on (0, pi) with barycentric weights for interpolation.
 template <class T> struct trule {
   std::vector<T> t, w, bw, sh, ch;  // nodes on (-1, 1), weights, barycentric weights, sin, cos(theta/2)
+  std::vector<T> wp1, wp2;          // w_j P_{n-1}(t_j) (2n - 1)/2 and w_j P_{n-2}(t_j) (2n - 3)/2
+
   explicit trule(int n) {
     using std::cos;
     using std::sin;
@@ -72,6 +74,15 @@ template <class T> struct trule {
       const T th = pi_ * (1 + t[j]) / 2;
       sh.push_back(sin(th / 2));
       ch.push_back(cos(th / 2));
+      // (the coefficients of P_{n-1}, P_{n-2} of the values at the nodes: resolved())
+      T p0 = 1, p1 = t[j];
+      for (int k = 2; k < n; ++k) {
+        const T p2 = (T(2 * k - 1) * t[j] * p1 - T(k - 1) * p0) / T(k);
+        p0 = p1;
+        p1 = p2;
+      }
+      wp1.push_back(w[j] * p1 * T(2 * (n - 1) + 1) / 2);
+      wp2.push_back(w[j] * p0 * T(2 * (n - 2) + 1) / 2);
     }
   }
   int n() const { return int(t.size()); }
@@ -307,14 +318,85 @@ template <class T> struct sh_segment {
   std::vector<sh_jump<T>> jumps;  // phases with a fold (their slip from their start and end states)
 };
 
+// The quadrature orders and tolerances of the static solves. The defaults are full accuracy
+// (rounding level: ~1e-15 in the ends). for_rtol(rtol) picks cheaper ones whose result
+// agrees with the full-accuracy solve to within rtol (ends in units of a, energies relative
+// to the segment's, tractions in f p0, slip relative to its scale): chosen by the measured
+// sweeps of bench/bench_history.cpp (docs/benchmarks.md, "Load histories") and checked by
+// tests/test_static_history.cpp.
+template <class T> struct static_history_accuracy {
+  int theta = 24;                // Gauss-Legendre order in theta of the state's panels and bands
+  int lambda = 16;               // Gauss nodes in lambda per piece of a segment (energies, slip)
+  int band = 16;                 // Gauss order of a band's graded theta intervals
+  int band_theta = 24;           // Gauss order in theta of a band's ungraded pieces in the residual
+                                 // (the new traction's take the theta order)
+  int zone = 32;                 // hist_zone_rate's order (energies)
+  int slip = 24;                 // Gauss order of seg_slip's onset map
+  T panel_tol = T(1e3) * eps<T>();  // panels resolved: last Legendre coefficients below this of the scale
+  T rtol = 0;                    // the accuracy asked (0: full)
+
+  static static_history_accuracy for_rtol(const T &rtol) {
+    static_history_accuracy a;
+    a.rtol = rtol > 0 ? rtol : T(0);
+    if (!(rtol > 0)) return a;
+    // (the theta order stays: fewer nodes a panel need many more panels, 3 at 24 where 53 at 16
+    // for rtol 1e-8, and run away at tight tolerances; so does the slip's, which costs nothing
+    // in add_vertex: at 16 and 20 the slip just past an end reached at a vertex erred by 1.7e-8
+    // and 1e-9 of its scale). The lambda order is set by the slip too, which interpolates the
+    // ends in lambda: a segment after a ramp, flat punch, slip error 7e-8, 3e-9, 9e-11, 5e-12
+    // of its scale at 8, 10, 12, 14 nodes)
+    // The residual's band orders stay high: the crossings and Masing returns compare band sums
+    // to 1e4 eps, and with the residual's pieces at orders 10 to 12 the static solves took 43
+    // of the bench's 162 periodic loadings where full accuracy takes 56 (at 16 and 12: 58).
+    const double r = double(rtol);
+    if (r >= 1e-6) {
+      a.lambda = 8, a.band_theta = 16, a.band = 12, a.zone = 12;
+    } else if (r >= 1e-8) {
+      a.lambda = 12, a.band_theta = 16, a.band = 12, a.zone = 16;
+    } else if (r >= 1e-10) {
+      a.lambda = 14, a.band_theta = 16, a.band = 14, a.zone = 20;
+    } else if (r >= 1e-12) {
+      a.lambda = 16, a.band_theta = 16, a.band = 16, a.zone = 24;
+    } else {
+      return static_history_accuracy{};
+    }
+    // the panels are resolved to a hundredth of the tolerance (never below the default), and
+    // to 1e-10 at most: the friction-limit check allows the traction 1e-10 f p0, and at 1e-8 the
+    // static solves took 15 of the 162 periodic loadings (at 1e-9: 57, 1e-10: 58)
+    using std::max;
+    using std::min;
+    a.panel_tol = max(a.panel_tol, min(rtol / 100, T(1e-10)));
+    return a;
+  }
+};
+
 template <class T> class static_history {
  public:
   using pressure_ptr = std::shared_ptr<const pressure_model<T>>;
+  using accuracy = static_history_accuracy<T>;
   explicit static_history(pressure_ptr pm, int order = 24, int lam_order = 16)
+      : static_history(std::move(pm), [&] {
+          accuracy a;
+          a.theta = order;
+          a.lambda = lam_order;
+          return a;
+        }()) {}
+  // orders and tolerances from acc (accuracy::for_rtol(rtol): the cheapest that meet rtol)
+  static_history(pressure_ptr pm, const accuracy &acc)
       : pm_(std::move(pm)),
-        rule_(std::make_shared<shdetail::trule<T>>(order)),
-        lrule_(std::make_shared<shdetail::trule<T>>(lam_order)) {
+        rule_(std::make_shared<shdetail::trule<T>>(acc.theta)),
+        lrule_(std::make_shared<shdetail::trule<T>>(acc.lambda)),
+        rrule_(acc.lambda == 16 ? lrule_ : std::make_shared<shdetail::trule<T>>(16)),
+        brule_(gauss_legendre<T>(acc.band)),
+        urule_(acc.band_theta == acc.theta ? rule_ : std::make_shared<shdetail::trule<T>>(acc.band_theta)),
+        zorder_(acc.zone),
+        sorder_(acc.slip),
+        ptol_(acc.panel_tol),
+        rtol_(acc.rtol),
+        mono_tol_(std::max(T(1e3) * eps<T>(), T(acc.rtol))) {
     if (!pm_) throw error(status::null_pointer, "static_history: no pressure model");
+    if (acc.theta < 4 || acc.lambda < 2 || acc.band < 2 || acc.band_theta < 2 || acc.zone < 2 || acc.slip < 2 || !(acc.panel_tol > 0))
+      throw error(status::bad_option, "static_history: an order or tolerance out of range");
     for (const auto &bp : pm_->breakpoints())
       if (bp.x > -1 && bp.x < 1) pbreaks_.push_back(bp.x);
     sh_panel<T> p0;
@@ -324,6 +406,10 @@ template <class T> class static_history {
     p0.c = 0;
     panels_ = split_at_breaks({p0});
   }
+  // the accuracy asked (0: full)
+  T rtol() const { return rtol_; }
+  // the panels of the state's stick traction (its cost: each costs theta-order values)
+  size_t panel_count() const { return panels_.size(); }
 
   T q() const { return q_; }
   T s() const { return s_; }
@@ -436,16 +522,177 @@ template <class T> class static_history {
   struct band_out {
     T I{0}, J{0}, K{0};
   };
-  band_out band(int i, const T &b1, const T &b2, int d, bool want_k, const T &x) const {
-    using std::cos;
+
+  // A node of a band piece (l, r): xi, xi - l, r - xi, sin and cos of theta/2, and g(xi) times
+  // the theta weight. None of it depends on the new ends, only on the state, the piece and the
+  // theta interval, so it is kept (bcache) for the pieces that do not start at a new end.
+  struct bnode {
+    T xi, xl, xr, sh, ch, gw;
+  };
+  // The theta intervals of a piece, by code: -1 the band's rule on (0, pi), ungraded (the
+  // residual's sums), -2 the state's theta rule on (0, pi), ungraded (the new traction's); graded
+  // towards one end, in u (the angle from that end: theta = u for band 1, pi - u for band 2):
+  // 0: (pi/2, pi); m = 1, 2, ...: (pi 2^-(m+1), pi 2^-m); kcore + K: (0, pi 2^-K). A piece
+  // graded at level K is the intervals 0, 1, ..., K - 1 and kcore + K: dyadic cuts, so that
+  // the intervals are shared by every point x of the kernel 1/(xi - x) with the same K.
+  static constexpr int kcore = 64;
+  static int code_slot(int code) { return code + 2; }
+  static constexpr int nslots = 2 * kcore + 3;
+
+  // the grading level K of a piece of length L whose graded end lies D from the singularity
+  // (0: not graded)
+  static int grade_level(const T &D, const T &L) {
     using std::max;
-    using std::sin;
     using std::sqrt;
-    band_out o;
-    if (d == 0) return o;
-    const T inner = i == 1 ? b1 : -b2;
+    if (!(D < L)) return 0;
+    const T a0 = max(T(2) * sqrt(max(D, T(0)) / L), T(64) * eps<T>());
+    const T pi_ = pi<T>();
+    int K = 1;
+    while (K < kcore - 1 && pi_ * T(std::ldexp(1.0, -K)) > a0) ++K;
+    return K;
+  }
+  template <class F> static void for_codes(int K, int ucode, F &&f) {
+    if (K == 0) {
+      f(ucode);
+      return;
+    }
+    for (int m = 0; m < K; ++m) f(m);
+    f(kcore + K);
+  }
+
+  void make_nodes(int i, int d, const T &l, const T &r, int code, std::vector<bnode> &out) const {
+    using std::cos;
+    using std::sin;
+    out.clear();
+    out.reserve(code < 0 ? (code == -1 ? urule_->n() : rule_->n()) : int(brule_->x.size()));
+    const T L = r - l, pi_ = pi<T>();
+    auto push = [&](const T &sh, const T &ch, const T &wt) {
+      // xi - l = L sh^2, r - xi = L ch^2, exactly
+      const T xl = L * sh * sh, xr = L * ch * ch;
+      const T xi = xl <= xr ? l + xl : r - xr;
+      // p with the exact distances to the edges where the sub-interval ends there
+      const T dm = (i == 2 && l == T(-1)) ? xl : 1 + xi;
+      const T dp = (i == 1 && r == T(1)) ? xr : 1 - xi;
+      const T px = pm_->p(xi, dm, dp);
+      const T g = T(d) * px - qS_p(xi, px);
+      out.push_back({xi, xl, xr, sh, ch, g * wt});
+    };
+    if (code < 0) {
+      const auto &R = code == -1 ? *urule_ : *rule_;
+      for (int j = 0; j < R.n(); ++j) push(R.sh[j], R.ch[j], pi_ / 2 * R.w[j]);
+      return;
+    }
+    T a, b;
+    if (code == 0) a = pi_ / 2, b = pi_;
+    else if (code < kcore) a = pi_ * T(std::ldexp(1.0, -(code + 1))), b = pi_ * T(std::ldexp(1.0, -code));
+    else a = 0, b = pi_ * T(std::ldexp(1.0, -(code - kcore)));
+    const T hw = (b - a) / 2, mid = (a + b) / 2;
+    const auto &gr = *brule_;
+    for (size_t j = 0; j < gr.x.size(); ++j) {
+      const T u = mid + hw * gr.x[j];
+      const T su = sin(u / 2), cu = cos(u / 2);
+      if (i == 1) push(su, cu, hw * gr.w[j]);
+      else push(cu, su, hw * gr.w[j]);
+    }
+  }
+
+  // q_S at x given p(x) (the slip zones and the analytic panels are multiples of it: one
+  // evaluation of the pressure a band node, not two)
+  T qS_p(const T &x, const T &px) const {
+    if (x > b1_) return T(s1_) * px;
+    if (x < -b2_) return T(s2_) * px;
+    size_t lo = 0, hi = panels_.size();
+    while (hi - lo > 1) {
+      const size_t m = (lo + hi) / 2;
+      if (panels_[m].l <= x) lo = m;
+      else hi = m;
+    }
+    const auto &P = panels_[lo];
+    if (P.analytic) return P.c * px;
+    return rule_->interp(P.v, shdetail::tpar(P.l, P.r, x));
+  }
+
+  // the band cache: per state (checked by a signature of the state's traction: the cache is
+  // filled and read only in the calls of a segment, on the history's private copy; a copy of
+  // the history starts with an empty one)
+  struct bpiece {
+    int i, d;
+    T l, r;
+    std::vector<std::vector<bnode>> lev;
+  };
+  struct bcache {
+    std::vector<bpiece> pieces;
+    std::vector<T> sig;
+    bcache() = default;
+    bcache(const bcache &) {}
+    bcache(bcache &&) = default;
+    bcache &operator=(const bcache &) {
+      pieces.clear();
+      sig.clear();
+      return *this;
+    }
+    bcache &operator=(bcache &&) = default;
+  };
+  void state_sig(std::vector<T> &s) const {
+    s.clear();
+    s.push_back(b1_);
+    s.push_back(b2_);
+    s.push_back(T(s1_));
+    s.push_back(T(s2_));
+    for (const auto &P : panels_) {
+      s.push_back(P.l);
+      s.push_back(P.r);
+      s.push_back(P.analytic ? P.c : T(-7));
+      if (!P.v.empty()) {
+        s.push_back(P.v.front());
+        s.push_back(P.v[P.v.size() / 2]);
+        s.push_back(P.v.back());
+      }
+    }
+  }
+  bool sig_matches() const {
+    const auto &s = bc_.sig;
+    size_t k = 0;
+    auto eq = [&](const T &v) { return k < s.size() && s[k++] == v; };
+    if (!eq(b1_) || !eq(b2_) || !eq(T(s1_)) || !eq(T(s2_))) return false;
+    for (const auto &P : panels_) {
+      if (!eq(P.l) || !eq(P.r) || !eq(P.analytic ? P.c : T(-7))) return false;
+      if (!P.v.empty() && (!eq(P.v.front()) || !eq(P.v[P.v.size() / 2]) || !eq(P.v.back()))) return false;
+    }
+    return k == s.size();
+  }
+  void check_cache() const {
+    if (!bc_.sig.empty() && sig_matches()) return;
+    bc_.pieces.clear();
+    state_sig(bc_.sig);
+  }
+  void clear_cache() const {
+    bc_.pieces.clear();
+    bc_.sig.clear();
+  }
+  const std::vector<bnode> &cached_nodes(int i, int d, const T &l, const T &r, int code) const {
+    bpiece *pc = nullptr;
+    for (auto &q : bc_.pieces)
+      if (q.i == i && q.d == d && q.l == l && q.r == r) {
+        pc = &q;
+        break;
+      }
+    if (!pc) {
+      bc_.pieces.push_back(bpiece{i, d, l, r, std::vector<std::vector<bnode>>(nslots)});
+      pc = &bc_.pieces.back();
+    }
+    auto &v = pc->lev[code_slot(code)];
+    if (v.empty()) make_nodes(i, d, l, r, code, v);
+    return v;
+  }
+
+  // the pieces of band i (between the cusps of the state) where g is not zero
+  void band_cuts(int i, const T &b1, const T &b2, int d, std::vector<T> &cuts) const {
+    using std::max;
+    cuts.clear();
+    if (d == 0) return;
     const T lo = i == 1 ? b1 : T(-1), hi = i == 1 ? T(1) : -b2;
-    if (!(hi > lo)) return o;
+    if (!(hi > lo)) return;
     // where the old zone continues with the same direction, g = 0
     const int sold = i == 1 ? s1_ : s2_;
     T glo = lo, ghi = hi;
@@ -453,82 +700,75 @@ template <class T> class static_history {
       if (i == 1) ghi = std::min(hi, max(b1_, lo));
       else glo = max(lo, std::min(-b2_, hi));
     }
-    if (!(ghi > glo)) return o;
-    std::vector<T> cuts{glo};
+    if (!(ghi > glo)) return;
+    cuts.push_back(glo);
     for (const T &c : cusps_in(glo, ghi)) cuts.push_back(c);
     cuts.push_back(ghi);
+  }
+
+  // theta cuts are graded towards an end of a piece next to a near singularity: the branch
+  // point of 1/W at the stick end (for a piece that does not start there; found by the
+  // crossings, where an end lies just inside a memory point and the piece beyond the point
+  // was integrated with errors of 1e-4), or the point x of the kernel 1/(xi - x)
+  // (dq = x - the end: D = dq for the piece at the end).
+  band_out band(int i, const T &b1, const T &b2, int d, bool want_k, const T &x) const {
+    using std::sqrt;
+    band_out o;
+    if (d == 0) return o;
+    std::vector<T> cuts;
+    band_cuts(i, b1, b2, d, cuts);
+    if (cuts.size() < 2) return o;
+    check_cache();
+    const T inner = i == 1 ? b1 : -b2;
     const T c = (b1 - b2) / 2;
-    const auto &R = *rule_;
-    const auto gr = gauss_legendre<T>(16);
-    const T pi_ = pi<T>();
+    std::vector<bnode> scratch;
+    bool inner_cusp = inner == b1_ || inner == -b2_;
+    for (const T &b : pbreaks_) inner_cusp = inner_cusp || inner == b;
+    for (const auto &P : panels_) inner_cusp = inner_cusp || (P.cusp_l && P.l == inner);
     for (size_t k = 0; k + 1 < cuts.size(); ++k) {
       const T l = cuts[k], r = cuts[k + 1];
       const T L = r - l;
       if (!(L > 0)) continue;
       const bool at_inner = (i == 1 && l == inner) || (i == 2 && r == inner);
-      // theta cuts, graded towards an end of the piece next to a near singularity: the
-      // branch point of 1/W at the stick end (for a piece that does not start there; found
-      // by the crossings, where an end lies just inside a memory point and the piece beyond
-      // the point was integrated with errors of 1e-4), or the point x of the kernel 1/(xi - x)
-      std::vector<T> th{T(0), pi_};
-      bool graded = false;
-      {
-        const T big = 2 * L;
-        T D = big;
-        if (i == 1) {
-          if (!at_inner) D = l - b1;
-          else if (want_k) D = l - x;
-        } else {
-          if (!at_inner) D = -b2 - r;
-          else if (want_k) D = x - r;
-        }
-        if (D < L) {
-          graded = true;
-          // (D = 0: x at the end itself; start the grading at the rounding level)
-          for (T a = max(T(2) * sqrt(max(D, T(0)) / L), T(64) * eps<T>()); a < pi_ / 2; a *= 2)
-            th.push_back(i == 1 ? a : pi_ - a);
-          th.push_back(pi_ / 2);
-          std::sort(th.begin(), th.end());
-          th.erase(std::unique(th.begin(), th.end()), th.end());
-        }
-      }
-      auto node = [&](const T &sh, const T &ch, const T &wt) {
-        // xi - l = L sh^2, r - xi = L ch^2, exactly
-        const T xl = L * sh * sh, xr = L * ch * ch;
-        const T xi = xl <= xr ? l + xl : r - xr;
-        // dxi / X: dxi = L sh ch dtheta
-        T jw;
-        if (i == 1) {
-          const T dplus = xi + b2;
-          if (at_inner) jw = sqrt(L) * ch / sqrt(dplus);
-          else jw = L * sh * ch / sqrt((l - b1 + xl) * dplus);
-        } else {
-          const T dminus = b1 - xi;
-          if (at_inner) jw = -sqrt(L) * sh / sqrt(dminus);
-          else jw = -L * sh * ch / sqrt((-b2 - r + xr) * dminus);
-        }
-        // p with the exact distances to the edges where the sub-interval ends there
-        const T dm = (i == 2 && l == T(-1)) ? xl : 1 + xi;
-        const T dp = (i == 1 && r == T(1)) ? xr : 1 - xi;
-        const T g = T(d) * pm_->p(xi, dm, dp) - qS(xi);
-        const T f = g * jw * wt;
-        o.I += f;
-        o.J += f * (xi - c);
-        // xi - x from the exact distances (x is close to the band's end: xi - x = D + xl)
-        if (want_k) o.K += f / (i == 1 ? (l - x) + xl : -((x - r) + xr));
-      };
-      if (!graded) {
-        const T hw = pi_ / 2;
-        for (int j = 0; j < R.n(); ++j) node(R.sh[j], R.ch[j], hw * R.w[j]);
+      T D = 2 * L;
+      if (i == 1) {
+        if (!at_inner) D = l - b1;
+        else if (want_k) D = l - x;
       } else {
-        for (size_t m = 0; m + 1 < th.size(); ++m) {
-          const T a = th[m], b = th[m + 1], hw = (b - a) / 2, mid = (a + b) / 2;
-          for (size_t j = 0; j < gr->x.size(); ++j) {
-            const T t = mid + hw * gr->x[j];
-            node(sin(t / 2), cos(t / 2), hw * gr->w[j]);
-          }
-        }
+        if (!at_inner) D = -b2 - r;
+        else if (want_k) D = x - r;
       }
+      const int K = grade_level(D, L);
+      const T sL = sqrt(L);
+      for_codes(K, want_k ? -2 : -1, [&](int code) {
+        const std::vector<bnode> *nd;
+        // (a piece at the new end is kept only where that end is on a cusp of the state, as
+        // in the crossings; the ends of a Newton iteration are not)
+        if (at_inner && !inner_cusp) {
+          make_nodes(i, d, l, r, code, scratch);
+          nd = &scratch;
+        } else {
+          nd = &cached_nodes(i, d, l, r, code);
+        }
+        for (const bnode &q : *nd) {
+          // dxi / X: dxi = L sh ch dtheta
+          T jw;
+          if (i == 1) {
+            const T dplus = q.xi + b2;
+            if (at_inner) jw = sL * q.ch / sqrt(dplus);
+            else jw = L * q.sh * q.ch / sqrt((l - b1 + q.xl) * dplus);
+          } else {
+            const T dminus = b1 - q.xi;
+            if (at_inner) jw = -sL * q.sh / sqrt(dminus);
+            else jw = -L * q.sh * q.ch / sqrt((-b2 - r + q.xr) * dminus);
+          }
+          const T f = q.gw * jw;
+          o.I += f;
+          o.J += f * (q.xi - c);
+          // xi - x from the exact distances (x is close to the band's end: xi - x = D + xl)
+          if (want_k) o.K += f / (i == 1 ? (l - x) + q.xl : -((x - r) + q.xr));
+        }
+      });
     }
     return o;
   }
@@ -550,7 +790,17 @@ template <class T> class static_history {
     using std::max;
     using std::sqrt;
     const T h = sqrt(eps<T>());
-    const T tol = 64 * eps<T>();
+    // (at an accuracy asked, rtol: a step below rtol/1e3 ends the iteration; the updates
+    // converge superlinearly, so the error left is far below the step)
+    // (only at the lambda nodes, J given: their ends feed the energies and the slip; the ends
+    // at the vertex, the next state, are solved to rounding: the crossings and Masing returns of
+    // later segments compare band sums to 1e4 eps)
+    const T racc = J ? rtol_ : T(0);
+    const T tol = max(T(64) * eps<T>(), racc / 1000);
+    // (and the residual's own floor is the quadrature's error, with jumps of that size where a
+    // piece's grading level changes: a step that only stalls there, below rtol/10, is converged)
+    const T stall = max(T(1e6) * eps<T>(), racc / 10);
+    const T rtolr = max(T(1e5) * eps<T>(), racc / 10);
     auto inside = [&](const T &x1, const T &x2) {
       return x1 < 1 && x2 < 1 && x1 + x2 > 0 && (d1 != 0 || x1 == 1) && (d2 != 0 || x2 == 1);
     };
@@ -592,6 +842,18 @@ template <class T> class static_history {
       }
       const T stp = max(abs(b1 - n1), abs(b2 - n2));
       const bool slow = !(norm(rn) <= norm(r) / 4);
+      // Broyden's update of the Jacobian along the step taken (the chord from the node
+      // before converges only linearly, ~7x an iteration; the update makes it superlinear
+      // at no cost: the residual decides convergence, the Jacobian only the steps)
+      {
+        const T s1 = n1 - b1, s2 = n2 - b2, ss = s1 * s1 + s2 * s2;
+        const T y1 = rn[0] - r[0] - (Jc[0] * s1 + Jc[1] * s2), y2 = rn[1] - r[1] - (Jc[2] * s1 + Jc[3] * s2);
+        if (ss > 0) {
+          const std::array<T, 4> Jb{{Jc[0] + y1 * s1 / ss, Jc[1] + y1 * s2 / ss, Jc[2] + y2 * s1 / ss,
+                                     Jc[3] + y2 * s2 / ss}};
+          if (isfinite(Jb[0] * Jb[3] - Jb[1] * Jb[2]) && Jb[0] * Jb[3] - Jb[1] * Jb[2] != 0) Jc = Jb;
+        }
+      }
       b1 = n1;
       b2 = n2;
       r = rn;
@@ -599,8 +861,8 @@ template <class T> class static_history {
       fresh = slow;
       // converged: the step at the rounding floor, and the residual small (a step that
       // only stalls, e.g. against a cusp where the residual has an infinite slope, is not)
-      if (stp <= tol || (stp <= 1e6 * eps<T>() && last >= 0 && stp > last / 2))
-        return norm(r) <= T(1e5) * eps<T>() * (1 + abs(dq) + abs(ds));
+      if (stp <= tol || (stp <= stall && last >= 0 && stp > last / 2))
+        return norm(r) <= rtolr * (1 + abs(dq) + abs(ds));
       last = stp;
     }
     return false;
@@ -937,9 +1199,9 @@ template <class T> class static_history {
         // (a trial past the point where an end stops: the static solve there has that end
         // moving back, or its r_i of the other sign)
         int se = stops(g1, g2);
-        if (!se && (g1 > wb1 + 1e3 * eps<T>() || g2 > wb2 + 1e3 * eps<T>())) {
+        if (!se && (g1 > wb1 + mono_tol_ || g2 > wb2 + mono_tol_)) {
           if (!stop) throw error(status::not_applicable, "static_history: the ends did not advance monotonically");
-          se = g1 > wb1 + 1e3 * eps<T>() ? 1 : 2;
+          se = g1 > wb1 + mono_tol_ ? 1 : 2;
         }
         if (se) {
           if (!stop) throw error(status::not_applicable, "static_history: a stick-zone end stops advancing within the segment");
@@ -957,8 +1219,8 @@ template <class T> class static_history {
         const T c = (g1 - g2) / 2, e = (g1 + g2) / 2;
         check_slip_sign(d1, d2, A, Bq, c, e);
         const T wl = R.w[j] * pc.dlam[j];
-        E1 += wl * T(d1) * hist_zone_rate(*pm_, 32, +1, A, Bq, c, e, g1, T(1));
-        E2 += wl * T(d2) * hist_zone_rate(*pm_, 32, -1, A, Bq, c, e, T(-1), -g2);
+        E1 += wl * T(d1) * hist_zone_rate(*pm_, zorder_, +1, A, Bq, c, e, g1, T(1));
+        E2 += wl * T(d2) * hist_zone_rate(*pm_, zorder_, -1, A, Bq, c, e, T(-1), -g2);
       }
       // the piece's nodes must lie between its ends: a crossing point that the nodes
       // passed, or did not reach, is a path the pieces do not follow
@@ -1188,17 +1450,96 @@ template <class T> class static_history {
     return true;
   }
 
-  // traction after the segment at stick point x
-  T new_traction(const T &x, const T &b1, const T &b2, int d1, int d2) const {
+  // ---- the new traction ----------------------------------------------------------
+  // dq(x) = w(x)/pi (K1 + K2), K_i = the sum over band i's nodes of f/(xi - x) with f = g jw
+  // times the weight: f and the node's offset from the piece's end do not depend on x, so
+  // they are formed once per theta interval of a piece (kparts) and each stick point costs
+  // one division a node. The grading of a piece at the new end follows x (grade_level), of
+  // the others the branch point (fixed): the same nodes as band(), shared between points.
+  struct kpiece {
+    T l, r;
+    bool at_inner;
+    int K;                                             // the fixed grading level (not at_inner)
+    std::vector<std::vector<std::pair<T, T>>> lev;     // (offset, f) a node, by code slot
+  };
+  struct kparts {
+    T b1, b2;
+    int d[2];
+    std::vector<kpiece> p[2];
+  };
+  kparts make_kparts(const T &b1, const T &b2, int d1, int d2) const {
+    kparts kp;
+    kp.b1 = b1;
+    kp.b2 = b2;
+    kp.d[0] = d1;
+    kp.d[1] = d2;
+    std::vector<T> cuts;
+    for (int i = 1; i <= 2; ++i) {
+      const int d = i == 1 ? d1 : d2;
+      band_cuts(i, b1, b2, d, cuts);
+      const T inner = i == 1 ? b1 : -b2;
+      for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+        const T l = cuts[k], r = cuts[k + 1], L = r - l;
+        if (!(L > 0)) continue;
+        kpiece P;
+        P.l = l;
+        P.r = r;
+        P.at_inner = (i == 1 && l == inner) || (i == 2 && r == inner);
+        P.K = P.at_inner ? 0 : grade_level(i == 1 ? l - b1 : -b2 - r, L);
+        P.lev.resize(nslots);
+        kp.p[i - 1].push_back(std::move(P));
+      }
+    }
+    return kp;
+  }
+  T new_traction(const T &x, kparts &kp) const {
     using std::sqrt;
-    const auto o1 = band(1, b1, b2, d1, true, x);
-    const auto o2 = band(2, b1, b2, d2, true, x);
+    const T b1 = kp.b1, b2 = kp.b2;
+    T Ks = 0;
+    std::vector<bnode> scratch;
+    for (int i = 1; i <= 2; ++i) {
+      const int d = kp.d[i - 1];
+      for (auto &P : kp.p[i - 1]) {
+        const T l = P.l, r = P.r, L = r - l;
+        const T base = i == 1 ? l - x : x - r;  // xi - x = base + xl (band 1), -(base + xr) (band 2)
+        const int K = P.at_inner ? grade_level(base, L) : P.K;
+        for_codes(K, -2, [&](int code) {
+          auto &v = P.lev[code_slot(code)];
+          if (v.empty()) {
+            const std::vector<bnode> *nd;
+            if (P.at_inner) {
+              make_nodes(i, d, l, r, code, scratch);
+              nd = &scratch;
+            } else {
+              nd = &cached_nodes(i, d, l, r, code);
+            }
+            const T sL = sqrt(L);
+            for (const bnode &q : *nd) {
+              T jw;
+              if (i == 1) {
+                const T dplus = q.xi + b2;
+                if (P.at_inner) jw = sL * q.ch / sqrt(dplus);
+                else jw = L * q.sh * q.ch / sqrt((l - b1 + q.xl) * dplus);
+                v.emplace_back(q.xl, q.gw * jw);
+              } else {
+                const T dminus = b1 - q.xi;
+                if (P.at_inner) jw = -sL * q.sh / sqrt(dminus);
+                else jw = -L * q.sh * q.ch / sqrt((-b2 - r + q.xr) * dminus);
+                v.emplace_back(q.xr, -(q.gw * jw));
+              }
+            }
+          }
+          for (const auto &of : v) Ks += of.second / (base + of.first);
+        });
+      }
+    }
     const T w = sqrt((b1 - x) * (x + b2));
-    return qS(x) + w / pi<T>() * (o1.K + o2.K);
+    return qS(x) + w / pi<T>() * Ks;
   }
 
   std::vector<sh_panel<T>> new_panels(const T &b1, const T &b2, int d1, int d2) const {
-    return build_panels(b1, b2, [&](const T &x) { return new_traction(x, b1, b2, d1, d2); });
+    kparts kp = make_kparts(b1, b2, d1, d2);
+    return build_panels(b1, b2, [&](const T &x) { return new_traction(x, kp); });
   }
   // the traction trac(x) on panels over (-b2, b1), cut at the state's cusps there
   template <class Fn> std::vector<sh_panel<T>> build_panels(const T &b1, const T &b2, const Fn &trac) const {
@@ -1221,6 +1562,7 @@ template <class T> class static_history {
         P.l = l;
         P.r = r;
         P.cusp_l = first && k > 0;
+        P.v.reserve(R.n());
         for (int j = 0; j < R.n(); ++j) {
           const T xl = (r - l) * R.sh[j] * R.sh[j], xr = (r - l) * R.ch[j] * R.ch[j];
           const T x = xl <= xr ? l + xl : r - xr;
@@ -1236,6 +1578,8 @@ template <class T> class static_history {
         out.push_back(std::move(P));
       }
     }
+    // the state changes next: the band nodes of this one are of no further use
+    clear_cache();
     return out;
   }
 
@@ -1250,19 +1594,10 @@ template <class T> class static_history {
     // coefficients of P_{n-1}, P_{n-2} in t
     T cm[2] = {0, 0};
     for (int j = 0; j < n; ++j) {
-      T p0 = 1, p1 = R.t[j];
-      for (int k = 2; k < n; ++k) {
-        const T p2 = (T(2 * k - 1) * R.t[j] * p1 - T(k - 1) * p0) / T(k);
-        p0 = p1;
-        p1 = p2;
-      }
-      // p1 = P_{n-1}, p0 = P_{n-2}
-      cm[0] += R.w[j] * v[j] * p1;
-      cm[1] += R.w[j] * v[j] * p0;
+      cm[0] += R.wp1[j] * v[j];
+      cm[1] += R.wp2[j] * v[j];
     }
-    cm[0] *= T(2 * (n - 1) + 1) / 2;
-    cm[1] *= T(2 * (n - 2) + 1) / 2;
-    return max(abs(cm[0]), abs(cm[1])) <= 1e3 * eps<T>() * scale;
+    return max(abs(cm[0]), abs(cm[1])) <= ptol_ * scale;
   }
 
   void check_limit(const std::vector<sh_panel<T>> &np) const {
@@ -1318,7 +1653,7 @@ template <class T> class static_history {
 
   // the Lagrange basis of the lambda rule at t (barycentric)
   void rbasis(const T &t, std::vector<T> &l) const {
-    const auto &R = *lrule_;
+    const auto &R = *rrule_;
     const int n = R.n();
     l.assign(n, T(0));
     T den = 0;
@@ -1357,7 +1692,7 @@ template <class T> class static_history {
     using std::max;
     using std::sin;
     using std::sqrt;
-    const auto &R = *lrule_;
+    const auto &R = *rrule_;
     const T pi_ = pi<T>();
     const T D = max(t - (Q.a + Q.L), T(0));
     T sum = 0;
@@ -1385,7 +1720,7 @@ template <class T> class static_history {
   T rlam(const rpanel &Q, const T &theta) const {
     using std::cos;
     using std::sin;
-    const auto &R = *lrule_;
+    const auto &R = *rrule_;
     const T pi_ = pi<T>();
     T s = 0;
     if (!(theta < pi_)) {
@@ -1408,7 +1743,7 @@ template <class T> class static_history {
     using std::max;
     using std::sin;
     using std::sqrt;
-    const auto &R = *lrule_;
+    const auto &R = *rrule_;
     const int n = R.n();
     const T pi_ = pi<T>();
     const auto gs = gauss_legendre<T>(32);
@@ -1447,7 +1782,7 @@ template <class T> class static_history {
     using boost::math::isfinite;
     using std::abs;
     using std::max;
-    const auto &R = *lrule_;
+    const auto &R = *rrule_;
     const int n = R.n();
     T scale = 0;
     for (const T &x : v) {
@@ -1503,7 +1838,8 @@ template <class T> class static_history {
     for (const T &c : cusps_in(-b2_, b1_)) brk.push_back(abs(c - xa0));
     std::sort(brk.begin(), brk.end());
 
-    const auto &R = *lrule_;
+    const auto &RR = *rrule_;  // the panels' rule
+    const auto &R = *lrule_;   // the pieces' (the segment's lambda rule)
     const int n = R.n();
     const T pi_ = pi<T>();
     std::vector<rpanel> P;
@@ -1573,7 +1909,7 @@ template <class T> class static_history {
       for (int j = 0; j < n; ++j) {
         const T t = Q.a + Lp * R.sh[j] * R.sh[j];
         const T tq = shdetail::tpar(Q.a, Q.a + Q.L, t);
-        const T ph = R.interp(Q.phi, tq);
+        const T ph = RR.interp(Q.phi, tq);
         const T c = ca + T(dirn) * t;
         const T b1 = c + e, b2 = e - c;
         check_slip_sign(d1, d2, A, B, c, e);
@@ -1614,7 +1950,7 @@ template <class T> class static_history {
             const T sh = std::sin(tt / 2), ch = std::cos(tt / 2);
             const T da = da_b + Lp * ch * ch, dr = dr_a + Lp * sh * sh;
             const T t = pa + Lp * sh * sh;
-            const T ph = R.interp(Q.phi, shdetail::tpar(Q.a, Q.a + Q.L, t));
+            const T ph = RR.interp(Q.phi, shdetail::tpar(Q.a, Q.a + Q.L, t));
             q += hw * gr->w[k] * Lp * sh * ch * kappa * sqrt(dr / da) * ph;
           }
         }
@@ -1641,7 +1977,7 @@ template <class T> class static_history {
     using std::sin;
     if (sg.dq == 0 && sg.ds == 0) return T(0);
     const T A = sg.dq / 2, B = sg.ds / 4;
-    const auto gr = gauss_legendre<T>(24);
+    const auto gr = gauss_legendre<T>(sorder_);
     const auto &R = *lrule_;
     const T pi_ = pi<T>();
     T h = 0;
@@ -1687,6 +2023,17 @@ template <class T> class static_history {
   pressure_ptr pm_;
   std::shared_ptr<const shdetail::trule<T>> rule_;
   std::shared_ptr<const shdetail::trule<T>> lrule_;
+  std::shared_ptr<const shdetail::trule<T>> rrule_;  // the receding phases' collocation (16 nodes)
+  std::shared_ptr<const gl_rule<T>> brule_;  // the band's graded theta intervals
+  std::shared_ptr<const shdetail::trule<T>> urule_;  // the band's ungraded pieces
+  int zorder_ = 32;                          // hist_zone_rate's Gauss order
+  int sorder_ = 24;                          // seg_slip's Gauss order
+  T ptol_ = T(1e3) * eps<T>();               // panel resolution (last Legendre coefficients)
+  T rtol_ = 0;                               // the accuracy asked (0: full)
+  // how far an end found at a lambda node may lie outside the one before (rounding, or at an
+  // accuracy asked the ends' own error, up to rtol) before the segment is not advancing-only
+  T mono_tol_ = T(1e3) * eps<T>();
+  mutable bcache bc_;
   std::vector<T> pbreaks_;
   std::vector<sh_panel<T>> panels_;
   std::vector<std::shared_ptr<const sh_segment<T>>> segs_;
