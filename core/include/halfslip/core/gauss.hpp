@@ -75,6 +75,15 @@ template <class T> std::shared_ptr<const gl_rule<T>> make_rule_wide(int n, int m
 // until the correction is below a few eps (quadratic convergence: one more
 // step then changes nothing). Running out of max_newton throws no_convergence.
 // Beyond long double (the reference backend's MPFR tiers), make_rule_wide.
+// the k-th node pair (x, -x) of an n-point rule, its weight from P_n'(x) = dp
+template <class T, class R> void store_node(R &r, int n, int k, const T &x, const T &dp) {
+  const T w = 2 / ((1 - x * x) * dp * dp);
+  r.x[n - k] = x;
+  r.w[n - k] = w;
+  r.x[k - 1] = -x;
+  r.w[k - 1] = w;
+}
+
 template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n, int max_newton = 100) {
   using std::abs;
   using std::cos;
@@ -105,11 +114,7 @@ template <class T> std::shared_ptr<const gl_rule<T>> make_rule(int n, int max_ne
     // final derivative at the converged node
     legendre_pair(n, x, p1, p0);
     dp = T(n) * (x * p1 - p0) / (x * x - 1);
-    const T w = 2 / ((1 - x * x) * dp * dp);
-    r->x[n - k] = x;
-    r->w[n - k] = w;
-    r->x[k - 1] = -x;
-    r->w[k - 1] = w;
+    store_node(*r, n, k, x, dp);
   }
   if (n % 2 == 1) r->x[n / 2] = 0;
   return r;
@@ -175,11 +180,7 @@ template <class T> std::shared_ptr<const gl_rule<T>> make_rule_wide(int n, int m
     check_iterations(it, max_newton, "Gauss-Legendre nodes: Newton iteration on P_n did not converge");
     eval(x);
     dp = T(n) * (x * p1 - p0) / (x * x - 1);
-    const T w = 2 / ((1 - x * x) * dp * dp);
-    r->x[n - k] = x;
-    r->w[n - k] = w;
-    r->x[k - 1] = -x;
-    r->w[k - 1] = w;
+    store_node(*r, n, k, x, dp);
   }
   if (n % 2 == 1) r->x[n / 2] = 0;
   return r;

@@ -121,10 +121,10 @@ template <class T> struct sh_panel {
 };
 
 namespace shdetail {
-// the traction of a state on its stick panels (sorted, contiguous over the stick zone)
+// the traction of a state on its stick panels (sorted, contiguous over the stick zone), given
+// the pressure there (an analytic panel is a multiple of it)
 template <class T>
-T panels_value(const std::vector<sh_panel<T>> &panels, const pressure_model<T> &pm, const trule<T> &rule,
-               const T &x) {
+T panels_value_p(const std::vector<sh_panel<T>> &panels, const trule<T> &rule, const T &x, const T &px) {
   size_t lo = 0, hi = panels.size();
   while (hi - lo > 1) {
     const size_t m = (lo + hi) / 2;
@@ -132,8 +132,13 @@ T panels_value(const std::vector<sh_panel<T>> &panels, const pressure_model<T> &
     else hi = m;
   }
   const auto &P = panels[lo];
-  if (P.analytic) return P.c * pm.p(x);
+  if (P.analytic) return P.c * px;
   return rule.interp(P.v, tpar(P.l, P.r, x));
+}
+template <class T>
+T panels_value(const std::vector<sh_panel<T>> &panels, const pressure_model<T> &pm, const trule<T> &rule,
+               const T &x) {
+  return panels_value_p(panels, rule, x, pm.p(x));
 }
 
 // PV int over the pieces [cuts_k, cuts_k+1] of f(eta) / (eta - x), x inside [cuts.front(),
@@ -467,6 +472,7 @@ template <class T> class static_history {
     nx.advance(dq, ds);
     nx.q_ = qn;  // the vertex exactly (q_ + (qn - q_) may round away from qn)
     nx.s_ = sn;
+    nx.clear_cache();  // (the committed state is shared read-only: no cache travels with it)
     *this = std::move(nx);
   }
 
@@ -601,15 +607,7 @@ template <class T> class static_history {
   T qS_p(const T &x, const T &px) const {
     if (x > b1_) return T(s1_) * px;
     if (x < -b2_) return T(s2_) * px;
-    size_t lo = 0, hi = panels_.size();
-    while (hi - lo > 1) {
-      const size_t m = (lo + hi) / 2;
-      if (panels_[m].l <= x) lo = m;
-      else hi = m;
-    }
-    const auto &P = panels_[lo];
-    if (P.analytic) return P.c * px;
-    return rule_->interp(P.v, shdetail::tpar(P.l, P.r, x));
+    return shdetail::panels_value_p(panels_, *rule_, x, px);
   }
 
   // the band cache: per state (checked by a signature of the state's traction: the cache is
@@ -965,7 +963,7 @@ template <class T> class static_history {
           const T bi = i == 1 ? b1_ : b2_;
           if (es >= e && 2 * es - bo < 1) {
             const T bn = 2 * es - bo;
-            if (bn > bi) stick_part(i, bn);
+            if (bn > bi + T(64) * eps<T>() * (1 + bi)) stick_part(i, bn);
             rec = i;
             continue;
           }
@@ -1338,8 +1336,14 @@ template <class T> class static_history {
       else lo = mid;
     }
     if (!good(hi) || !(abs(o[0] - lc) <= T(1e-8) * (1 + abs(lc)))) return false;
-    o[0] = lc;
-    out = o;
+    // the ends at the fold's load itself where Newton finds them from there (the bisection leaves
+    // the target's load within 1e-8; next to a cusp Newton may not converge, and the target is kept)
+    T x1 = o[1], x2 = o[2];
+    if (solve(x1, x2, d1, d2, dq * lc, ds * lc) && x1 <= (i == 1 ? bi : pt[1]) && x2 <= (i == 2 ? bi : pt[2]) &&
+        abs(x1 - o[1]) + abs(x2 - o[2]) <= T(1e-6) * width)
+      out = {{lc, x1, x2}};
+    else
+      out = {{lc, o[1], o[2]}};
     return true;
   }
 
@@ -1777,8 +1781,9 @@ template <class T> class static_history {
     return pn;
   }
 
-  // phi resolved on its panel: the last two Legendre coefficients in theta against max |phi|
-  bool rresolved(const std::vector<T> &v) const {
+  // phi's resolution on its panel: its last two Legendre coefficients in theta over max |phi|
+  // (infinite where phi is not finite)
+  T rtail(const std::vector<T> &v) const {
     using boost::math::isfinite;
     using std::abs;
     using std::max;
@@ -1786,7 +1791,7 @@ template <class T> class static_history {
     const int n = R.n();
     T scale = 0;
     for (const T &x : v) {
-      if (!isfinite(x)) return false;
+      if (!isfinite(x)) return std::numeric_limits<T>::infinity();
       scale = max(scale, abs(x));
     }
     T cm[2] = {0, 0};
@@ -1802,7 +1807,7 @@ template <class T> class static_history {
     }
     cm[0] *= T(2 * (n - 1) + 1) / 2;
     cm[1] *= T(2 * (n - 2) + 1) / 2;
-    return max(abs(cm[0]), abs(cm[1])) <= T(1e5) * eps<T>() * scale;
+    return scale > 0 ? max(abs(cm[0]), abs(cm[1])) / scale : T(0);
   }
 
   // The receding phase from lam0 (the current state, with e = e* for end rec) towards lambda =
@@ -1846,7 +1851,8 @@ template <class T> class static_history {
     T tau = 0, lam = lam0, Lcap = tmax, tauf = 0;
     bool closed = false;
     for (size_t guard = 0;; ++guard) {
-      if (guard > 4000) throw error(status::not_applicable, "static_history: the receding phase needs too many panels");
+      // (each panel costs the panels before it: the work grows like their number squared)
+      if (guard > 400) throw error(status::not_applicable, "static_history: the receding phase needs too many panels");
       T nb = tmax;
       for (const T &b : brk)
         if (b > tau * (1 + T(1e3) * eps<T>()) + T(1e3) * eps<T>()) {
@@ -1854,15 +1860,32 @@ template <class T> class static_history {
           break;
         }
       T L = min(nb - tau, Lcap);
-      rpanel pn;
+      // Halve the panel until phi's Legendre tail is below 1e5 eps. G = d p - q_S carries the
+      // state's panel noise (1e3 eps of the traction), which the Abel inversion divides by
+      // sqrt(L): on a short slide the tail can stall above that, and halving makes it worse.
+      // So the panel whose tail stopped falling (by at least 2 per halving) is taken if it is
+      // below 1e-10 (an error in lambda of that order, far below any rtol asked).
+      rpanel pn, best;
+      T tbest = std::numeric_limits<T>::infinity(), tprev = tbest;
       for (int tries = 0;; ++tries) {
-        if (tries > 60 || !(L > T(64) * eps<T>() * (1 + tau)))
+        if (tries > 40 || !(L > T(64) * eps<T>() * (1 + tau)))
           throw error(status::not_applicable, "static_history: the slide of a receding phase is not resolved");
         const T b = L == nb - tau ? nb : tau + L;
         pn = rsolve_panel(P, tau, b - tau, lam, e, rhs);
-        if (rresolved(pn.phi)) break;
+        const T tl = rtail(pn.phi);
+        if (tl <= T(1e5) * eps<T>()) break;
+        if (tl < tbest) {
+          tbest = tl;
+          best = pn;
+        }
+        if (!(tl < tprev / 2) && tbest <= T(1e-10)) {
+          pn = best;
+          break;
+        }
+        tprev = tl;
         L /= 2;
       }
+      L = pn.L;
       for (const T &v : pn.phi)
         if (!(v > 0)) throw error(status::not_applicable, "static_history: the advancing end stalls in a receding phase");
       const T lb = lam + rlam(pn, pi_);
@@ -1878,6 +1901,12 @@ template <class T> class static_history {
         const T sh = std::sin(hi / 2);
         tauf = min(pn.a + pn.L * sh * sh, pend);
         P.push_back(std::move(pn));
+        // the receding zone closes at the vertex itself (to rounding): it sticks whole there
+        if (!(tclose - tauf > T(64) * eps<T>() * (1 + tclose)) && !(tmax < tclose)) {
+          tauf = tclose;
+          closed = true;
+          lam = T(1);
+        }
         break;
       }
       P.push_back(std::move(pn));
@@ -1893,7 +1922,7 @@ template <class T> class static_history {
       lam = lb;
       Lcap = 2 * P.back().L;
     }
-    const T lam_end = closed ? lam : T(1);
+    const T lam_end = closed ? std::min(lam, T(1)) : T(1);
 
     // pieces (lambda-rule nodes over each panel, the last cut at tauf) and energies
     std::vector<sh_piece<T>> pieces;
