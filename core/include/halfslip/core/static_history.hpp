@@ -40,11 +40,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
 
 #include <Eigen/Dense>
+#include <boost/math/tools/roots.hpp>
 
 #include "gauss.hpp"
 #include "history_rates.hpp"
@@ -1431,6 +1433,44 @@ template <class T> class static_history {
     if (a != b) {
       if (b == c0) fb = f0;
       const bool sb = fb > 0;
+      // TOMS 748 (Boost) for the root first: where Phi is clearly of b's sign just outside it (no
+      // flat region), the bisection below only confirms it in the narrowed bracket; else the
+      // bisection goes on from the root outwards (the crossing search was most of the solves'
+      // residual evaluations, bisecting to 2 eps)
+      {
+        const T fa = F(a);
+        if ((fa > 0) != sb && fa != 0) {
+          std::uintmax_t iters = 100;
+          const auto rt = boost::math::tools::toms748_solve(
+              [&](const T &x) { return F(x); }, a, b, fa, fb,
+              boost::math::tools::eps_tolerance<T>(std::numeric_limits<T>::digits - 3), iters);
+          if (iters < 100 && rt.first >= a && rt.second <= b) {
+            // (the predicate's boundary lies within 1e3 eps outside a root that is not flat)
+            const T out = rt.second + T(1e3) * eps<T>() * (1 + abs(rt.second));
+            const T fo = out < b ? F(out) : fb;
+            if (out < b && (fo > 0) == sb && abs(fo) > noise) {
+              a = b = out;  // done: b has Phi of its sign, clearly
+            } else {
+              // a flat region (a Masing return): its outer end is a cusp of the start state, the
+              // end position of the earlier zone restored; taken where Phi is clearly of b's sign
+              // just outside it (else the bisection finds the region's end)
+              a = rt.first;
+              T bc = b;
+              bool have = false;
+              const T plo = i == 1 ? -b : rt.second, phi_ = i == 1 ? -rt.second : b;
+              for (const T &c : cusps_in(plo, phi_)) {
+                const T v = i == 1 ? -c : c;
+                if (v > rt.second && v < bc) bc = v, have = true;
+              }
+              if (have) {
+                const T o2 = bc + T(1e3) * eps<T>() * (1 + abs(bc));
+                const T f2 = o2 < b ? F(o2) : fb;
+                if (o2 < b && (f2 > 0) == sb && abs(f2) > noise) a = b = o2;
+              }
+            }
+          }
+        }
+      }
       for (int it = 0; it < 200 && b - a > 2 * eps<T>() * (1 + abs(a)); ++it) {
         const T mid = a + (b - a) / 2;
         if (!(mid > a && mid < b)) break;
