@@ -123,10 +123,14 @@ template <class T> struct sh_panel {
 };
 
 namespace shdetail {
-// the traction of a state on its stick panels (sorted, contiguous over the stick zone), given
-// the pressure there (an analytic panel is a multiple of it)
-template <class T>
-T panels_value_p(const std::vector<sh_panel<T>> &panels, const trule<T> &rule, const T &x, const T &px) {
+// The traction of a state at x: s_i p in a slip zone, else its stick panels (sorted,
+// contiguous over the stick zone; an analytic panel is a multiple of p). pf() gives p(x), called
+// only where it is needed (one pressure evaluation a band node, where the caller has it).
+template <class T, class PF>
+T state_traction(const std::vector<sh_panel<T>> &panels, const trule<T> &rule, const T &b1, const T &b2, int s1,
+                 int s2, const T &x, const PF &pf) {
+  if (x > b1) return T(s1) * pf();
+  if (x < -b2) return T(s2) * pf();
   size_t lo = 0, hi = panels.size();
   while (hi - lo > 1) {
     const size_t m = (lo + hi) / 2;
@@ -134,13 +138,8 @@ T panels_value_p(const std::vector<sh_panel<T>> &panels, const trule<T> &rule, c
     else hi = m;
   }
   const auto &P = panels[lo];
-  if (P.analytic) return P.c * px;
+  if (P.analytic) return P.c * pf();
   return rule.interp(P.v, tpar(P.l, P.r, x));
-}
-template <class T>
-T panels_value(const std::vector<sh_panel<T>> &panels, const pressure_model<T> &pm, const trule<T> &rule,
-               const T &x) {
-  return panels_value_p(panels, rule, x, pm.p(x));
 }
 
 // PV int over the pieces [cuts_k, cuts_k+1] of f(eta) / (eta - x), x inside [cuts.front(),
@@ -189,9 +188,7 @@ template <class T> struct sh_start {
   int s1 = 0, s2 = 0;
 
   T traction(const T &x) const {
-    if (x > b1) return T(s1) * pm->p(x);
-    if (x < -b2) return T(s2) * pm->p(x);
-    return shdetail::panels_value(panels, *pm, *rule, x);
+    return shdetail::state_traction(panels, *rule, b1, b2, s1, s2, x, [&] { return pm->p(x); });
   }
   // the cuts of (lo, hi): its ends and the cusps inside, plus x if it lies inside, with cuts
   // graded away from x at multiples of its distance to the nearer end (where the integrand
@@ -233,13 +230,11 @@ template <class T> struct sh_start {
     const T X = x > e1 ? sqrt((x - e1) * (x + e2)) : -sqrt((e1 - x) * (-e2 - x));
     return -2 / pi<T>() * X * K;
   }
-  // dh(x): the integral of dh' from the stick end of x's zone (0 on the stick zone)
-  T dh(const T &x, const T &e1, const T &e2, int d1, int d2) const {
+  // the integral of f over the pieces between the cuts c, by 24-point Gauss-Legendre in theta
+  // on each (x = l + L sin^2(theta/2): square-root behaviour at every cut)
+  template <class F> static T theta_int(const std::vector<T> &c, const F &f) {
     using std::cos;
     using std::sin;
-    if (x <= e1 && x >= -e2) return T(0);
-    const T lo = x > e1 ? e1 : x, hi = x > e1 ? x : -e2;
-    const auto c = cuts(lo, hi, nullptr);
     const auto gr = gauss_legendre<T>(24);
     const T pi_ = pi<T>();
     T s = 0;
@@ -247,53 +242,36 @@ template <class T> struct sh_start {
       const T l = c[k], L = c[k + 1] - l;
       for (size_t j = 0; j < gr->x.size(); ++j) {
         const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
-        s += pi_ / 2 * gr->w[j] * L * sh * ch * dhp(l + L * sh * sh, e1, e2, d1, d2);
+        s += pi_ / 2 * gr->w[j] * L * sh * ch * f(l + L * sh * sh);
       }
     }
+    return s;
+  }
+  // dh(x): the integral of dh' from the stick end of x's zone (0 on the stick zone)
+  T dh(const T &x, const T &e1, const T &e2, int d1, int d2) const {
+    if (x <= e1 && x >= -e2) return T(0);
+    const T lo = x > e1 ? e1 : x, hi = x > e1 ? x : -e2;
+    const T s = theta_int(cuts(lo, hi, nullptr), [&](const T &xi) { return dhp(xi, e1, e2, d1, d2); });
     return x > e1 ? s : -s;
   }
   // the energy dissipated in zone i by the slip dh of the state: d_i int_band p dh dx =
   // d_i int_band Pbar dh' (Pbar: the pressure's integral from the point to the edge)
   T energy(int i, const T &e1, const T &e2, int d1, int d2) const {
-    using std::cos;
-    using std::sin;
     const int d = i == 1 ? d1 : d2;
     if (d == 0) return T(0);
     const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
     if (!(hi > lo)) return T(0);
-    std::vector<T> c = cuts(lo, hi, nullptr);
-    for (const auto &bp : pm->breakpoints())
-      if (bp.x > lo && bp.x < hi) c.push_back(bp.x);
-    std::sort(c.begin(), c.end());
-    c.erase(std::unique(c.begin(), c.end()), c.end());
-    const auto gr = gauss_legendre<T>(24);
-    const T pi_ = pi<T>();
-    auto pbar = [&](const T &xi) {  // int from xi to the edge of p
-      T s = 0;
+    auto pbar = [&](const T &xi) {  // int from xi to the edge of p, cut at the pressure's breakpoints
       const T a = i == 1 ? xi : T(-1), b = i == 1 ? T(1) : xi;
       std::vector<T> pcs{a};
       for (const auto &bp : pm->breakpoints())
         if (bp.x > a && bp.x < b) pcs.push_back(bp.x);
       pcs.push_back(b);
       std::sort(pcs.begin(), pcs.end());
-      for (size_t k = 0; k + 1 < pcs.size(); ++k) {
-        const T l = pcs[k], L = pcs[k + 1] - l;
-        for (size_t j = 0; j < gr->x.size(); ++j) {
-          const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
-          s += pi_ / 2 * gr->w[j] * L * sh * ch * pm->p(l + L * sh * sh);
-        }
-      }
-      return s;
+      return theta_int(pcs, [&](const T &x) { return pm->p(x); });
     };
-    T s = 0;
-    for (size_t k = 0; k + 1 < c.size(); ++k) {
-      const T l = c[k], L = c[k + 1] - l;
-      for (size_t j = 0; j < gr->x.size(); ++j) {
-        const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
-        const T xi = l + L * sh * sh;
-        s += pi_ / 2 * gr->w[j] * L * sh * ch * pbar(xi) * dhp(xi, e1, e2, d1, d2);
-      }
-    }
+    // (cusps holds the pressure's breakpoints)
+    const T s = theta_int(cuts(lo, hi, nullptr), [&](const T &xi) { return pbar(xi) * dhp(xi, e1, e2, d1, d2); });
     // zone 2: dh' integrates to dh from the end leftwards with dh = -int, so p dh = Pbar (-dh')
     return T(d) * (i == 1 ? s : -s);
   }
@@ -481,11 +459,8 @@ template <class T> class static_history {
  private:
   // ---- state traction --------------------------------------------------------
   T qS(const T &x) const {
-    if (x > b1_) return T(s1_) * pm_->p(x);
-    if (x < -b2_) return T(s2_) * pm_->p(x);
-    return panel_value(x);
+    return shdetail::state_traction(panels_, *rule_, b1_, b2_, s1_, s2_, x, [&] { return pm_->p(x); });
   }
-  T panel_value(const T &x) const { return shdetail::panels_value(panels_, *pm_, *rule_, x); }
 
   std::vector<sh_panel<T>> split_at_breaks(std::vector<sh_panel<T>> in) const {
     std::vector<sh_panel<T>> out;
@@ -607,9 +582,7 @@ template <class T> class static_history {
   // q_S at x given p(x) (the slip zones and the analytic panels are multiples of it: one
   // evaluation of the pressure a band node, not two)
   T qS_p(const T &x, const T &px) const {
-    if (x > b1_) return T(s1_) * px;
-    if (x < -b2_) return T(s2_) * px;
-    return shdetail::panels_value_p(panels_, *rule_, x, px);
+    return shdetail::state_traction(panels_, *rule_, b1_, b2_, s1_, s2_, x, [&] { return px; });
   }
 
   // the band cache: per state (checked by a signature of the state's traction: the cache is
