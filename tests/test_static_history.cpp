@@ -9,12 +9,16 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <random>
+#include <utility>
+#include <vector>
 
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/history.hpp"
 #include "halfslip/core/history_fields.hpp"
 #include "halfslip/core/static_history.hpp"
+#include "halfslip/reference/bem_history.hpp"
 #include "halfslip/reference/reversal_oracle.hpp"
 
 using namespace hs::core;
@@ -486,5 +490,105 @@ TEST_CASE("static history: an rtol-driven solve agrees with the full-accuracy on
         CHECK(eh <= rtol);
       }
     }
+  }
+}
+
+// Both ends reach their turning points at the same load (Hertz, sigma = 0: a symmetric reload past
+// the last maximum). Each end then sweeps its own Masing region, and past the maximum the state
+// is the monotonic one, c = sqrt(1 - Q/fP) (the memory is erased). Found on a random walk
+// (bench_history's seed 6), where the static solve failed.
+TEST_CASE("static history: both ends return to their turning points at once (symmetric reload)") {
+  const double path[][2] = {{0.1342428229208705, 0}, {0.0035192051702706839, 0}, {0.14902785051300274, 0}};
+  static_history<double> h(hertz_pm());
+  for (const auto &p : path) h.add_vertex(p[0], p[1]);
+  const double c = std::sqrt(1 - path[2][0]);
+  CHECK(std::fabs(h.b1() - c) <= 64 * eps<double>());
+  CHECK(std::fabs(h.b2() - c) <= 64 * eps<double>());
+  CHECK(h.dir1() == 1);
+  CHECK(h.dir2() == 1);
+  // the reload's energy: per zone, the Masing reload to the old maximum (the unloading's energy,
+  // by symmetry of the 2f superposition) plus the monotonic energy from the maximum on
+  const auto m1 = mono(path[0][0], 0), m2 = mono(path[2][0], 0);
+  const double Eun = h.segment(1).E1, Ere = h.last_segment().E1;
+  CHECK(std::fabs(h.last_segment().E2 - Ere) <= 1e-13);
+  CHECK(std::fabs(Ere - (Eun + m2.energy(1) - m1.energy(1))) <= 1e-10 * m2.energy(1));
+}
+
+namespace {
+// The static solves and the independent BEM (reference/bem_history.hpp) along a path: ends within
+// 0.5 element widths of the BEM's cosine mesh (its accuracy, tests/test_bem_history.cpp), the same
+// slip directions (where the zone is longer than an element), and the energy of every segment within
+// 1e-3 of the path's largest (the BEM's energies are first order in its step: 5.6e-4 at N = 400).
+void check_against_bem(const std::shared_ptr<const pressure_model<double>> &pm,
+                       const std::vector<std::pair<double, double>> &path, int N = 400) {
+  static_history<double> h(pm);
+  std::vector<std::array<double, 6>> st;
+  for (const auto &p : path) {
+    h.add_vertex(p.first, p.second);
+    st.push_back({h.b1(), h.b2(), double(h.dir1()), double(h.dir2()), h.last_segment().E1, h.last_segment().E2});
+  }
+  hs::reference::bem::options o;
+  o.nodes = o.steps_per_unit = N;
+  const auto r = hs::reference::bem::run([&](double x) { return pm->p(x); }, path, o);
+  double Emax = 0;
+  for (const auto &x : st) Emax = std::max({Emax, x[4], x[5]});
+  for (size_t k = 0; k < path.size(); ++k) {
+    CAPTURE(k);
+    const double bb[2] = {r[k].b1, r[k].b2}, EB[2] = {r[k].energy1, r[k].energy2};
+    const int db[2] = {r[k].dir1, r[k].dir2};
+    for (int i = 0; i < 2; ++i) {
+      CAPTURE(i);
+      const double b = st[k][i];
+      const double width = 3.141592653589793 / N * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (N * N);
+      CHECK(std::fabs(b - bb[i]) <= 0.5 * width);
+      if (1 - b > 2 * width) CHECK(int(st[k][2 + i]) == db[i]);
+      CHECK(std::fabs(st[k][4 + i] - EB[i]) <= 1e-3 * Emax);
+    }
+  }
+}
+}  // namespace
+
+// A reopened zone lands on a memory point behind which the traction is just short of the limit
+// (bench_history's random walk, seed 3): the path folds, and on the way back to the fold's load the
+// other end's root lies just OUTSIDE its value at the fold (it moved by 2.7e-3 a), where the
+// crossing search looked only inwards and the segment failed. The jump lands on the monotonic
+// state (sigma = 0, every memory erased): c = sqrt(1 - Q/fP) exactly; and the BEM agrees on the way.
+TEST_CASE("static history: a fold whose path back runs outside the other end (against the BEM)") {
+  const std::vector<std::pair<double, double>> path{{-0.128782535864683, 0.10198471274050987},
+                                                    {-0.24238396206579382, 0.12277811047753615},
+                                                    {-0.26126537997732058, 0},
+                                                    {-0.39907615870282276, 0}};
+  static_history<double> h(hertz_pm());
+  for (const auto &p : path) h.add_vertex(p.first, p.second);
+  CHECK(h.last_segment().jumps.size() == 1);
+  const double c = std::sqrt(1 + path[3].first);
+  CHECK(std::fabs(h.b1() - c) <= 1e-12);
+  CHECK(std::fabs(h.b2() - c) <= 1e-12);
+  // the fold inside the segment: cut the last segment into 10 vertices, each against the BEM
+  std::vector<std::pair<double, double>> cut(path.begin(), path.end() - 1);
+  for (int k = 1; k <= 10; ++k)
+    cut.push_back({path[2].first + (path[3].first - path[2].first) * k / 10, 0.0});
+  check_against_bem(hertz_pm(), cut);
+}
+
+// Random non-proportional walks (bench_history's, |Q/fP| <= 0.5, sigma/fp0 in [0, 1.2]) as far as
+// the static solves take them (seed 6: 40 vertices, seed 7: 69; both stop at a fold where the
+// other end would recede), against the BEM, Hertz and the flat punch.
+TEST_CASE("static history: random walks against the BEM (Hertz and flat punch)") {
+  auto walk = [](unsigned seed, size_t n) {
+    std::mt19937 g(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::vector<std::pair<double, double>> p;
+    double q = 0, s = 0;
+    for (size_t i = 0; i < n; ++i) {
+      q = std::max(-0.5, std::min(0.5, q + 0.15 * u(g)));
+      s = std::max(0.0, std::min(1.2, s + 0.15 * u(g)));
+      p.emplace_back(q, s);
+    }
+    return p;
+  };
+  SUBCASE("Hertz, seed 6, 40 vertices") { check_against_bem(hertz_pm(), walk(6, 40)); }
+  SUBCASE("flat punch b_f/a = 0.5, seed 4, 46 vertices") {
+    check_against_bem(std::make_shared<flat_rounded_pressure<double>>(0.5), walk(4, 46));
   }
 }

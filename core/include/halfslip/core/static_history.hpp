@@ -1083,35 +1083,43 @@ template <class T> class static_history {
         // Masing: beyond the point the traction may be at the limit with the zone's new sign
         // (an earlier slip zone of that sign, restored), g = 0 there, and the band sums do not
         // change while the end moves through it. The end then sweeps it at constant load, to
-        // the next cusp inwards (the zero-load sweep of the march's pass_memory).
-        for (size_t sw = 0; sw < cus.size(); ++sw) {
+        // the next cusp inwards (the zero-load sweep of the march's pass_memory). Both ends may
+        // stand on cusps at once (a symmetric return: each reaches its own turning point at the
+        // same load), and each then sweeps its own region.
+        for (size_t sw = 0; sw < 2 * cus.size() + 2; ++sw) {
           const auto &pt = ev.back();
-          const int i = evi.back();
-          T mn = 0;
-          bool have = false;
-          for (const T &c : cus) {
+          bool swept = false;
+          for (int pass = 0; pass < 2 && !swept; ++pass) {
+            const int i = pass == 0 ? evi.back() : 3 - evi.back();
             const T bpos = i == 1 ? pt[1] : -pt[2];
-            if (i == 1 && c < bpos && c > -pt[2] && (!have || c > mn)) mn = c, have = true;
-            if (i == 2 && c > bpos && c < pt[1] && (!have || c < mn)) mn = c, have = true;
+            if (pass == 1 && !std::binary_search(cus.begin(), cus.end(), bpos)) continue;  // not on a cusp
+            T mn = 0;
+            bool have = false;
+            for (const T &c : cus) {
+              if (i == 1 && c < bpos && c > -pt[2] && (!have || c > mn)) mn = c, have = true;
+              if (i == 2 && c > bpos && c < pt[1] && (!have || c < mn)) mn = c, have = true;
+            }
+            if (!have) continue;
+            const T bn = i == 1 ? mn : -mn;  // the end's value at the next cusp
+            const T bc = i == 1 ? pt[1] : pt[2];
+            auto Fat = [&](const T &bi) {
+              return i == 1 ? residual(bi, pt[2], d1, d2, T(0), T(0)) : residual(pt[1], bi, d1, d2, T(0), T(0));
+            };
+            const auto f0 = Fat(bc);
+            const T sc = 1 + std::abs(f0[0]) + std::abs(f0[1]);
+            bool flat = true;
+            for (int q = 1; q <= 3 && flat; ++q) {
+              const auto f = Fat(bc + (bn - bc) * T(q) / 4);
+              flat = std::abs(f[0] - f0[0]) + std::abs(f[1] - f0[1]) <= T(1e4) * eps<T>() * sc;
+            }
+            if (!flat) continue;
+            std::array<T, 3> np = pt;
+            (i == 1 ? np[1] : np[2]) = bn;
+            ev.push_back(np);
+            evi.push_back(i);
+            swept = true;
           }
-          if (!have) break;
-          const T bn = i == 1 ? mn : -mn;  // the end's value at the next cusp
-          const T bc = i == 1 ? pt[1] : pt[2];
-          auto Fat = [&](const T &bi) {
-            return i == 1 ? residual(bi, pt[2], d1, d2, T(0), T(0)) : residual(pt[1], bi, d1, d2, T(0), T(0));
-          };
-          const auto f0 = Fat(bc);
-          const T sc = 1 + std::abs(f0[0]) + std::abs(f0[1]);
-          bool flat = true;
-          for (int q = 1; q <= 3 && flat; ++q) {
-            const auto f = Fat(bc + (bn - bc) * T(q) / 4);
-            flat = std::abs(f[0] - f0[0]) + std::abs(f[1] - f0[1]) <= T(1e4) * eps<T>() * sc;
-          }
-          if (!flat) break;
-          std::array<T, 3> np = pt;
-          (i == 1 ? np[1] : np[2]) = bn;
-          ev.push_back(np);
-          evi.push_back(i);
+          if (!swept) break;
         }
         // A fold: just inside the point the path's lambda falls back (the region beyond is close
         // to the friction limit with the zone's sign: a near-Masing return). The ends jump at this
@@ -1293,9 +1301,11 @@ template <class T> class static_history {
     if (!(width > 0)) return false;
     const T lc = pt[0];
     std::array<T, 3> o;
-    auto good = [&](const T &d) { return end_driven(i, bi - d, pt, d1, d2, dq, ds, o) && o[0] >= lc; };
+    // (the other end's root on either side of its value at pt: on the way back to pt's load it
+    // may lie outside it, e.g. while end i sweeps a region just short of the limit)
+    auto good = [&](const T &d) { return end_driven(i, bi - d, pt, d1, d2, dq, ds, o, true) && o[0] >= lc; };
     const T d0 = max(T(1e-9) * width, T(1e4) * eps<T>());
-    if (end_driven(i, bi - d0, pt, d1, d2, dq, ds, o) && o[0] > lc) return false;
+    if (end_driven(i, bi - d0, pt, d1, d2, dq, ds, o, true) && o[0] > lc) return false;
     T lo = d0, hi = 0;  // lambda below lc (or no path) at lo, back at hi
     for (T d = 2 * d0; d < width; d *= 2) {
       if (good(d)) {
@@ -1311,6 +1321,10 @@ template <class T> class static_history {
       else lo = mid;
     }
     if (!good(hi) || !(abs(o[0] - lc) <= T(1e-8) * (1 + abs(lc)))) return false;
+    // the other end may only advance (or stay) over the jump: a target with it outside its value
+    // at pt would need that end to recede at the fold, which no phase models
+    if ((i == 1 ? o[2] : o[1]) > bo + T(1e-9) * width)
+      throw error(status::not_applicable, "static_history: a fold at which the other stick-zone end would recede");
     // the ends at the fold's load itself where Newton finds them from there (the bisection leaves
     // the target's load within 1e-8; next to a cusp Newton may not converge, and the target is kept)
     T x1 = o[1], x2 = o[2];
@@ -1357,7 +1371,7 @@ template <class T> class static_history {
   // cur (the ends advance), from the rounding level up; else within rounding outwards (cur is
   // itself a root to rounding). False if there is none before the stick zone closes.
   bool end_driven(int i, const T &m, const std::array<T, 3> &cur, int d1, int d2, const T &dq, const T &ds,
-                  std::array<T, 3> &out) const {
+                  std::array<T, 3> &out, bool outwards = false) const {
     using std::abs;
     using std::max;
     const T pi_ = pi<T>();
@@ -1376,7 +1390,31 @@ template <class T> class static_history {
     T a = 0, b = 0, fb = 0;
     bool br = f0 == 0;
     if (br) a = b = c0;
-    {
+    if (outwards && !br) {
+      // the root nearest c0 on either side (the branch through cur, followed by fold_jump)
+      T in = c0, fin = f0, out = c0, fout = f0;
+      for (T d = max(T(1e-13), T(1e-10) * (c0 - loB)); !br; d *= 4) {
+        bool any = false;
+        const T xi = c0 - d;
+        if (xi > loB && xi < in) {
+          any = true;
+          const T f = F(xi);
+          if ((f > 0) != (fin > 0) || f == 0) a = xi, b = in, fb = fin, br = true;
+          in = xi;
+          fin = f;
+        }
+        const T xo = std::min(T(1), c0 + d);
+        if (!br && xo > out) {
+          any = true;
+          const T f = F(xo);
+          if ((f > 0) != (fout > 0) || f == 0) a = out, b = xo, fb = f, br = true;
+          out = xo;
+          fout = f;
+        }
+        if (!any) break;
+      }
+    }
+    if (!outwards) {
       T hiv = c0, fhi = f0;
       for (T d = max(T(1e-13), T(1e-10) * (c0 - loB)); !br; d *= 4) {
         T xi = c0 - d;
@@ -1389,7 +1427,7 @@ template <class T> class static_history {
         if (hiv - loB < 64 * eps<T>()) break;
       }
     }
-    if (!br)
+    if (!br && !outwards)
       for (T d = T(1e-13); d <= T(1e-8) * (c0 - loB) && !br; d *= 4) {
         const T xo = c0 + d;
         if (!(xo <= 1)) break;
