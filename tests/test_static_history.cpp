@@ -571,9 +571,9 @@ TEST_CASE("static history: a fold whose path back runs outside the other end (ag
   check_against_bem(hertz_pm(), cut);
 }
 
-// Random non-proportional walks (bench_history's, |Q/fP| <= 0.5, sigma/fp0 in [0, 1.2]) as far as
-// the static solves take them (seed 6: 40 vertices, seed 7: 69; both stop at a fold where the
-// other end would recede), against the BEM, Hertz and the flat punch.
+// Random non-proportional walks of 100 vertices (bench_history's, |Q/fP| <= 0.5, sigma/fp0 in
+// [0, 1.2]), which the static solves now take whole (before: 7 and 2 vertices; folds at which the
+// other end moves out on the way back, symmetric returns), against the BEM, Hertz and the flat punch.
 TEST_CASE("static history: random walks against the BEM (Hertz and flat punch)") {
   auto walk = [](unsigned seed, size_t n) {
     std::mt19937 g(seed);
@@ -587,8 +587,8 @@ TEST_CASE("static history: random walks against the BEM (Hertz and flat punch)")
     }
     return p;
   };
-  SUBCASE("Hertz, seed 6, 40 vertices") { check_against_bem(hertz_pm(), walk(6, 40)); }
-  SUBCASE("flat punch b_f/a = 0.5, seed 4, 46 vertices") {
-    check_against_bem(std::make_shared<flat_rounded_pressure<double>>(0.5), walk(4, 46));
+  SUBCASE("Hertz, seed 1") { check_against_bem(hertz_pm(), walk(1, 100)); }
+  SUBCASE("flat punch b_f/a = 0.5, seed 7") {
+    check_against_bem(std::make_shared<flat_rounded_pressure<double>>(0.5), walk(7, 100));
   }
 }

@@ -1024,6 +1024,9 @@ template <class T> class static_history {
     std::vector<std::array<T, 3>> ev{{{T(0), b1_, b2_}}};
     std::vector<int> evi{0};  // the end on the cusp at each event (0: none, lambda = 0)
     std::vector<std::pair<std::array<T, 3>, std::array<T, 3>>> jumps;  // fold jumps (from, to)
+    // a fold whose target has the other end outside its value at the fold: that end must be back
+    // inside it by the phase's end (largest admissible final b1, b2)
+    std::array<T, 2> back{{T(2), T(2)}};
     {
       const std::vector<T> cus = cusps_in(-b2_, b1_);
       for (size_t guard = 0; guard < 2 * cus.size() + 4; ++guard) {
@@ -1127,7 +1130,7 @@ template <class T> class static_history {
         // states (docs/history.md, "Folds").
         {
           std::array<T, 3> to;
-          if (fold_jump(evi.back(), ev.back(), d1, d2, DQ, DS, to)) {
+          if (fold_jump(evi.back(), ev.back(), d1, d2, DQ, DS, to, back)) {
             jumps.push_back({ev.back(), to});
             ev.push_back(to);
             evi.push_back(evi.back());
@@ -1242,6 +1245,9 @@ template <class T> class static_history {
       }
       const auto &lst = ev.back();
       if (fb1 > lst[1] || fb2 > lst[2]) throw error(status::not_applicable, "static_history: a stick-zone end recedes");
+      if (fb1 > back[0] || fb2 > back[1])
+        throw error(status::not_applicable,
+                    "static_history: a fold at which the other stick-zone end recedes, not back inside it by the vertex");
       if (!cusps_in(-lst[2], -fb2).empty() || !cusps_in(fb1, lst[1]).empty())
         throw error(status::not_applicable, "static_history: an end passed a memory point that was not located");
     }
@@ -1293,7 +1299,7 @@ template <class T> class static_history {
   // the path is back at pt's lambda, by a geometric scan and bisection; false if the path goes
   // on inwards from pt (no fold) or does not come back to that load.
   bool fold_jump(int i, const std::array<T, 3> &pt, int d1, int d2, const T &dq, const T &ds,
-                 std::array<T, 3> &out) const {
+                 std::array<T, 3> &out, std::array<T, 2> &back) const {
     using std::abs;
     using std::max;
     const T bi = i == 1 ? pt[1] : pt[2], bo = i == 1 ? pt[2] : pt[1];
@@ -1321,10 +1327,15 @@ template <class T> class static_history {
       else lo = mid;
     }
     if (!good(hi) || !(abs(o[0] - lc) <= T(1e-8) * (1 + abs(lc)))) return false;
-    // the other end may only advance (or stay) over the jump: a target with it outside its value
-    // at pt would need that end to recede at the fold, which no phase models
-    if ((i == 1 ? o[2] : o[1]) > bo + T(1e-9) * width)
-      throw error(status::not_applicable, "static_history: a fold at which the other stick-zone end would recede");
+    // The other end's target may lie outside its value at pt (it moved out on the way back). The
+    // points between then slipped before the fold and are stuck at the target, against the phase's
+    // premise (every final stick point stuck throughout); the phase is right only if that end is
+    // back inside its value at pt by the phase's end (those points then end in its band, having
+    // slipped one way only), which the caller checks.
+    if ((i == 1 ? o[2] : o[1]) > bo) {
+      T &bk = back[i == 1 ? 1 : 0];
+      bk = std::min(bk, bo);
+    }
     // the ends at the fold's load itself where Newton finds them from there (the bisection leaves
     // the target's load within 1e-8; next to a cusp Newton may not converge, and the target is kept)
     T x1 = o[1], x2 = o[2];
