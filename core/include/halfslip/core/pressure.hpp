@@ -417,7 +417,9 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
   // T(X) and (if d) dT/dX, from D = 1 - X = 1 - cos tau* and Dc = 1 + X (each
   // formed by the caller from the exact edge distance). 1 - cos tau* grows with
   // tau* on [0, pi], so every switch in r = tau*/ep is a threshold in D.
-  T term(const T &D, const T &Dc, T *d) const {
+  // (sh_, ch_: sqrt(D/2) and sqrt(Dc/2), which the closed forms use; eval forms
+  // them once for both terms, whose D and Dc are swapped)
+  T term(const T &D, const T &sh_, const T &ch_, T *d) const {
     using std::abs;
     using std::asin;
     using std::log;
@@ -441,7 +443,7 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     // sin and cos of tau*/2 from D = 1 - cos tau* and Dc = 1 + cos tau*; then
     // sin a, sin b, cos a, cos b by the addition theorems (no trigonometric call)
     // (at the kink D = 1 - beta exactly: sin b = 0, T = ep)
-    const T sh = sqrt(D / 2), ch = sqrt(Dc / 2);
+    const T &sh = sh_, &ch = ch_;
     // sin b = (sin^2(tau*/2) - sin^2(ep/2))/sin a = (D - (1 - beta))/(2 sin a): the
     // difference D - (1 - beta) of two numbers known exactly near the kink (Sterbenz)
     const T sa = sh * ce2_ + ch * se2_, sb = (D - omb_) / (2 * sa);
@@ -506,8 +508,15 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     const T dist = min(dm, dp);  // 1 - |x|
     T dpl = 0, dmi = 0;
     // X = |x|: 1 - X = dist; X = -|x|: 1 - X = 2 - dist
-    const T tp = term(dist, 2 - dist, d ? &dpl : nullptr);
-    const T tm = term(2 - dist, dist, d ? &dmi : nullptr);
+    const T dist2 = 2 - dist;
+    T a = 0, b = 0;  // sqrt(dist/2), sqrt((2 - dist)/2): only the closed forms need them
+    if (dist < dclosed_ || dist2 < dclosed_) {
+      using std::sqrt;
+      a = sqrt(dist / 2);
+      b = sqrt(dist2 / 2);
+    }
+    const T tp = term(dist, a, b, d ? &dpl : nullptr);
+    const T tm = term(dist2, b, a, d ? &dmi : nullptr);
     if (d) {
       // d/d|x| [T(|x|) + T(-|x|)] = T'(|x|) - T'(-|x|)
       const T dd = (dpl - dmi) / g_;
