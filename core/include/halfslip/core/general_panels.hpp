@@ -52,7 +52,9 @@ std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<
   using std::min;
   using std::sqrt;
   const T half_pi = pi<T>() / 2;
-  std::vector<std::pair<T, bool>> pts = kinks;
+  std::vector<std::pair<T, bool>> pts;
+  pts.reserve(kinks.size() + 16);
+  pts.assign(kinks.begin(), kinks.end());
   pts.push_back({T(0), false});
   pts.push_back({half_pi, false});
   if (layers > 0) {
@@ -86,6 +88,7 @@ std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<
   std::sort(pts.begin(), pts.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
   // merge equal points (a graded flag wins)
   std::vector<std::pair<T, bool>> u;
+  u.reserve(pts.size());
   for (const auto &p : pts) {
     if (!u.empty() && !(p.first > u.back().first)) {
       u.back().second = u.back().second || p.second;
@@ -94,6 +97,7 @@ std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<
     u.push_back(p);
   }
   std::vector<panel<T>> out;
+  out.reserve(2 * u.size());
   for (std::size_t i = 0; i + 1 < u.size(); ++i) {
     const T lo = u[i].first, hi = u[i + 1].first;
     const bool gl = u[i].second, gh = u[i + 1].second;

@@ -29,12 +29,10 @@ namespace gdetail {
 // The contribution of the node theta (weight w) of zone `side` (length d,
 // stick-zone length e) to the single-zone integrals and (if jac) their
 // derivatives: t = stick edge +- d sin^2(theta).
-template <class T> void zone_node(const pressure_model<T> &pm, int side, const T &d, const T &e, const T &th,
-                                  const T &w, bool jac, zone_sums<T> &r) {
-  using std::cos;
-  using std::sin;
+// (sn, cs: sin and cos of theta)
+template <class T> void zone_node_sc(const pressure_model<T> &pm, int side, const T &d, const T &e, const T &sn,
+                                     const T &cs, const T &w, bool jac, zone_sums<T> &r) {
   using std::sqrt;
-  const T sn = sin(th), cs = cos(th);
   const T s2 = sn * sn, c2 = cs * cs;
   const T ds = d * s2;  // distance to the stick edge
   const T g = e + ds;   // |t - (other stick edge)|: t + b2 (R) or b1 - t (L)
@@ -64,6 +62,12 @@ template <class T> void zone_node(const pressure_model<T> &pm, int side, const T
   r.I2d += w * (bd * u + sgn * base * s2);
   r.I1le += w * ble;
   r.I2le += w * (ble * u + sgn * base * e / 2);
+}
+template <class T> void zone_node(const pressure_model<T> &pm, int side, const T &d, const T &e, const T &th,
+                                  const T &w, bool jac, zone_sums<T> &r) {
+  using std::cos;
+  using std::sin;
+  zone_node_sc(pm, side, d, e, T(sin(th)), T(cos(th)), w, jac, r);
 }
 
 // The zone integrals of a model with a knot quadrature (the sampled pressure
@@ -195,6 +199,15 @@ zone_sums<T> zone_integrals(const pressure_model<T> &pm, int side, const T &d, c
   if (!(d > 0)) return r;
   if (const knot_view<T> kv = pm.knots()) return gdetail::zone_integrals_knots(pm, kv, side, d, e, n, jac);
   const auto panels = gdetail::make_panels<T>(d, gdetail::grading_scale(pm, side, d, e), gdetail::zone_kinks(pm, side, d));
+  if (panels.size() == 1 && panels[0].grade == 0 && panels[0].lo == 0 && panels[0].hi == pi<T>() / 2) {
+    // the whole quarter [0, pi/2] (no kink, no grading): the nodes' sines and
+    // cosines from the cached table, the values for_nodes would give
+    const auto rule = gauss_legendre<T>(n);
+    const auto qt = gauss_legendre_quarter<T>(n);
+    const T L = panels[0].hi - panels[0].lo;
+    for (int i = 0; i < n; ++i) gdetail::zone_node_sc(pm, side, d, e, qt->sn[i], qt->cs[i], T(L * rule->w[i] / 2), jac, r);
+    return r;
+  }
   gdetail::for_nodes<T>(panels, n,
                         [&](const T &th, const T &w) { gdetail::zone_node(pm, side, d, e, th, w, jac, r); });
   return r;

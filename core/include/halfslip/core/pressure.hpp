@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -248,16 +249,62 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
       t8_ = -c2 * c / s * (k * k * k / 4032 + k * k / 1120 + k / 800 + T(31) / 30240);
       tau_series_ = ep_ * pow(eps<T>(), T(1) / 9);
     }
-    // the Gauss ladder: order N serves r >= rmin(N), the smallest r >= 2 with
-    // (2r)^(-2N)-like truncation below eps/64 relative: rho(r)^(-2N) 16 r^2 <= eps/64
-    // (the factor r^2: the integrand's pole part is ~r^2 times the integral,
-    // which is small because cos tau - cos ep vanishes at the end)
+    // the Gauss ladder: order N serves r >= rmin(N) (ladder_plan); per node
+    // 1 - cos tau = 2 sin^2(tau/2) and cos tau - cos ep = 2 (sin(ep/2) - sin(tau/2))
+    // (sin(ep/2) + sin(tau/2)), one sine a node (the product
+    // 2 sin((ep + tau)/2) sin((ep - tau)/2) took three: with the rungs' bisection
+    // for rmin, now done once per type, the constructor was a third of a solve
+    // through the C ABI, ~7 us; issue 16). The difference sin(ep/2) - sin(tau/2)
+    // is as accurate, relative, as ep - tau from the rounded tau = ep x_k.
+    const rung_plans plans = ladder_plan();
+    {
+      std::size_t total = 0;
+      for (const auto &pl : plans.v) total += std::size_t(pl.N / 2);
+      nodes_.reserve(2 * total);
+    }
+    ladder_.reserve(plans.v.size());
+    for (const auto &pl : plans.v) {
+      rung r;
+      r.rmin = pl.rmin;
+      r.first = nodes_.size();
+      const auto rule = gauss_legendre<T>(pl.N);
+      for (int k = 0; k < pl.N; ++k) {
+        if (!(rule->x[k] > 0)) continue;
+        const T tau = ep_ * rule->x[k];
+        const T sh = sin(tau / 2);
+        nodes_.push_back(2 * sh * sh);                                        // 1 - cos tau
+        nodes_.push_back(ep_ * rule->w[k] * (2 * (se2_ - sh) * (se2_ + sh)));  // w (cos tau - cos ep)
+      }
+      r.count = (nodes_.size() - r.first) / 2;
+      r.dmin = vers_of(r.rmin * ep_);
+      ladder_.push_back(r);
+    }
+    dclosed_ = vers_of(closed_form_limit() * ep_);
+    dseries_ = vers_of(tau_series_);
+  }
+  // The orders of the Gauss ladder and from which r each serves: N serves
+  // r >= rmin(N), the smallest r >= 2 with (2r)^(-2N)-like truncation below
+  // eps/64 relative: rho(r)^(-2N) 16 r^2 <= eps/64 (the factor r^2: the
+  // integrand's pole part is ~r^2 times the integral, which is small because
+  // cos tau - cos ep vanishes at the end). Independent of beta: computed once
+  // per type for the built-in floating types (an immutable function-local
+  // static), per call for the others (whose eps may be set at run time).
+  struct rung_plan {
+    int N;
+    T rmin;
+  };
+  struct rung_plans {
+    std::vector<rung_plan> v;
+  };
+  static rung_plans make_ladder_plan() {
+    using std::acosh;
+    using std::log;
+    rung_plans out;
     const T L = log(1024 / eps<T>());
     auto need = [&](const T &r) { return (L + 2 * log(r)) / (2 * acosh(r)); };
     for (int N : {4, 6, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 56, 64, 80, 96, 112, 128, 160, 192, 256}) {
-      rung r;
-      if (!(need(T(2)) > N)) r.rmin = 2;
-      else {
+      rung_plan r{N, T(2)};
+      if (need(T(2)) > N) {
         T lo = 2, hi = 2;
         while (need(hi) > N) hi *= 2;
         for (int it = 0; it < 200 && hi - lo > hi / 64; ++it) {
@@ -266,23 +313,20 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
         }
         r.rmin = hi;
       }
-      const auto rule = gauss_legendre<T>(N);
-      for (int k = 0; k < N; ++k) {
-        if (!(rule->x[k] > 0)) continue;
-        const T tau = ep_ * rule->x[k];
-        const T sh = sin(tau / 2);
-        r.w.push_back(ep_ * rule->w[k]);
-        r.vers.push_back(2 * sh * sh);                                       // 1 - cos tau
-        r.delta.push_back(2 * sin((ep_ + tau) / 2) * sin((ep_ - tau) / 2));  // cos tau - cos ep
-      }
-      r.dmin = vers_of(r.rmin * ep_);
-      ladder_.push_back(std::move(r));
-      if (!(ladder_.back().rmin > 2)) break;
+      out.v.push_back(r);
+      if (!(r.rmin > 2)) break;
     }
-    dclosed_ = vers_of(closed_form_limit() * ep_);
-    dseries_ = vers_of(tau_series_);
-    if (ladder_.back().rmin > 2)
+    if (out.v.back().rmin > 2)
       throw error(status::bad_option, "flat punch: precision beyond the Gauss ladder of the pressure");
+    return out;
+  }
+  static rung_plans ladder_plan() {
+    if constexpr (std::is_floating_point<T>::value) {
+      static const rung_plans plans = make_ladder_plan();
+      return plans;
+    } else {
+      return make_ladder_plan();
+    }
   }
   // g(beta) = pi - 2 asin(beta) - sin(2 asin beta) = 2ep - sin(2ep), ep = acos(beta)
   static T load_factor(const T &beta) {
@@ -359,7 +403,7 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
   }
   std::vector<int> ladder_orders() const {
     std::vector<int> v;
-    for (const auto &r : ladder_) v.push_back(int(2 * r.w.size()));
+    for (const auto &r : ladder_) v.push_back(int(2 * r.count));
     return v;
   }
   T series_distance() const { return dseries_; }
@@ -367,12 +411,15 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
  private:
   struct rung {
     T rmin, dmin;  // r = tau*/ep from which the rung serves, and 1 - cos(rmin ep) (> 2: never)
-    std::vector<T> w, vers, delta;
+    // its nodes in nodes_ from 2 first on: (1 - cos tau, w (cos tau - cos ep)) for each
+    std::size_t first = 0, count = 0;
   };
   // T(X) and (if d) dT/dX, from D = 1 - X = 1 - cos tau* and Dc = 1 + X (each
   // formed by the caller from the exact edge distance). 1 - cos tau* grows with
   // tau* on [0, pi], so every switch in r = tau*/ep is a threshold in D.
-  T term(const T &D, const T &Dc, T *d) const {
+  // (sh_, ch_: sqrt(D/2) and sqrt(Dc/2), which the closed forms use; eval forms
+  // them once for both terms, whose D and Dc are swapped)
+  T term(const T &D, const T &sh_, const T &ch_, T *d) const {
     using std::abs;
     using std::asin;
     using std::log;
@@ -382,10 +429,11 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
       std::size_t j = 0;
       while (j + 1 < ladder_.size() && ladder_[j].dmin > D) ++j;
       const rung &R = ladder_[j];
+      const T *nd = nodes_.data() + R.first;
       T s = 0, sd = 0;
-      for (std::size_t k = 0; k < R.w.size(); ++k) {
-        const T inv = 1 / (D - R.vers[k]);
-        const T f = R.w[k] * R.delta[k] * inv;
+      for (std::size_t k = 0; k < R.count; ++k, nd += 2) {
+        const T inv = 1 / (D - nd[0]);
+        const T f = nd[1] * inv;
         s += f;
         sd += f * inv;
       }
@@ -395,7 +443,7 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     // sin and cos of tau*/2 from D = 1 - cos tau* and Dc = 1 + cos tau*; then
     // sin a, sin b, cos a, cos b by the addition theorems (no trigonometric call)
     // (at the kink D = 1 - beta exactly: sin b = 0, T = ep)
-    const T sh = sqrt(D / 2), ch = sqrt(Dc / 2);
+    const T &sh = sh_, &ch = ch_;
     // sin b = (sin^2(tau*/2) - sin^2(ep/2))/sin a = (D - (1 - beta))/(2 sin a): the
     // difference D - (1 - beta) of two numbers known exactly near the kink (Sterbenz)
     const T sa = sh * ce2_ + ch * se2_, sb = (D - omb_) / (2 * sa);
@@ -460,8 +508,15 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     const T dist = min(dm, dp);  // 1 - |x|
     T dpl = 0, dmi = 0;
     // X = |x|: 1 - X = dist; X = -|x|: 1 - X = 2 - dist
-    const T tp = term(dist, 2 - dist, d ? &dpl : nullptr);
-    const T tm = term(2 - dist, dist, d ? &dmi : nullptr);
+    const T dist2 = 2 - dist;
+    T a = 0, b = 0;  // sqrt(dist/2), sqrt((2 - dist)/2): only the closed forms need them
+    if (dist < dclosed_ || dist2 < dclosed_) {
+      using std::sqrt;
+      a = sqrt(dist / 2);
+      b = sqrt(dist2 / 2);
+    }
+    const T tp = term(dist, a, b, d ? &dpl : nullptr);
+    const T tm = term(dist2, b, a, d ? &dmi : nullptr);
     if (d) {
       // d/d|x| [T(|x|) + T(-|x|)] = T'(|x|) - T'(-|x|)
       const T dd = (dpl - dmi) / g_;
@@ -476,13 +531,18 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     T lo = 0, hi = 1, b = T(0.5);
     int it = 0;
     for (; it < 400; ++it) {
-      const T h = load_factor(b) / (b * b) - target;
+      const T g = load_factor(b);
+      const T h = g / (b * b) - target;
       if (h > 0) lo = b;
       else hi = b;
       // d/db [g/b^2] = g'/b^2 - 2 g / b^3
-      const T dh = load_factor_derivative(b) / (b * b) - 2 * load_factor(b) / (b * b * b);
+      const T dh = load_factor_derivative(b) / (b * b) - 2 * g / (b * b * b);
       T nb = b - h / dh;
-      if (!(nb > lo && nb < hi)) nb = (lo + hi) / 2;
+      // (a Newton step below half an ulp of b leaves nb = b, the bracket end just
+      // set: that is convergence, not a reason to bisect; bisecting there took
+      // ~30 more iterations back to the same b: 37 and 56 in all at b_f/a = 0.5,
+      // q = 0.3 and 0.6, now 6 and 7)
+      if (!(nb >= lo && nb <= hi)) nb = (lo + hi) / 2;
       const T step = abs(nb - b);
       b = nb;
       if (step <= 2 * eps<T>() * b || hi - lo <= 2 * eps<T>() * b) break;
@@ -503,6 +563,7 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     return 2 * s * s;
   }
   std::vector<rung> ladder_;
+  std::vector<T> nodes_;  // the rungs' nodes (rung)
 };
 
 // ---------------------------------------------------------------------------
