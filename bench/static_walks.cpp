@@ -1,0 +1,114 @@
+// Random non-proportional walks through the static solves (core/static_history.hpp, issue 14): how far
+// they take each walk, what stops them, and their agreement with the independent BEM
+// (reference/bem_history.hpp) as far as they go. The walks are bench_history's (100 vertices,
+// |Q/fP| <= 0.5, sigma/fp0 in [0, 1.2], moves up to 0.15). Not part of the suite (docs/history.md,
+// "Folds", and the CHANGELOG quote its figures):
+//   g++ -std=c++17 -O2 -I core/include -I reference/include -I /usr/include/eigen3 \
+//       bench/static_walks.cpp -o /tmp/static_walks
+//   /tmp/static_walks count 0 60       # Hertz: vertices taken and the reasons, 60 walks (~20 s)
+//   /tmp/static_walks count 1 60       # flat punch b_f/a = 0.5 (~40 s)
+//   /tmp/static_walks bem 0 400 1 20   # Hertz walks 1..20 against the BEM at N = 400 (~2 min)
+//   /tmp/static_walks bem 1 400 1 20
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "halfslip/core/static_history.hpp"
+#include "halfslip/reference/bem_history.hpp"
+
+using namespace hs::core;
+using path_t = std::vector<std::pair<double, double>>;
+
+static path_t random_path(int n, unsigned seed) {  // bench_history.cpp's generator
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  path_t p;
+  double q = 0, s = 0;
+  for (int i = 0; i < n; ++i) {
+    q = std::max(-0.5, std::min(0.5, q + 0.15 * u(g)));
+    s = std::max(0.0, std::min(1.2, s + 0.15 * u(g)));
+    p.emplace_back(q, s);
+  }
+  return p;
+}
+
+int main(int argc, char **argv) {
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: %s count G WALKS | bem G N FIRST LAST   (G: 0 Hertz, 1 flat punch 0.5)\n", argv[0]);
+    return 2;
+  }
+  const bool bem = std::strcmp(argv[1], "bem") == 0;
+  const int g = std::atoi(argv[2]);
+  std::shared_ptr<const pressure_model<double>> pm;
+  if (g == 0) pm = std::make_shared<hertz_pressure<double>>();
+  else pm = std::make_shared<flat_rounded_pressure<double>>(0.5);
+  if (!bem) {
+    const unsigned n = unsigned(std::atoi(argv[3]));
+    std::map<std::string, int> why;
+    size_t taken = 0;
+    int whole = 0;
+    for (unsigned seed = 1; seed <= n; ++seed) {
+      const path_t w = random_path(100, seed);
+      static_history<double> h(pm);
+      size_t k = 0;
+      try {
+        for (; k < w.size(); ++k) h.add_vertex(w[k].first, w[k].second);
+        ++whole;
+      } catch (const error &e) {
+        ++why[e.what()];
+      }
+      taken += k;
+    }
+    std::printf("%s: %zu of %u vertices taken, %d walks whole; stopped by:\n", g ? "flat punch" : "Hertz", taken,
+                100 * n, whole);
+    for (const auto &kv : why) std::printf("  %3d  %s\n", kv.second, kv.first.c_str());
+    return 0;
+  }
+  const int N = std::atoi(argv[3]);
+  const unsigned s0 = unsigned(std::atoi(argv[4])), s1 = unsigned(argc > 5 ? std::atoi(argv[5]) : std::atoi(argv[4]));
+  double worst_b = 0, worst_e = 0;
+  for (unsigned seed = s0; seed <= s1; ++seed) {
+    const path_t w = random_path(100, seed);
+    static_history<double> h(pm);
+    std::vector<std::array<double, 6>> st;
+    path_t done;
+    for (const auto &p : w) {
+      try {
+        h.add_vertex(p.first, p.second);
+      } catch (const error &) {
+        break;
+      }
+      st.push_back({h.b1(), h.b2(), double(h.dir1()), double(h.dir2()), h.last_segment().E1, h.last_segment().E2});
+      done.push_back(p);
+    }
+    if (done.empty()) continue;
+    hs::reference::bem::options o;
+    o.nodes = o.steps_per_unit = N;
+    const auto r = hs::reference::bem::run([&](double x) { return pm->p(x); }, done, o);
+    double Emax = 0;
+    for (const auto &x : st) Emax = std::max({Emax, x[4], x[5]});
+    double wb = 0, we = 0;
+    int dirs = 0;
+    for (size_t k = 0; k < done.size(); ++k)
+      for (int i = 0; i < 2; ++i) {
+        const double b = st[k][i], bb = i ? r[k].b2 : r[k].b1;
+        const double width = 3.141592653589793 / N * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (double(N) * N);
+        wb = std::max(wb, std::fabs(b - bb) / width);
+        we = std::max(we, std::fabs(st[k][4 + i] - (i ? r[k].energy2 : r[k].energy1)) / Emax);
+        if (int(st[k][2 + i]) != (i ? r[k].dir2 : r[k].dir1) && 1 - b > 2 * width) ++dirs;
+      }
+    std::printf("walk %u: %zu vertices; ends within %.2f element widths, energies within %.2e of the largest; "
+                "%d slip directions differ\n", seed, done.size(), wb, we, dirs);
+    worst_b = std::max(worst_b, wb);
+    worst_e = std::max(worst_e, we);
+  }
+  std::printf("worst: %.2f element widths, %.2e of the largest energy\n", worst_b, worst_e);
+}
