@@ -1229,8 +1229,17 @@ template <class T> class static_history {
         const T c = (g1 - g2) / 2, e = (g1 + g2) / 2;
         check_slip_sign(d1, d2, A, Bq, c, e);
         const T wl = R.w[j] * pc.dlam[j];
-        E1 += wl * T(d1) * hist_zone_rate(*pm_, zorder_, +1, A, Bq, c, e, g1, T(1));
-        E2 += wl * T(d2) * hist_zone_rate(*pm_, zorder_, -1, A, Bq, c, e, T(-1), -g2);
+        // (the zones' rates at these ends and rates, if computed lately: the same arguments, the
+        // same values; a periodic path's nodes repeat to the last bit)
+        T z1, z2;
+        if (!zone_rates_kept(g1, g2, A, Bq, z1, z2)) {
+          z1 = hist_zone_rate(*pm_, zorder_, +1, A, Bq, c, e, g1, T(1));
+          z2 = hist_zone_rate(*pm_, zorder_, -1, A, Bq, c, e, T(-1), -g2);
+          if (zrates_.size() >= 64) zrates_.erase(zrates_.begin());
+          zrates_.push_back({{g1, g2, A, Bq, z1, z2}});
+        }
+        E1 += wl * T(d1) * z1;
+        E2 += wl * T(d2) * z2;
       }
       // the piece's nodes must lie between its ends: a crossing point that the nodes
       // passed, or did not reach, is a path the pieces do not follow
@@ -1347,6 +1356,19 @@ template <class T> class static_history {
                      const std::array<T, 3> &e) {
     if (xrec_.size() >= 32) xrec_.erase(xrec_.begin());
     xrec_.push_back(crossing_rec{i, d1, d2, m, dq, ds, b1_, b2_, cur, i == 1 ? e[2] : e[1]});
+  }
+
+  // hist_zone_rate of both zones at the ends g1, g2 and the rates A, B, if among the last 64 computed
+  bool zone_rates_kept(const T &g1, const T &g2, const T &A, const T &B, T &z1, T &z2) const {
+    for (size_t k = zrates_.size(); k-- > 0;) {
+      const auto &z = zrates_[k];
+      if (z[0] == g1 && z[1] == g2 && z[2] == A && z[3] == B) {
+        z1 = z[4];
+        z2 = z[5];
+        return true;
+      }
+    }
+    return false;
   }
 
   // the latest of the last four segments with the load increment (dq, ds) that started from the
@@ -2274,6 +2296,7 @@ template <class T> class static_history {
   mutable bcache bc_;
   std::vector<crossing_rec> xrec_;  // the crossings found lately (hints for the next half cycle)
   std::vector<panel_layout> layouts_;  // the new tractions' panel layouts lately (the same)
+  std::vector<std::array<T, 6>> zrates_;  // the zones' rates lately: g1, g2, A, B and the two rates
   std::vector<T> pbreaks_;
   std::vector<sh_panel<T>> panels_;
   std::vector<std::shared_ptr<const sh_segment<T>>> segs_;
