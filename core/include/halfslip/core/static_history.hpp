@@ -794,6 +794,17 @@ template <class T> class static_history {
       const T det = j11 * j22 - j12 * j21;
       const T x1 = (r[0] * j22 - r[1] * j12) / det, x2 = (j11 * r[1] - j21 * r[0]) / det;
       if (!isfinite(x1) || !isfinite(x2)) return false;
+      // converged already: the step from here is at the rounding floor and the residual here
+      // is small (the test below, applied before the step rather than after it: the step is
+      // taken and its residual, the next iteration's, not evaluated; a start from the
+      // previous half cycle of a periodic path converges here at once)
+      if (max(abs(x1), abs(x2)) <= tol && norm(r) <= rtolr * (1 + abs(dq) + abs(ds)) &&
+          inside(b1 - x1, b2 - x2)) {
+        b1 -= x1;
+        b2 -= x2;
+        if (J) *J = Jc;
+        return true;
+      }
       T lam = 1;
       std::array<T, 2> rn;
       T n1 = 0, n2 = 0;
@@ -1033,7 +1044,8 @@ template <class T> class static_history {
         const auto cur = ev.back();
         std::array<T, 3> best{{T(2), T(0), T(0)}};
         int bi = 0;
-        std::array<T, 2> mi{{T(0), T(0)}};
+        std::array<T, 2> mends{{T(0), T(0)}};  // each end's next cusp (if hv)
+        std::array<bool, 2> hv{{false, false}};
         for (int i = 1; i <= 2; ++i) {
           // the next cusp inwards from end i
           T m = 0;
@@ -1043,9 +1055,14 @@ template <class T> class static_history {
             if (i == 2 && c > -cur[2] && c < cur[1] && (!have || c < m)) m = c, have = true;
           }
           if (!have) continue;
-          mi[i - 1] = i == 1 ? m : -m;
           std::array<T, 3> e;
-          if (end_driven(i, i == 1 ? m : -m, cur, d1, d2, DQ, DS, e) && e[0] > cur[0] && e[0] < best[0]) {
+          const T mi = i == 1 ? m : -m;
+          mends[i - 1] = mi;
+          hv[i - 1] = true;
+          const T *hint = crossing_hint(i, mi, cur, d1, d2, DQ, DS);
+          const bool found = end_driven(i, mi, cur, d1, d2, DQ, DS, e, hint);
+          if (found) keep_crossing(i, mi, cur, d1, d2, DQ, DS, e);
+          if (found && e[0] > cur[0] && e[0] < best[0]) {
             best = e;
             bi = i;
           }
@@ -1072,7 +1089,8 @@ template <class T> class static_history {
             bi = 0;
             for (int j = 1; j <= 2; ++j) {
               std::array<T, 3> e;
-              if (mi[j - 1] != 0 && end_driven(j, mi[j - 1], cur, d1, d2, DQ, DS, e, false, 0) && e[0] > cur[0] &&
+              if (hv[j - 1] && end_driven(j, mends[j - 1], cur, d1, d2, DQ, DS, e, nullptr, false, 0) &&
+                  e[0] > cur[0] &&
                   e[0] < best[0] && !passed(j, e))
                 best = e, bi = j;
             }
@@ -1170,6 +1188,21 @@ template <class T> class static_history {
     }
     // pieces [ev[k], ev[k+1]], the last one ending at lambda = 1 (mu: the phase's parameter)
     const auto &R = *lrule_;
+    // a recent segment with the same load increment from the same ends and zones (the previous
+    // half cycle of a periodic path): its ends at the same lambda start the Newton solves
+    const sh_segment<T> *hint = lam0 == 0 && span == 1 && sg.pieces.empty() ? similar_segment(dq, ds, d1, d2) : nullptr;
+    auto hinted = [&](const T &lam, T &g1, T &g2) {
+      if (!hint) return false;
+      for (const auto &hp : hint->pieces)
+        if (hp.d1 == d1 && hp.d2 == d2)
+          for (size_t j = 0; j < hp.lam.size(); ++j)
+            if (abs(hp.lam[j] - lam) <= T(1e-12)) {
+              g1 = hp.b1[j];
+              g2 = hp.b2[j];
+              return true;
+            }
+      return false;
+    };
     const int nl = R.n();
     const T A = dq / 2, Bq = ds / 4;  // the segment's rates (per unit lambda of the segment)
     T fb1 = 0, fb2 = 0;
@@ -1208,7 +1241,14 @@ template <class T> class static_history {
         pl = lam;
         pb1 = wb1;
         pb2 = wb2;
-        if (!solve(g1, g2, d1, d2, DQ * lam, DS * lam, &Jn))
+        T h1, h2;
+        bool ok = false;
+        if (hinted(lam0 + span * lam, h1, h2) && h1 <= wb1 && h2 <= wb2) {
+          std::array<T, 4> Jh = Jn;
+          ok = solve(h1, h2, d1, d2, DQ * lam, DS * lam, &Jh);
+          if (ok) g1 = h1, g2 = h2, Jn = Jh;
+        }
+        if (!ok && !solve(g1, g2, d1, d2, DQ * lam, DS * lam, &Jn))
           throw error(status::not_applicable, "static_history: the static solve of the segment did not converge");
         // (a trial past the point where an end stops: the static solve there has that end
         // moving back, or its r_i of the other sign)
@@ -1233,8 +1273,17 @@ template <class T> class static_history {
         const T c = (g1 - g2) / 2, e = (g1 + g2) / 2;
         check_slip_sign(d1, d2, A, Bq, c, e);
         const T wl = R.w[j] * pc.dlam[j];
-        E1 += wl * T(d1) * hist_zone_rate(*pm_, zorder_, +1, A, Bq, c, e, g1, T(1));
-        E2 += wl * T(d2) * hist_zone_rate(*pm_, zorder_, -1, A, Bq, c, e, T(-1), -g2);
+        // (the zones' rates at these ends and rates, if computed lately: the same arguments, the
+        // same values; a periodic path's nodes repeat to the last bit)
+        T z1, z2;
+        if (!zone_rates_kept(g1, g2, A, Bq, z1, z2)) {
+          z1 = hist_zone_rate(*pm_, zorder_, +1, A, Bq, c, e, g1, T(1));
+          z2 = hist_zone_rate(*pm_, zorder_, -1, A, Bq, c, e, T(-1), -g2);
+          if (zrates_.size() >= 64) zrates_.erase(zrates_.begin());
+          zrates_.push_back({{g1, g2, A, Bq, z1, z2}});
+        }
+        E1 += wl * T(d1) * z1;
+        E2 += wl * T(d2) * z2;
       }
       // the piece's nodes must lie between its ends: a crossing point that the nodes
       // passed, or did not reach, is a path the pieces do not follow
@@ -1319,7 +1368,11 @@ template <class T> class static_history {
       pieces.clear();
     }
     // the new traction on panels over (-fb2, fb1)
-    std::vector<sh_panel<T>> np = new_panels(fb1, fb2, d1, d2);
+    // (the panels' layout of a recent segment like this one, if any, starts the subdivision)
+    panel_layout lay;
+    std::vector<sh_panel<T>> np = new_panels(fb1, fb2, d1, d2, layout_hint(fb1, fb2, d1, d2), lay);
+    if (layouts_.size() >= 4) layouts_.erase(layouts_.begin());
+    layouts_.push_back(std::move(lay));
     // the friction limit inside the new stick zone (an interior slip zone otherwise)
     check_limit(np);
     panels_ = std::move(np);
@@ -1332,6 +1385,60 @@ template <class T> class static_history {
     sg.E1 += E1;
     sg.E2 += E2;
     return true;
+  }
+
+  // The crossings found lately (end i held at m from the point cur of the phase (dq, ds) from the
+  // state's ends b1, b2): the other end's root there starts the same search later (the next half
+  // cycle of a periodic path); end_driven checks it by the signs about it.
+  struct crossing_rec {
+    int i, d1, d2;
+    T m, dq, ds, b1, b2;
+    std::array<T, 3> cur;
+    T root;
+  };
+  const T *crossing_hint(int i, const T &m, const std::array<T, 3> &cur, int d1, int d2, const T &dq,
+                         const T &ds) const {
+    using std::abs;
+    const T tol = T(1e-9);
+    for (size_t k = xrec_.size(); k-- > 0;) {
+      const auto &c = xrec_[k];
+      if (c.i == i && c.d1 == d1 && c.d2 == d2 && c.dq == dq && c.ds == ds && abs(c.m - m) <= tol &&
+          abs(c.b1 - b1_) <= tol && abs(c.b2 - b2_) <= tol && abs(c.cur[0] - cur[0]) <= tol &&
+          abs(c.cur[1] - cur[1]) <= tol && abs(c.cur[2] - cur[2]) <= tol)
+        return &c.root;
+    }
+    return nullptr;
+  }
+  void keep_crossing(int i, const T &m, const std::array<T, 3> &cur, int d1, int d2, const T &dq, const T &ds,
+                     const std::array<T, 3> &e) {
+    if (xrec_.size() >= 32) xrec_.erase(xrec_.begin());
+    xrec_.push_back(crossing_rec{i, d1, d2, m, dq, ds, b1_, b2_, cur, i == 1 ? e[2] : e[1]});
+  }
+
+  // hist_zone_rate of both zones at the ends g1, g2 and the rates A, B, if among the last 64 computed
+  bool zone_rates_kept(const T &g1, const T &g2, const T &A, const T &B, T &z1, T &z2) const {
+    for (size_t k = zrates_.size(); k-- > 0;) {
+      const auto &z = zrates_[k];
+      if (z[0] == g1 && z[1] == g2 && z[2] == A && z[3] == B) {
+        z1 = z[4];
+        z2 = z[5];
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // the latest of the last four segments with the load increment (dq, ds) that started from the
+  // ends b1_, b2_ (to 1e-9) with the zone directions d1, d2 and no fold (null: none)
+  const sh_segment<T> *similar_segment(const T &dq, const T &ds, int d1, int d2) const {
+    using std::abs;
+    for (size_t k = segs_.size(), n = 0; k-- > 0 && n < 4; ++n) {
+      const auto &S = *segs_[k];
+      if (S.dq == dq && S.ds == ds && S.jumps.empty() && S.d1 == d1 && S.d2 == d2 && abs(S.b1s - b1_) <= T(1e-9) &&
+          abs(S.b2s - b2_) <= T(1e-9))
+        return &S;
+    }
+    return nullptr;
   }
 
   // The fold after end i landed on a cusp at pt (lambda, b1, b2): if just inside the point the
@@ -1349,7 +1456,7 @@ template <class T> class static_history {
     std::array<T, 3> o;
     // (the other end's root on either side of its value at pt: on the way back to pt's load it
     // may lie outside it, e.g. while end i sweeps a region just short of the limit)
-    auto good = [&](const T &d) { return end_driven(i, bi - d, pt, d1, d2, dq, ds, o, true) && o[0] >= lc; };
+    auto good = [&](const T &d) { return end_driven(i, bi - d, pt, d1, d2, dq, ds, o, nullptr, true) && o[0] >= lc; };
     // The first point of a geometric scan inwards whose lambda differs from lc by more than its
     // rounding decides: above, the path goes on (no fold); below (or no path), a fold, and the scan
     // goes on to where the path is back at lc. (A gentle fold falls by less than the rounding at
@@ -1359,7 +1466,7 @@ template <class T> class static_history {
     T lo = 0, hi = 0;  // lambda below lc (or no path) at lo, back at hi
     bool fell = false;
     for (T d = d0; d < width; d *= 2) {
-      const bool ok = end_driven(i, bi - d, pt, d1, d2, dq, ds, o, true);
+      const bool ok = end_driven(i, bi - d, pt, d1, d2, dq, ds, o, nullptr, true);
       if (ok && o[0] >= lc) {
         if (fell) {
           hi = d;
@@ -1433,17 +1540,27 @@ template <class T> class static_history {
   // lambda = -F.v/|v|^2. The root is bracketed by a scan inwards from the other end's value at
   // cur (the ends advance), from the rounding level up; else within rounding outwards (cur is
   // itself a root to rounding). False if there is none before the stick zone closes.
+  // hint (optional): the other end's root found by the same search from the same state before
+  // (the previous half cycle of a periodic path); a bracket of 2e-10 of the width about it is
+  // taken in place of the scan where the signs at its ends show the crossing (the outer clearly
+  // of cur's sign), else the scan runs as without it.
   bool end_driven(int i, const T &m, const std::array<T, 3> &cur, int d1, int d2, const T &dq, const T &ds,
-                  std::array<T, 3> &out, bool outwards = false, int growth = 4) const {
+                  std::array<T, 3> &out, const T *hint = nullptr, bool outwards = false, int growth = 4) const {
     using std::abs;
     using std::max;
     const T pi_ = pi<T>();
     const T v1 = ds / 4, v2 = -dq * pi_ / 2;
     T lam = 0;
+    // (the last point evaluated and its residual: the final lambda at b is often that point's)
+    T lastx = std::numeric_limits<T>::quiet_NaN(), lastlam = 0;
+    std::array<T, 2> lastf{{0, 0}};
     auto F = [&](const T &bo) {
       const T x1 = i == 1 ? m : bo, x2 = i == 1 ? bo : m;
       const auto f = residual(x1, x2, d1, d2, T(0), T(0));
       lam = -(f[0] * v1 + f[1] * v2) / (v1 * v1 + v2 * v2);
+      lastx = bo;
+      lastlam = lam;
+      lastf = f;
       return v1 * f[1] - v2 * f[0];
     };
     const T c0 = i == 1 ? cur[2] : cur[1];  // the other end at cur
@@ -1451,16 +1568,47 @@ template <class T> class static_history {
     if (!(c0 > loB)) return false;
     const T f0 = F(c0);
     // Phi's rounding level at cur (a flat region, the other end's Masing region, is zero to it)
-    const auto fc = residual(i == 1 ? m : c0, i == 1 ? c0 : m, d1, d2, T(0), T(0));
+    const auto fc = lastf;  // the residual at (m, c0)
     const T noise = T(1e3) * eps<T>() * (abs(v1) + abs(v2)) * (1 + abs(fc[0]) + abs(fc[1]));
     // a bracket ends where Phi changes sign or, from a point where it is clearly signed, where it
     // falls to its rounding (the outer end of a flat region: a sign there is noise)
     auto ends = [&](const T &f, const T &fprev) {
       return (f > 0) != (fprev > 0) || f == 0 || (abs(f) <= noise && abs(fprev) > noise);
     };
-    T a = 0, b = 0, fb = 0;
+    T a = 0, b = 0, fb = 0, fa = 0;
     bool br = f0 == 0;
     if (br) a = b = c0;
+    // (a hint within 1e-10 of a cusp of the start state, which isolated: the end lands on an
+    // earlier end position, as in every steady cycle. Where the predicate of the bisection below
+    // is false 1e-11 inside the cusp and true 1e-11 outside it, its boundary is within 1e-11 of
+    // the cusp, and the result is the cusp (taken there below): no root search)
+    if (!br && hint) {
+      const T dc = T(1e-11), iso = T(3e-10);
+      const T hp = i == 1 ? -*hint : *hint;  // the hint as a point of the line
+      const auto cs = cusps_in(hp - iso, hp + iso);
+      if (cs.size() == 1 && abs(cs[0] - hp) <= T(1e-10)) {
+        const T bc = i == 1 ? -cs[0] : cs[0];
+        if (bc + dc < c0 && bc - dc > loB) {
+          const T fo = F(bc + dc);
+          if ((fo > 0) == (f0 > 0) && abs(fo) > noise) {
+            const T fi = F(bc - dc);
+            if (!((fi > 0) == (f0 > 0) && abs(fi) > noise)) a = b = bc + dc, br = true;
+          }
+        }
+      }
+    }
+    if (!br && hint) {
+      const T dl = max(T(1e-13), T(1e-10) * (c0 - loB));
+      const T xo = *hint + dl, xi = *hint - dl;
+      if (xo < c0 && xi > loB) {
+        const T fo = F(xo);
+        if ((fo > 0) == (f0 > 0) && abs(fo) > noise) {
+          const T fi = F(xi);
+          // (Phi may be zero to rounding inside the root: a Masing return's flat region)
+          if ((fi > 0) != (fo > 0) || abs(fi) <= noise) a = xi, b = xo, fa = fi, fb = fo, br = true;
+        }
+      }
+    }
     if (outwards && !br) {
       // the root nearest c0 on either side (the branch through cur, followed by fold_jump)
       T in = c0, fin = f0, out = c0, fout = f0;
@@ -1470,7 +1618,7 @@ template <class T> class static_history {
         if (xi > loB && xi < in) {
           any = true;
           const T f = F(xi);
-          if (ends(f, fin)) a = xi, b = in, fb = fin, br = true;
+          if (ends(f, fin)) a = xi, b = in, fa = f, fb = fin, br = true;
           in = xi;
           fin = f;
         }
@@ -1478,7 +1626,7 @@ template <class T> class static_history {
         if (!br && xo > out) {
           any = true;
           const T f = F(xo);
-          if ((f > 0) != (fout > 0) || f == 0) a = out, b = xo, fb = f, br = true;
+          if ((f > 0) != (fout > 0) || f == 0) a = out, b = xo, fa = fout, fb = f, br = true;
           out = xo;
           fout = f;
         }
@@ -1492,7 +1640,7 @@ template <class T> class static_history {
         if (!(xi > loB)) xi = (hiv + loB) / 2;
         if (!(hiv - xi > 0)) break;
         const T f = F(xi);
-        if (ends(f, fhi)) a = xi, b = hiv, fb = fhi, br = true;
+        if (ends(f, fhi)) a = xi, b = hiv, fa = f, fb = fhi, br = true;
         hiv = xi;
         fhi = f;
         if (hiv - loB < 64 * eps<T>()) break;
@@ -1503,7 +1651,7 @@ template <class T> class static_history {
         const T xo = c0 + d;
         if (!(xo <= 1)) break;
         const T f = F(xo);
-        if ((f > 0) != (f0 > 0) || f == 0) a = c0, b = xo, fb = f, br = true;
+        if ((f > 0) != (f0 > 0) || f == 0) a = c0, b = xo, fa = f0, fb = f, br = true;
       }
     if (!br) return false;
     // The outermost root in [a, b]: where the band sums stop changing (a region at the limit
@@ -1518,7 +1666,7 @@ template <class T> class static_history {
       // bisection goes on from the root outwards (the crossing search was most of the solves'
       // residual evaluations, bisecting to 2 eps)
       {
-        const T fa = F(a);
+        // (fa: Phi at a, from the scan)
         if ((fa > 0) != sb && fa != 0) {
           std::uintmax_t iters = 100;
           const auto rt = boost::math::tools::toms748_solve(
@@ -1551,6 +1699,27 @@ template <class T> class static_history {
           }
         }
       }
+      // The boundary the bisection finds is taken to a cusp of the start state within 1e-10 of it
+      // (below). Where one cusp lies in [a, b] with no other within 3e-10 of it, the predicate
+      // false 1e-11 inside it and true 1e-11 outside it, the boundary is within 1e-11 of the cusp
+      // and the result the cusp: two evaluations in place of the bisection's 20 to 40 (a Masing
+      // return, where Phi is zero to rounding up to the cusp).
+      if (b - a > 2 * eps<T>() * (1 + abs(a))) {
+        const T dc = T(1e-11), iso = T(3e-10);
+        const T plo = i == 1 ? -b : a, phi_ = i == 1 ? -a : b;
+        const auto cs = cusps_in(plo - iso, phi_ + iso);
+        for (size_t k = 0; k < cs.size(); ++k) {
+          const T bc = i == 1 ? -cs[k] : cs[k];
+          if (!(bc - dc > a && bc + dc < b && bc > loB && bc <= 1)) continue;
+          if ((k > 0 && cs[k] - cs[k - 1] <= iso) || (k + 1 < cs.size() && cs[k + 1] - cs[k] <= iso)) continue;
+          const T fo2 = F(bc + dc);
+          if (!((fo2 > 0) == sb && abs(fo2) > noise)) continue;
+          const T fi2 = F(bc - dc);
+          if ((fi2 > 0) == sb && abs(fi2) > noise) continue;
+          a = b = bc + dc;  // (on the cusp below)
+          break;
+        }
+      }
       for (int it = 0; it < 200 && b - a > 2 * eps<T>() * (1 + abs(a)); ++it) {
         const T mid = a + (b - a) / 2;
         if (!(mid > a && mid < b)) break;
@@ -1569,7 +1738,8 @@ template <class T> class static_history {
         if (bc > loB && bc <= 1) b = bc;
       }
     }
-    F(b);
+    if (b == lastx) lam = lastlam;
+    else F(b);
     out = {{lam, i == 1 ? m : b, i == 1 ? b : m}};
     return true;
   }
@@ -1661,12 +1831,40 @@ template <class T> class static_history {
     return qS(x) + w / pi<T>() * Ks;
   }
 
-  std::vector<sh_panel<T>> new_panels(const T &b1, const T &b2, int d1, int d2) const {
-    kparts kp = make_kparts(b1, b2, d1, d2);
-    return build_panels(b1, b2, [&](const T &x) { return new_traction(x, kp); });
+  // The layout of the panels of a new traction (the ends, the zones' directions, the cuts at
+  // cusps and the panels' inner ends between each two cuts), kept for the next half cycle of a
+  // periodic path: there it starts the subdivision, which otherwise evaluates the traction on
+  // every panel that it then halves (a third of the new traction's evaluations). Each panel is
+  // still checked, and halved if not resolved.
+  struct panel_layout {
+    T b1{0}, b2{0};
+    int d1 = 0, d2 = 0;
+    std::vector<T> cuts;
+    std::vector<std::vector<T>> inner;
+  };
+  const panel_layout *layout_hint(const T &b1, const T &b2, int d1, int d2) const {
+    using std::abs;
+    for (size_t k = layouts_.size(); k-- > 0;) {
+      const auto &L = layouts_[k];
+      if (L.d1 == d1 && L.d2 == d2 && abs(L.b1 - b1) <= T(1e-9) && abs(L.b2 - b2) <= T(1e-9)) return &L;
+    }
+    return nullptr;
   }
-  // the traction trac(x) on panels over (-b2, b1), cut at the state's cusps there
-  template <class Fn> std::vector<sh_panel<T>> build_panels(const T &b1, const T &b2, const Fn &trac) const {
+  std::vector<sh_panel<T>> new_panels(const T &b1, const T &b2, int d1, int d2, const panel_layout *hint,
+                                      panel_layout &lay) const {
+    kparts kp = make_kparts(b1, b2, d1, d2);
+    lay.b1 = b1;
+    lay.b2 = b2;
+    lay.d1 = d1;
+    lay.d2 = d2;
+    return build_panels(b1, b2, [&](const T &x) { return new_traction(x, kp); }, hint, &lay);
+  }
+  // the traction trac(x) on panels over (-b2, b1), cut at the state's cusps there (hint: a
+  // layout to start from where its cuts are these to 1e-9; lay: this one's)
+  template <class Fn>
+  std::vector<sh_panel<T>> build_panels(const T &b1, const T &b2, const Fn &trac, const panel_layout *hint = nullptr,
+                                        panel_layout *lay = nullptr) const {
+    using std::abs;
     // cusps within rounding of an end or of each other are one point (a Masing return puts
     // an end on an earlier end position, to rounding): no panels narrower than that
     const T tiny = T(1e3) * eps<T>() * (b1 + b2);
@@ -1674,10 +1872,32 @@ template <class T> class static_history {
     for (const T &c : cusps_in(-b2, b1))
       if (c - cuts.back() > tiny && b1 - c > tiny) cuts.push_back(c);
     cuts.push_back(b1);
+    if (hint && hint->cuts.size() == cuts.size()) {
+      for (size_t k = 0; k < cuts.size() && hint; ++k)
+        if (!(abs(hint->cuts[k] - cuts[k]) <= T(1e-9))) hint = nullptr;
+    } else {
+      hint = nullptr;
+    }
+    if (lay) {
+      lay->cuts = cuts;
+      lay->inner.assign(cuts.size() - 1, {});
+    }
     std::vector<sh_panel<T>> out;
     const auto &R = *rule_;
     for (size_t k = 0; k + 1 < cuts.size(); ++k) {
       std::vector<std::pair<T, T>> todo{{cuts[k], cuts[k + 1]}};
+      if (hint && !hint->inner[k].empty()) {
+        // the hinted inner ends, mapped to this interval (kept strictly inside it, increasing)
+        const T hl = hint->cuts[k], hr = hint->cuts[k + 1], l = cuts[k], r = cuts[k + 1];
+        std::vector<T> bs{l};
+        for (const T &v : hint->inner[k]) {
+          const T x = l + (v - hl) / (hr - hl) * (r - l);
+          if (x > bs.back() && x < r) bs.push_back(x);
+        }
+        bs.push_back(r);
+        todo.clear();
+        for (size_t j = 0; j + 1 < bs.size(); ++j) todo.push_back({bs[j], bs[j + 1]});
+      }
       bool first = true;
       while (!todo.empty()) {
         auto [l, r] = todo.front();
@@ -1698,6 +1918,7 @@ template <class T> class static_history {
           todo.insert(todo.begin(), {{l, m}, {m, r}});
           continue;
         }
+        if (lay && !first) lay->inner[k].push_back(l);
         first = false;
         out.push_back(std::move(P));
       }
@@ -2206,6 +2427,9 @@ template <class T> class static_history {
   // accuracy asked the ends' own error, up to rtol) before the segment is not advancing-only
   T mono_tol_ = T(1e3) * eps<T>();
   mutable bcache bc_;
+  std::vector<crossing_rec> xrec_;  // the crossings found lately (hints for the next half cycle)
+  std::vector<panel_layout> layouts_;  // the new tractions' panel layouts lately (the same)
+  std::vector<std::array<T, 6>> zrates_;  // the zones' rates lately: g1, g2, A, B and the two rates
   std::vector<T> pbreaks_;
   std::vector<sh_panel<T>> panels_;
   std::vector<std::shared_ptr<const sh_segment<T>>> segs_;
