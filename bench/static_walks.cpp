@@ -9,12 +9,14 @@
 //   /tmp/static_walks count 1 60       # flat punch b_f/a = 0.5 (~40 s)
 //   /tmp/static_walks bem 0 400 1 20   # Hertz walks 1..20 against the BEM at N = 400 (~2 min)
 //   /tmp/static_walks bem 1 400 1 20
+//   /tmp/static_walks time 0 60        # CPU time of the walks taken whole, at rtol 1e-8 and full accuracy
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <random>
@@ -45,11 +47,38 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "usage: %s count G WALKS | bem G N FIRST LAST   (G: 0 Hertz, 1 flat punch 0.5)\n", argv[0]);
     return 2;
   }
-  const bool bem = std::strcmp(argv[1], "bem") == 0;
+  const bool bem = std::strcmp(argv[1], "bem") == 0, timing = std::strcmp(argv[1], "time") == 0;
   const int g = std::atoi(argv[2]);
   std::shared_ptr<const pressure_model<double>> pm;
   if (g == 0) pm = std::make_shared<hertz_pressure<double>>();
   else pm = std::make_shared<flat_rounded_pressure<double>>(0.5);
+  if (timing) {
+    const unsigned n = unsigned(std::atoi(argv[3]));
+    for (unsigned seed = 1; seed <= n; ++seed) {
+      const path_t w = random_path(100, seed);
+      double t[2] = {0, 0};
+      bool whole = true;
+      for (int a = 0; a < 2 && whole; ++a) {
+        double best = 1e30;
+        for (int r = 0; r < 3 && whole; ++r) {
+          const std::clock_t c0 = std::clock();
+          try {
+            static_history<double> h(pm, a == 0 ? static_history_accuracy<double>::for_rtol(1e-8)
+                                                : static_history_accuracy<double>());
+            for (const auto &p : w) h.add_vertex(p.first, p.second);
+          } catch (const error &) {
+            whole = false;
+          }
+          best = std::min(best, double(std::clock() - c0) / CLOCKS_PER_SEC);
+        }
+        t[a] = best;
+      }
+      if (whole)
+        std::printf("walk %u (100 vertices): %.1f ms CPU at rtol 1e-8, %.1f ms at full accuracy (best of 3)\n", seed,
+                    t[0] * 1e3, t[1] * 1e3);
+    }
+    return 0;
+  }
   if (!bem) {
     const unsigned n = unsigned(std::atoi(argv[3]));
     std::map<std::string, int> why;
