@@ -24,6 +24,7 @@
 #include "halfslip/core/hertz.hpp"
 #include "halfslip/core/history.hpp"
 #include "halfslip/reference/bem_history.hpp"
+#include "halfslip/reference/random_walk.hpp"
 #include "halfslip/reference/reversal_oracle.hpp"
 #include "halfslip/core/general.hpp"
 #include "halfslip/core/static_history.hpp"
@@ -84,18 +85,7 @@ std::vector<std::array<double, 5>> periodic_cases() {
 }
 
 // a random non-proportional path of n vertices: |Q/fP| <= 0.5, sigma/fp0 in [0, 1.2], steps <= 0.15
-path_t random_path(int n, unsigned seed) {
-  std::mt19937 g(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  path_t p;
-  double q = 0, s = 0;
-  for (int i = 0; i < n; ++i) {
-    q = std::max(-0.5, std::min(0.5, q + 0.15 * u(g)));
-    s = std::max(0.0, std::min(1.2, s + 0.15 * u(g)));
-    p.emplace_back(q, s);
-  }
-  return p;
-}
+path_t random_path(int n, unsigned seed) { return hs::reference::random_walk(n, seed); }
 
 
 // The static solves at an accuracy asked (static_history_accuracy::for_rtol, what hs_history

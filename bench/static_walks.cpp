@@ -25,22 +25,12 @@
 
 #include "halfslip/core/static_history.hpp"
 #include "halfslip/reference/bem_history.hpp"
+#include "halfslip/reference/random_walk.hpp"
 
 using namespace hs::core;
 using path_t = std::vector<std::pair<double, double>>;
 
-static path_t random_path(int n, unsigned seed) {  // bench_history.cpp's generator
-  std::mt19937 g(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  path_t p;
-  double q = 0, s = 0;
-  for (int i = 0; i < n; ++i) {
-    q = std::max(-0.5, std::min(0.5, q + 0.15 * u(g)));
-    s = std::max(0.0, std::min(1.2, s + 0.15 * u(g)));
-    p.emplace_back(q, s);
-  }
-  return p;
-}
+static path_t random_path(int n, unsigned seed) { return hs::reference::random_walk(n, seed); }
 
 int main(int argc, char **argv) {
   if (argc < 4) {

@@ -19,6 +19,7 @@
 #include "halfslip/core/history_fields.hpp"
 #include "halfslip/core/static_history.hpp"
 #include "halfslip/reference/bem_history.hpp"
+#include "halfslip/reference/random_walk.hpp"
 #include "halfslip/reference/reversal_oracle.hpp"
 
 using namespace hs::core;
@@ -575,18 +576,7 @@ TEST_CASE("static history: a fold whose path back runs outside the other end (ag
 // [0, 1.2]), which the static solves now take whole (before: 7 and 2 vertices; folds at which the
 // other end moves out on the way back, symmetric returns), against the BEM, Hertz and the flat punch.
 TEST_CASE("static history: random walks against the BEM (Hertz and flat punch)") {
-  auto walk = [](unsigned seed, size_t n) {
-    std::mt19937 g(seed);
-    std::uniform_real_distribution<double> u(-1, 1);
-    std::vector<std::pair<double, double>> p;
-    double q = 0, s = 0;
-    for (size_t i = 0; i < n; ++i) {
-      q = std::max(-0.5, std::min(0.5, q + 0.15 * u(g)));
-      s = std::max(0.0, std::min(1.2, s + 0.15 * u(g)));
-      p.emplace_back(q, s);
-    }
-    return p;
-  };
+  auto walk = [](unsigned seed, int n) { return hs::reference::random_walk(n, seed); };
   SUBCASE("Hertz, seed 1") { check_against_bem(hertz_pm(), walk(1, 100)); }
   SUBCASE("flat punch b_f/a = 0.5, seed 7") {
     check_against_bem(std::make_shared<flat_rounded_pressure<double>>(0.5), walk(7, 100));
