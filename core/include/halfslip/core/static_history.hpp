@@ -254,6 +254,30 @@ template <class T> struct sh_start {
     const T s = theta_int(cuts(lo, hi, nullptr), [&](const T &xi) { return dhp(xi, e1, e2, d1, d2); });
     return x > e1 ? s : -s;
   }
+  // d_i dh >= 0 at the cuts of band i, to rounding: every band point slipped in its zone's
+  // direction, the premise of taking a phase's slip and energy from its start and end states
+  // (a necessary condition, checked where the cuts are: the band's ends and the cusps inside)
+  bool one_way(int i, const T &e1, const T &e2, int d1, int d2) const {
+    using std::abs;
+    const int d = i == 1 ? d1 : d2;
+    if (d == 0) return true;
+    const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
+    if (!(hi > lo)) return true;
+    const auto c = cuts(lo, hi, nullptr);
+    const size_t n = c.size() - 1;
+    std::vector<T> h(n);  // dh at the outer end of each piece, counted from the stick end
+    T run = 0, big = 0;
+    for (size_t k = 0; k < n; ++k) {
+      const size_t j = i == 1 ? k : n - 1 - k;  // band 2 runs from -e2 leftwards
+      const T part = theta_int({c[j], c[j + 1]}, [&](const T &xi) { return dhp(xi, e1, e2, d1, d2); });
+      run += i == 1 ? part : -part;
+      h[k] = run;
+      big = std::max(big, abs(run));
+    }
+    for (const T &v : h)
+      if (T(d) * v < -(T(1e-9) * big + T(1e-15))) return false;
+    return true;
+  }
   // the energy dissipated in zone i by the slip dh of the state: d_i int_band p dh dx =
   // d_i int_band Pbar dh' (Pbar: the pressure's integral from the point to the edge)
   T energy(int i, const T &e1, const T &e2, int d1, int d2) const {
@@ -1362,6 +1386,9 @@ template <class T> class static_history {
       J.b2 = fb2;
       J.d1 = d1;
       J.d2 = d2;
+      if (!st->one_way(1, fb1, fb2, d1, d2) || !st->one_way(2, fb1, fb2, d1, d2))
+        throw error(status::not_applicable,
+                    "static_history: a band point would have slipped back over a phase with a fold");
       E1 = st->energy(1, fb1, fb2, d1, d2);
       E2 = st->energy(2, fb1, fb2, d1, d2);
       jrec.push_back(std::move(J));
@@ -1479,7 +1506,10 @@ template <class T> class static_history {
       lo = d;
     }
     if (!fell) return false;
-    if (!(hi > 0)) return false;
+    // (a path that falls and does not come back to the fold's load before the stick zone closes:
+    // no two-zone state continues the segment)
+    if (!(hi > 0))
+      throw error(status::not_applicable, "static_history: a fold whose path does not come back to its load");
     for (int it = 0; it < 200 && hi - lo > 4 * eps<T>() * (1 + bi); ++it) {
       const T mid = lo + (hi - lo) / 2;
       if (good(mid)) hi = mid;
