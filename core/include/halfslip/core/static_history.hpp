@@ -1369,6 +1369,12 @@ template <class T> class static_history {
     bool patch = false;
     for (size_t k = 1; k < ev.size() && !patch; ++k)
       if (ev[k][0] < 1 && (k + 1 == ev.size() || ev[k + 1] != ev[k])) patch = !limit_ok_at(ev[k], d1, d2, fb1, fb2);
+    // (and at each piece's last lambda node: a patch that opens between two crossings, or after
+    // the last, and is swept before the next one or the vertex; a review's walk with moves of 0.3,
+    // seed 7, vertex 42: 1.05e-5 p past the limit at the last piece's last nodes)
+    for (size_t k = 0; k < pieces.size() && !patch; ++k)
+      if (!pieces[k].lam.empty())
+        patch = !limit_ok_at({{pieces[k].lam.back(), pieces[k].b1.back(), pieces[k].b2.back()}}, d1, d2, fb1, fb2);
     std::vector<sh_jump<T>> jrec;
     if (!jumps.empty() || patch) {
       auto st = std::make_shared<sh_start<T>>();
