@@ -487,21 +487,101 @@ bool reference_lengths(int kind, double par, const hs_scene &sc, truth &t) {
   return true;
 }
 
-// The scene categories of bench/estimate_sweep.cpp (issue 13), fewer and with
-// another seed: random, Q/fP -> 0, Q/fP -> 1, the regime boundary (Hertz value
-// as the centre), small loads (down to 1e-320), large sigma, negative Q.
+// ---- issue 13: the reduced estimate sweep ---------------------------------------
+// The scene categories of bench/estimate_sweep.cpp (issue 13), fewer and with another
+// seed: 0 random, 1 Q/fP -> 0, 2 Q/fP -> 1, 3 the regime boundary, 4 small loads (down
+// to 1e-320), 5 large sigma, 6 negative Q. Geometries: Hertz (closed forms), the flat
+// punch, the power law, and a user callback returning the Hertz pressure (the general
+// solver on a pressure whose reference is the cheap Hertz one).
+//
+// Why the first version (56 scenes) did not finish in 17 min, measured scene by scene
+// (2-core machine, load ~3): not the Hertz scenes (42 in 6.6 s) but a few general-path
+// scenes, each for a different reason:
+//  - the 20-digit reference of the power law at large sigma: 30 s to more than 40 s a
+//    scene (n = 1.1 .. 3.2, sigma/fp0 = 30 .. 84); of the flat punch 2.5 to 5.2 s;
+//  - the reference near sliding: 1 to 13 s (1 - |Q/fP| = 5.8e-3 .. 4.5e-11);
+//  - power laws with (n - 1)/2 within 1/8 of an integer >= 1, where the pressure is a
+//    tanh-sinh integral per value (docs/models.md): near sliding the double solve itself
+//    took 12.6 s (n = 6.79, 1 - Q/fP = 1e-6, DEFAULT at rtol 1e-10) and 64 s before
+//    NO_CONVERGENCE (1 - Q/fP = 4.5e-11), and its long double truth did not return in 240 s;
+//  - n -> 1 (n < 1.25) under sigma: the long double truth threw after 18 s and the
+//    reference ran past 40 s (n = 1.025, sigma/fp0 = -41; docs/models.md: n -> 1 is open).
+// Hence the design here: the reference supplies d1, d2 of the general path only where it
+// costs ~0.1-0.5 s (categories 0, 1, 3, 4, 6); near sliding and at large sigma the truth is
+// the same solver in long double (bound 64 eps_LD (1 + a/d_min + 1/w), ~2^9 below the
+// double estimate's form); the power law keeps 1.25 <= n <= 20 outside the near-integer
+// bands (their 64 s solve is a finding, over the documented 3 s budget; n -> 1 is documented
+// open; bench/estimate_sweep.cpp keeps both). The boundary of the flat punch and the power
+// law is located by bisection on the double regime (the Hertz value used before is not
+// theirs: those scenes were 1e-3..1e-1 away from it). A scene without a truth is still
+// solved (DEFAULT, rtol 0) and its status counted.
+std::vector<scene_case> issue13_scenes(int kind, int n, unsigned seed);
+bool power_law_cheap(double n) {
+  const double m = (n - 1) / 2;
+  return n >= 1.25 && n <= 20 && !(m >= 0.875 && std::abs(m - std::round(m)) < 0.125);
+}
+
+// the Hertz pressure p0 sqrt(1 - x^2/a^2) as a user callback (user: the hs_scene)
+double hertz_callback(double x, void *user) {
+  const hs_scene &sc = *static_cast<const hs_scene *>(user);
+  const double u = x / sc.a;
+  return sc.p0 * std::sqrt((1 - u) * (1 + u));
+}
+
+int solve_case(const scene_case &c, int model, double rtol, hs_solution **out) {
+  if (c.kind != HS_GEOMETRY_CALLBACK) return solve(c.kind, c.par, c.sc, model, rtol, out);
+  hs_options o;
+  hs_options_default(&o);
+  o.model = model;
+  o.rtol = rtol;
+  hs_geometry g;
+  hs_geometry_default(&g);
+  g.kind = HS_GEOMETRY_CALLBACK;
+  g.pressure = &hertz_callback;
+  g.user = const_cast<hs_scene *>(&c.sc);
+  return hs_solve_geometry(&c.sc, &g, &o, out);
+}
+
+// sigma > 0 where the double quadrature's regime turns from same sign to opposite sign, q > 0
+double located_boundary(scene_case c, double q) {
+  c.sc.Q_over_fP = q;
+  auto regime = [&](double s) {
+    c.sc.sigma_over_fp0 = s;
+    hs_solution *sol = nullptr;
+    if (solve_case(c, HS_MODEL_QUADRATURE, 0, &sol) != HS_OK) return -1;
+    const int r = summary(sol).regime;
+    hs_solution_free(sol);
+    return r;
+  };
+  const double sh = 4 * q / (1 + std::sqrt(1 - q));
+  double lo = 0.5 * sh, hi = 2 * sh;
+  for (int k = 0; k < 20 && regime(lo) != HS_REGIME_SAME_SIGN; ++k) lo *= 0.5;
+  for (int k = 0; k < 20 && regime(hi) != HS_REGIME_OPPOSITE_SIGN; ++k) hi *= 2;
+  for (int k = 0; k < 50 && hi - lo > 4e-16 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    const int r = regime(mid);
+    if (r == HS_REGIME_SAME_SIGN) lo = mid;
+    else if (r == HS_REGIME_OPPOSITE_SIGN) hi = mid;
+    else break;
+  }
+  return 0.5 * (lo + hi);
+}
+
 std::vector<scene_case> issue13_scenes(int kind, int n, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0, 1);
   auto L = [&](double lo, double hi) { return std::pow(10.0, lo + (hi - lo) * U(rng)); };
   auto sgn = [&] { return U(rng) < 0.5 ? -1.0 : 1.0; };
-  const bool hertz = kind == HS_GEOMETRY_HERTZ;
+  const bool closed = kind == HS_GEOMETRY_HERTZ;
   std::vector<scene_case> v;
   for (int i = 0; i < n; ++i) {
     scene_case c;
     c.kind = kind;
-    // power law kept to n <= 20 here: the cost of F grows with n (docs/models.md)
-    c.par = kind == HS_GEOMETRY_FLAT_ROUNDED ? 0.95 * U(rng) : kind == HS_GEOMETRY_POWER_LAW ? 1 + L(-2, 1.28) : 0;
+    c.par = 0;
+    if (kind == HS_GEOMETRY_FLAT_ROUNDED) c.par = 0.95 * U(rng);
+    if (kind == HS_GEOMETRY_POWER_LAW)
+      do c.par = 1.25 * std::pow(16.0, U(rng));
+      while (!power_law_cheap(c.par));
     hs_scene_default(&c.sc);
     c.sc.a = 0.5 + 1.5 * U(rng);
     c.sc.p0 = 0.5 + 1.5 * U(rng);
@@ -513,17 +593,20 @@ std::vector<scene_case> issue13_scenes(int kind, int n, unsigned seed) {
       case 1: q = sgn() * L(-12, -2), s = sgn() * std::abs(q) * L(-2, 2); break;
       case 2: q = sgn() * (1 - L(-12, -2)), s = sgn() * L(-3, 1); break;
       case 3: {
-        q = sgn() * L(-10, -0.01);
-        const double sb = 4 * std::abs(q) / (1 + std::sqrt(1 - std::abs(q)));
-        s = std::copysign(sb, q) * (1 + sgn() * (hertz ? L(-12, -1) : L(-3, -1)));
+        q = L(-10, -0.01);
+        const double delta = sgn() * L(closed ? -17 : -12, -1);
+        const double sb = kind == HS_GEOMETRY_HERTZ || kind == HS_GEOMETRY_CALLBACK
+                              ? 4 * q / (1 + std::sqrt(1 - q))
+                              : located_boundary(c, q);
+        s = sb * (1 + delta);
+        if (U(rng) < 0.5) q = -q, s = -s;
         break;
       }
       case 4:
         q = sgn() * (i % 2 ? L(-320, -30) : L(-30, -8));
         s = sgn() * (i % 2 ? L(-320, -30) : L(-30, -8));
         break;
-      // large sigma: Hertz to 1e4, the quadrature to 300 (it overflows from ~800, docs/models.md)
-      case 5: q = 0.99 * (2 * U(rng) - 1), s = sgn() * L(1, hertz ? 4 : 2.5); break;
+      case 5: q = 0.99 * (2 * U(rng) - 1), s = sgn() * L(1, closed ? 4 : 3); break;
       case 6: q = -U(rng), s = 16 * U(rng) - 8; break;
     }
     c.sc.Q_over_fP = q;
@@ -533,82 +616,315 @@ std::vector<scene_case> issue13_scenes(int kind, int n, unsigned seed) {
   return v;
 }
 
-// Known open (docs/validation.md, "Estimate sweep"): Hertz closed forms in the
-// opposite-sign regime at |sigma/fp0| ~ 4.2..56 (excluded here: 3..80), where the
-// energies (tanh-sinh terminated at sqrt(eps), or sqrt(rtol), over a zone whose
-// B_x has a feature at the scale of the stick width) are off by up to ~4e-12
-// against an estimate of ~4e-14, 1.3e-5 against 3.5e-7 at 1 - Q/fP = 6.5e-12, sigma/fp0 = 4.16
-// (2.4e-8 against 1.6e-9 at rtol = 1e-10).
-// Excluded from the energy check of the reduced sweep below and pinned by the
-// should_fail test case after it.
-bool hertz_energy_open(const scene_case &c, const hs_summary &s) {
-  return c.kind == HS_GEOMETRY_HERTZ && s.regime == HS_REGIME_OPPOSITE_SIGN && std::abs(c.sc.sigma_over_fp0) > 3 &&
-         std::abs(c.sc.sigma_over_fp0) < 80;
+// The reference's d1, d2 (and E1, E2 if asked), directions and regime, read into long
+// double; a value is trusted to its certified digits (>= 17 required).
+struct ref_truth {
+  truth t;
+  int dir[2], regime;
+};
+bool reference_truth(const scene_case &c, int digits, bool energies, ref_truth &out) {
+  hs_ref_scene r;
+  hs_ref_scene_default(&r);
+  char a[64], p0[64], f[64], E[64], q[64], s[64], p[64];
+  std::snprintf(a, 64, "%.45e", c.sc.a);
+  std::snprintf(p0, 64, "%.45e", c.sc.p0);
+  std::snprintf(f, 64, "%.45e", c.sc.f);
+  std::snprintf(E, 64, "%.45e", c.sc.E_star);
+  std::snprintf(q, 64, "%.45e", c.sc.Q_over_fP);
+  std::snprintf(s, 64, "%.45e", c.sc.sigma_over_fp0);
+  std::snprintf(p, 64, "%.45e", c.par);
+  r.geometry = c.kind == HS_GEOMETRY_CALLBACK ? HS_GEOMETRY_HERTZ : c.kind;
+  r.a = a;
+  r.p0 = p0;
+  r.f = f;
+  r.E_star = E;
+  r.Q_over_fP = q;
+  r.sigma_over_fp0 = s;
+  if (c.kind == HS_GEOMETRY_FLAT_ROUNDED) r.flat_over_a = p;
+  if (c.kind == HS_GEOMETRY_POWER_LAW) r.exponent = p;
+  hs_ref_solution *sol = nullptr;
+  if (hs_ref_solve(&r, digits, &sol) != HS_OK) return false;
+  int least = digits;
+  auto get = [&](int what) {
+    char buf[128];
+    int cert = 0;
+    REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, &cert) == HS_OK);
+    const long double v = std::strtold(buf, nullptr);
+    if (v != 0) least = std::min(least, cert);
+    return v;
+  };
+  out.t = truth{get(HS_REF_D1), get(HS_REF_D2), 0, 0, energies, 0};
+  if (energies) out.t.e1 = get(HS_REF_ENERGY1), out.t.e2 = get(HS_REF_ENERGY2);
+  hs_ref_summary rs;
+  rs.struct_size = sizeof rs;
+  REQUIRE(hs_ref_solution_summary(sol, &rs) == HS_OK);
+  out.dir[0] = rs.slip_dir1;
+  out.dir[1] = rs.slip_dir2;
+  out.regime = rs.regime;
+  hs_ref_solution_free(sol);
+  CHECK(least >= 17);
+  // certified to `least` digits, then read into long double (2^-64)
+  out.t.bound = std::max(std::pow(10.0, 1 - least), std::ldexp(1.0, -63));
+  return true;
+}
+
+int solve_status_only(const scene_case &c) {
+  hs_solution *sol = nullptr;
+  const int st = solve_case(c, HS_MODEL_DEFAULT, 0, &sol);
+  hs_solution_free(sol);
+  return st;
+}
+
+struct sweep_tally {
+  int scenes = 0, solves = 0, resolved = 0, unresolved = 0, boundary = 0, from_reference = 0, from_long_double = 0;
+  int energies_checked = 0, auto_reference = 0, callback_tolerance = 0, no_truth = 0, energy_status = 0;
+  int solve_status = 0, vague = 0, undecided = 0, no_truth_failed = 0;
+  double worst = 0;  // largest error / estimate of a resolved zone
+};
+
+// Every claim of one double result against the truth: a resolved zone (d > r) within
+// the relative estimate (d and, if the truth has them, E; plus the truth's own bound),
+// with the reference's direction; an unresolved one within r of the truth (plus the
+// truth's bound) with direction 0; one unresolved zone means BOUNDARY, none the
+// reference's regime.
+void check_claims(const hs_solution *sol, const hs_summary &s, const truth &t, const int *tdir, int tregime,
+                  bool vague_direction_open, sweep_tally &n) {
+  double E[2] = {0, 0};
+  bool energies = t.energies;
+  if (energies && hs_solution_energy(sol, E) != HS_OK) {
+    // a status, not a wrong value: counted by the caller (the callback pressure's energies)
+    ++n.energy_status;
+    energies = false;
+  }
+  const double D[2] = {s.d1, s.d2};
+  const long double TD[2] = {t.d1, t.d2}, TE[2] = {t.e1, t.e2};
+  const int dir[2] = {s.slip_dir1, s.slip_dir2};
+  int unresolved = 0;
+  CAPTURE(s.zone_resolution);
+  CAPTURE(s.error_estimate);
+  CAPTURE(t.bound);
+  for (int z = 0; z < 2; ++z) {
+    CAPTURE(z);
+    CAPTURE(D[z]);
+    CAPTURE(double(TD[z]));
+    if (!(D[z] > s.zone_resolution)) {
+      ++unresolved;
+      ++n.unresolved;
+      CHECK(dir[z] == 0);
+      CHECK(std::abs(D[z] - TD[z]) <= s.zone_resolution + t.bound * TD[z]);
+      continue;
+    }
+    ++n.resolved;
+    if (!(s.error_estimate < 1)) {
+      // an estimate of 1 or more: the relative error against the truth is not bounded by it,
+      // the documented |d - d_true| <= e d + r is (docs/models.md); the direction is still
+      // claimed, except in the open callback class pinned below
+      ++n.vague;
+      CHECK(std::abs(D[z] - TD[z]) <= s.error_estimate * D[z] + s.zone_resolution + t.bound * TD[z]);
+      if (tdir && !vague_direction_open) CHECK(dir[z] == tdir[z]);
+      continue;
+    }
+    if (tdir) CHECK(dir[z] == tdir[z]);
+    // a resolved zone that is empty in the truth has no relative bound: it breaks the claim
+    CHECK(TD[z] > 0);
+    if (!(TD[z] > 0)) continue;
+    const double ed = rel(D[z], TD[z]);
+    CHECK(ed <= s.error_estimate + t.bound);
+    double worst = ed;
+    // a zone energy that underflows in the truth is left out (docs/validation.md)
+    if (energies && double(TE[z]) > 0) {
+      const double ee = rel(E[z], TE[z]);
+      CAPTURE(E[z]);
+      CAPTURE(double(TE[z]));
+      CHECK(ee <= s.error_estimate + t.bound);
+      worst = std::max(worst, ee);
+      ++n.energies_checked;
+    }
+    // the ratio only where the truth's own bound is below the estimate (elsewhere, e.g. the
+    // asymptotic model's energies of tiny zones against long double, the truth cannot judge)
+    if (t.bound < s.error_estimate) n.worst = std::max(n.worst, worst / s.error_estimate);
+    else ++n.undecided;
+  }
+  if (unresolved == 1) CHECK(s.regime == HS_REGIME_BOUNDARY);
+  if (unresolved == 0 && tregime >= 0 && (s.error_estimate < 1 || !vague_direction_open))
+    CHECK(s.regime == tregime);
+  n.boundary += s.regime == HS_REGIME_BOUNDARY;
 }
 
 }  // namespace
 
-// Skipped for now: its first run in ctest did not finish within 17 min on the shared
-// machine (a scene of the general path, probably AUTO's reference route or a
-// long double truth near sliding, is slow), and the flat-punch findings 3 and 4 of
-// docs/validation.md ("Estimate sweep") are expected to fail it. Run:
-//   build/tests/test_select -tc="issue 13: reduced*" --no-skip -s
-TEST_CASE("issue 13: reduced estimate sweep: DEFAULT and AUTO within their estimates on every scene category" *
-          doctest::skip()) {
-  // Full sweep: scripts/estimate_sweep.sh. Every scene must be solved (the
-  // reference solves all of them) and its true error must be within the
-  // estimate; AUTO at 1e-10 also within rtol.
-  int checked = 0, energies_skipped = 0, reference_failed = 0;
-  const std::vector<std::pair<int, int>> plan = {
-      {HS_GEOMETRY_HERTZ, 42}, {HS_GEOMETRY_FLAT_ROUNDED, 7}, {HS_GEOMETRY_POWER_LAW, 7}};
-  for (const auto &g : plan)
-    for (const auto &c : issue13_scenes(g.first, g.second, 1313)) {
-      truth t0{0, 0, 0, 0, false, 0};
-      if (c.kind == HS_GEOMETRY_HERTZ) t0 = hertz_truth(c.sc);
-      else {
-        // long double energies where its solver answers (it has no asymptotic fallback for
-        // zones below its own resolution: small loads), the reference's d1, d2 always
+TEST_CASE("issue 13: reduced estimate sweep: DEFAULT and AUTO within their estimates on every scene category") {
+  // Full sweep: scripts/estimate_sweep.sh (docs/validation.md, "Estimate sweep").
+  // Models: DEFAULT and AUTO, each at rtol 0 and 1e-10. Truths: Hertz and the callback
+  // (Hertz pressure): the reference at 25 digits with energies; flat punch and power law:
+  // see the comment above issue13_scenes.
+  const std::vector<std::pair<int, double>> models = {
+      {HS_MODEL_DEFAULT, 0}, {HS_MODEL_DEFAULT, 1e-10}, {HS_MODEL_AUTO, 0}, {HS_MODEL_AUTO, 1e-10}};
+  const std::vector<std::pair<int, int>> plan = {{HS_GEOMETRY_HERTZ, 140},
+                                                {HS_GEOMETRY_CALLBACK, 28},
+                                                {HS_GEOMETRY_FLAT_ROUNDED, 42},
+                                                {HS_GEOMETRY_POWER_LAW, 42}};
+  std::map<int, sweep_tally> tally;
+  for (const auto &g : plan) {
+    const auto scenes = issue13_scenes(g.first, g.second, 1313);
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      const scene_case &c = scenes[i];
+      const int cat = int(i % 7);
+      sweep_tally &n = tally[c.kind];
+      CAPTURE(c.kind);
+      CAPTURE(cat);
+      CAPTURE(c.par);
+      CAPTURE(c.sc.a);
+      CAPTURE(c.sc.p0);
+      CAPTURE(c.sc.f);
+      CAPTURE(c.sc.E_star);
+      CAPTURE(c.sc.Q_over_fP);
+      CAPTURE(c.sc.sigma_over_fp0);
+      ref_truth rt;
+      rt.regime = -1;
+      bool have_ref = false;
+      const bool general = c.kind == HS_GEOMETRY_FLAT_ROUNDED || c.kind == HS_GEOMETRY_POWER_LAW;
+      if (!general) {
+        REQUIRE(reference_truth(c, 25, true, rt));
+        have_ref = true;
+      } else {
+        // energies (and, near sliding and at large sigma, d1, d2) from long double
+        truth ld{0, 0, 0, 0, false, 0};
+        bool have_ld = true;
         try {
-          t0 = general_truth(c.kind, c.par, c.sc);
+          ld = general_truth(c.kind, c.par, c.sc);
         } catch (const std::exception &) {
-          ++energies_skipped;
+          have_ld = false;  // its solver has no asymptotic fallback: zones below its resolution
         }
-        if (!reference_lengths(c.kind, c.par, c.sc, t0)) {
-          ++reference_failed;
-          continue;
+        if (cat == 2 || cat == 5) {
+          if (!have_ld) {
+            ++n.no_truth;
+            n.no_truth_failed += solve_status_only(c) != HS_OK;
+            continue;
+          }
+          rt.t = ld;
+        } else {
+          if (!reference_truth(c, 20, false, rt)) {
+            ++n.no_truth;
+            n.no_truth_failed += solve_status_only(c) != HS_OK;
+            continue;
+          }
+          have_ref = true;
+          if (have_ld) rt.t.e1 = ld.e1, rt.t.e2 = ld.e2, rt.t.energies = true, rt.t.bound = std::max(rt.t.bound, ld.bound);
         }
       }
-      for (const auto &m : std::vector<std::pair<int, double>>{
-               {HS_MODEL_DEFAULT, 0}, {HS_MODEL_DEFAULT, 1e-10}, {HS_MODEL_AUTO, 0}, {HS_MODEL_AUTO, 1e-10}}) {
-        CAPTURE(c.kind);
-        CAPTURE(c.par);
-        CAPTURE(c.sc.Q_over_fP);
-        CAPTURE(c.sc.sigma_over_fp0);
+      ++n.scenes;
+      (have_ref ? n.from_reference : n.from_long_double)++;
+      for (const auto &m : models) {
         CAPTURE(m.first);
         CAPTURE(m.second);
         hs_solution *sol = nullptr;
-        REQUIRE(solve(c.kind, c.par, c.sc, m.first, m.second, &sol) == HS_OK);
-        const auto s = summary(sol);
-        truth t = t0;
-        // the reference route of AUTO for the general path: d1, d2 only (its energies take seconds)
-        if (s.model == HS_MODEL_REFERENCE && c.kind != HS_GEOMETRY_HERTZ) t.energies = false;
-        if (hertz_energy_open(c, s)) t.energies = false, ++energies_skipped;
-        const double err = true_error(sol, t);
-        CAPTURE(err);
-        CAPTURE(s.error_estimate);
-        CAPTURE(s.model);
-        CHECK(err <= s.error_estimate + t.bound);
-        if (m.first == HS_MODEL_AUTO && m.second > 0) {
-          CHECK(s.error_estimate <= m.second);
-          CHECK(err <= m.second + t.bound);
+        const int st = solve_case(c, m.first, m.second, &sol);
+        // a callback pressure has no reference route: AUTO may refuse a tolerance that an
+        // unresolved zone (regime boundary) or the quadrature's floor does not meet
+        if (c.kind == HS_GEOMETRY_CALLBACK && m.first == HS_MODEL_AUTO && m.second > 0 && st == HS_ERR_TOLERANCE) {
+          ++n.callback_tolerance;
+          continue;
         }
-        ++checked;
+        if (st != HS_OK) {
+          // the callback pressure at loads below ~1e-100: no double model answers (found here)
+          if (c.kind == HS_GEOMETRY_CALLBACK && cat == 4 && st == HS_ERR_NOT_APPLICABLE) ++n.solve_status;
+          else CHECK(st == HS_OK);
+          continue;
+        }
+        const hs_summary s = summary(sol);
+        CAPTURE(s.model);
+        truth t = rt.t;
+        // AUTO's reference route on the general path: d1, d2 (its energies take seconds)
+        if (s.model == HS_MODEL_REFERENCE) {
+          ++n.auto_reference;
+          if (general) t.energies = false;
+        }
+        check_claims(sol, s, t, have_ref ? rt.dir : nullptr, have_ref ? rt.regime : -1,
+                     c.kind == HS_GEOMETRY_CALLBACK, n);
+        if (m.first == HS_MODEL_AUTO && m.second > 0) CHECK(s.error_estimate <= m.second);
+        ++n.solves;
         hs_solution_free(sol);
       }
     }
-  CHECK(reference_failed <= 2);  // the reference's own NO_CONVERGENCE (small loads, general path)
-  CHECK(checked == 4 * (56 - reference_failed));
-  CHECK(energies_skipped <= 16);  // the open class and the small loads stay a small part of the set
+  }
+  for (const auto &k : tally) {
+    const sweep_tally &n = k.second;
+    MESSAGE("geometry " << k.first << ": " << n.scenes << " scenes (" << n.from_reference << " reference, "
+                        << n.from_long_double << " long double truths; " << n.no_truth << " without a truth, "
+                        << n.no_truth_failed << " of them not solved by DEFAULT), "
+                        << n.solves << " solves, " << n.resolved << " resolved zones (" << n.energies_checked
+                        << " with energies), " << n.unresolved << " unresolved, " << n.boundary << " BOUNDARY, "
+                        << n.auto_reference << " AUTO reference routes, " << n.callback_tolerance
+                        << " callback TOLERANCE, " << n.solve_status << " callback NOT_APPLICABLE, "
+                        << n.energy_status << " energies refused, " << n.vague << " resolved zones with estimate >= 1, "
+                        << n.undecided << " zones the truth cannot judge; worst error/estimate " << n.worst);
+  }
+  // every geometry reaches every kind of claim
+  for (int kind : {HS_GEOMETRY_HERTZ, HS_GEOMETRY_FLAT_ROUNDED, HS_GEOMETRY_POWER_LAW, HS_GEOMETRY_CALLBACK}) {
+    CAPTURE(kind);
+    const sweep_tally &n = tally[kind];
+    // no truth: the reference's own NO_CONVERGENCE at loads below ~1e-60 on the general path
+    // (and once at sigma/fp0 = 7.3), long double near sliding (1 - |Q/fP| <= 1.4e-10); 5 and 4
+    CHECK(n.no_truth <= 6);
+    // DEFAULT answers them all but one each (NO_CONVERGENCE, and the long double solver
+    // fails there too): the flat punch b_f/a = 0.80 at 1 - Q/fP = 4.5e-11, sigma/fp0 = 0.018
+    // (every model; the reference solves it in 9 s), the power law n = 9.875 at
+    // 1 + Q/fP = 1.4e-10, sigma/fp0 = -2.2 (found here, docs/validation.md)
+    CHECK(n.no_truth_failed <= (kind == HS_GEOMETRY_FLAT_ROUNDED || kind == HS_GEOMETRY_POWER_LAW ? 1 : 0));
+    CHECK(n.resolved > 4 * n.scenes);
+    CHECK(n.unresolved > 0);
+    CHECK(n.energies_checked > 2 * n.scenes);
+    CHECK(n.worst <= 1);
+  }
+  // the callback's statuses (found by this sweep, docs/validation.md): energies refused with
+  // NO_CONVERGENCE next to the regime boundary and for zones below ~1e-6 a (17 of 92 solves),
+  // NOT_APPLICABLE at loads below ~1e-20 (3 scenes x 4 solves); kept from growing unnoticed
+  CHECK(tally[HS_GEOMETRY_CALLBACK].energy_status <= 17);
+  CHECK(tally[HS_GEOMETRY_CALLBACK].solve_status <= 12);
+  for (int kind : {HS_GEOMETRY_HERTZ, HS_GEOMETRY_FLAT_ROUNDED, HS_GEOMETRY_POWER_LAW}) {
+    CAPTURE(kind);
+    CHECK(tally[kind].energy_status == 0);
+    CHECK(tally[kind].solve_status == 0);
+  }
+}
+
+TEST_CASE("issue 13: callback (Hertz pressure) near its regime boundary: a resolved zone with the wrong direction" *
+          doctest::should_fail()) {
+  // Found by the reduced sweep above: the general solver on a callback returning the Hertz
+  // pressure, 1.4e-16 above the regime boundary (sigma = s_b (1 + delta)). The reference:
+  // opposite sign, d1 = 8.63e-19 (units of a), direction +1. DEFAULT (the quadrature): same
+  // sign, d1 = 8.70e-12 > zone_resolution 3.5e-15, direction -1, error_estimate 1.2e4. The
+  // length is within the documented |d - d_true| <= e d + r, but a zone above r is reported
+  // resolved with a direction and a regime that are wrong; its relative error against the
+  // truth is 1.0e7. Open: pinned here (for the callback the sweep checks only e d + r where
+  // e >= 1; for the others, where e >= 1 (Hertz at the boundary, 1.87; underflowed energies,
+  // infinite), it checks the direction and regime too, and they hold).
+  scene_case c;
+  c.kind = HS_GEOMETRY_CALLBACK;
+  c.par = 0;
+  hs_scene_default(&c.sc);
+  c.sc.a = 0.97193189851012163;
+  c.sc.p0 = 1.62000321920526;
+  c.sc.f = 0.50789612459327205;
+  c.sc.E_star = 1.8171087039050142;
+  c.sc.Q_over_fP = 3.9699871353655001e-07;
+  c.sc.sigma_over_fp0 = 7.9399750587355301e-07;
+  ref_truth rt;
+  REQUIRE(reference_truth(c, 25, false, rt));
+  CHECK(rt.dir[0] == 1);
+  hs_solution *sol = nullptr;
+  REQUIRE(solve_case(c, HS_MODEL_DEFAULT, 0, &sol) == HS_OK);
+  const hs_summary s = summary(sol);
+  CAPTURE(s.d1);
+  CAPTURE(s.zone_resolution);
+  CAPTURE(s.error_estimate);
+  CAPTURE(double(rt.t.d1));
+  CHECK(std::abs(s.d1 - rt.t.d1) <= s.error_estimate * s.d1 + s.zone_resolution);  // holds
+  CHECK(s.d1 > s.zone_resolution);                                                 // holds: "resolved"
+  CHECK(s.slip_dir1 == rt.dir[0]);                                                 // fails: -1
+  CHECK(s.regime == rt.regime);                                                    // fails: same sign
+  hs_solution_free(sol);
 }
 
 TEST_CASE("issue 13: asymptotic estimate includes rounding: tiny loads are not claimed below eps") {
