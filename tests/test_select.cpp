@@ -114,17 +114,21 @@ hs_summary summary(const hs_solution *sol) {
   return s;
 }
 
-int solve(int kind, double par, const hs_scene &sc, int model, double rtol, hs_solution **out) {
+int solve_with(const hs_scene &sc, const hs_geometry &g, int model, double rtol, hs_solution **out) {
   hs_options o;
   hs_options_default(&o);
   o.model = model;
   o.rtol = rtol;
+  return hs_solve_geometry(&sc, &g, &o, out);
+}
+
+int solve(int kind, double par, const hs_scene &sc, int model, double rtol, hs_solution **out) {
   hs_geometry g;
   hs_geometry_default(&g);
   g.kind = kind;
   g.flat_over_a = par;
   g.exponent = par;
-  return hs_solve_geometry(&sc, &g, &o, out);
+  return solve_with(sc, g, model, rtol, out);
 }
 
 struct scene_case {
@@ -530,16 +534,12 @@ double hertz_callback(double x, void *user) {
 
 int solve_case(const scene_case &c, int model, double rtol, hs_solution **out) {
   if (c.kind != HS_GEOMETRY_CALLBACK) return solve(c.kind, c.par, c.sc, model, rtol, out);
-  hs_options o;
-  hs_options_default(&o);
-  o.model = model;
-  o.rtol = rtol;
   hs_geometry g;
   hs_geometry_default(&g);
   g.kind = HS_GEOMETRY_CALLBACK;
   g.pressure = &hertz_callback;
   g.user = const_cast<hs_scene *>(&c.sc);
-  return hs_solve_geometry(&c.sc, &g, &o, out);
+  return solve_with(c.sc, g, model, rtol, out);
 }
 
 // sigma > 0 where the double quadrature's regime turns from same sign to opposite sign, q > 0
