@@ -39,22 +39,35 @@ struct truth {
   double bound;   // the truth's own error bound (relative, d and E)
 };
 
+// A double scene as the reference backend's decimal strings (all the digits of each double), kept in
+// txt for as long as r is used; par is b_f/a or the exponent for those geometries.
+struct ref_text {
+  char a[64], p0[64], f[64], E[64], q[64], s[64], p[64];
+};
+void to_ref_scene(int kind, double par, const hs_scene &sc, ref_text &txt, hs_ref_scene &r) {
+  hs_ref_scene_default(&r);
+  std::snprintf(txt.a, 64, "%.45e", sc.a);
+  std::snprintf(txt.p0, 64, "%.45e", sc.p0);
+  std::snprintf(txt.f, 64, "%.45e", sc.f);
+  std::snprintf(txt.E, 64, "%.45e", sc.E_star);
+  std::snprintf(txt.q, 64, "%.45e", sc.Q_over_fP);
+  std::snprintf(txt.s, 64, "%.45e", sc.sigma_over_fp0);
+  std::snprintf(txt.p, 64, "%.45e", par);
+  r.geometry = kind;
+  r.a = txt.a;
+  r.p0 = txt.p0;
+  r.f = txt.f;
+  r.E_star = txt.E;
+  r.Q_over_fP = txt.q;
+  r.sigma_over_fp0 = txt.s;
+  if (kind == HS_GEOMETRY_FLAT_ROUNDED) r.flat_over_a = txt.p;
+  if (kind == HS_GEOMETRY_POWER_LAW) r.exponent = txt.p;
+}
+
 truth hertz_truth(const hs_scene &sc) {
   hs_ref_scene r;
-  hs_ref_scene_default(&r);
-  char a[64], p0[64], f[64], E[64], q[64], s[64];
-  std::snprintf(a, 64, "%.45e", sc.a);
-  std::snprintf(p0, 64, "%.45e", sc.p0);
-  std::snprintf(f, 64, "%.45e", sc.f);
-  std::snprintf(E, 64, "%.45e", sc.E_star);
-  std::snprintf(q, 64, "%.45e", sc.Q_over_fP);
-  std::snprintf(s, 64, "%.45e", sc.sigma_over_fp0);
-  r.a = a;
-  r.p0 = p0;
-  r.f = f;
-  r.E_star = E;
-  r.Q_over_fP = q;
-  r.sigma_over_fp0 = s;
+  ref_text txt;
+  to_ref_scene(HS_GEOMETRY_HERTZ, 0, sc, txt, r);
   hs_ref_solution *sol = nullptr;
   REQUIRE(hs_ref_solve(&r, 40, &sol) == HS_OK);
   auto get = [&](int what) {
@@ -456,24 +469,8 @@ namespace {
 // false where the reference itself does not solve the scene (counted, skipped)
 bool reference_lengths(int kind, double par, const hs_scene &sc, truth &t) {
   hs_ref_scene r;
-  hs_ref_scene_default(&r);
-  char a[64], p0[64], f[64], E[64], q[64], s[64], p[64];
-  std::snprintf(a, 64, "%.45e", sc.a);
-  std::snprintf(p0, 64, "%.45e", sc.p0);
-  std::snprintf(f, 64, "%.45e", sc.f);
-  std::snprintf(E, 64, "%.45e", sc.E_star);
-  std::snprintf(q, 64, "%.45e", sc.Q_over_fP);
-  std::snprintf(s, 64, "%.45e", sc.sigma_over_fp0);
-  std::snprintf(p, 64, "%.45e", par);
-  r.geometry = kind;
-  r.a = a;
-  r.p0 = p0;
-  r.f = f;
-  r.E_star = E;
-  r.Q_over_fP = q;
-  r.sigma_over_fp0 = s;
-  if (kind == HS_GEOMETRY_FLAT_ROUNDED) r.flat_over_a = p;
-  if (kind == HS_GEOMETRY_POWER_LAW) r.exponent = p;
+  ref_text txt;
+  to_ref_scene(kind, par, sc, txt, r);
   hs_ref_solution *sol = nullptr;
   if (hs_ref_solve(&r, 20, &sol) != HS_OK) return false;
   auto get = [&](int what) {
@@ -624,24 +621,8 @@ struct ref_truth {
 };
 bool reference_truth(const scene_case &c, int digits, bool energies, ref_truth &out) {
   hs_ref_scene r;
-  hs_ref_scene_default(&r);
-  char a[64], p0[64], f[64], E[64], q[64], s[64], p[64];
-  std::snprintf(a, 64, "%.45e", c.sc.a);
-  std::snprintf(p0, 64, "%.45e", c.sc.p0);
-  std::snprintf(f, 64, "%.45e", c.sc.f);
-  std::snprintf(E, 64, "%.45e", c.sc.E_star);
-  std::snprintf(q, 64, "%.45e", c.sc.Q_over_fP);
-  std::snprintf(s, 64, "%.45e", c.sc.sigma_over_fp0);
-  std::snprintf(p, 64, "%.45e", c.par);
-  r.geometry = c.kind == HS_GEOMETRY_CALLBACK ? HS_GEOMETRY_HERTZ : c.kind;
-  r.a = a;
-  r.p0 = p0;
-  r.f = f;
-  r.E_star = E;
-  r.Q_over_fP = q;
-  r.sigma_over_fp0 = s;
-  if (c.kind == HS_GEOMETRY_FLAT_ROUNDED) r.flat_over_a = p;
-  if (c.kind == HS_GEOMETRY_POWER_LAW) r.exponent = p;
+  ref_text txt;
+  to_ref_scene(c.kind == HS_GEOMETRY_CALLBACK ? HS_GEOMETRY_HERTZ : c.kind, c.par, c.sc, txt, r);
   hs_ref_solution *sol = nullptr;
   if (hs_ref_solve(&r, digits, &sol) != HS_OK) return false;
   int least = digits;
