@@ -315,6 +315,31 @@ TEST_CASE("Ciavarella-Jager: stick half-width = contact half-width under P(1 - Q
 }
 
 // ---------------------------------------------------------------------------
+// b_f/a from the load from 1e-20 (b_f/a = 1 - 4e-15) to 1e300, g(b_f/a)/(b_f/a)^2 = 2ARP/b_f^2
+// (fuzz_dimensional, CI 2026-11-27: at 1.4e235 the root search stopped at b_f/a = 2.2e-103,
+// 1e14 times the root, where its step overflowed). The residual of g(beta) = target beta^2
+// is evaluated in 50-digit MPFR at the double beta: the root to a few ulps of beta.
+TEST_CASE("flat-rounded: b_f/a from the load, targets 1e-20 to 1e300") {
+  using fr = core::flat_rounded_pressure<double>;
+  using M = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<50>>;
+  for (int k = -20; k <= 300; k += 4) {
+    for (double m : {1.0, 3.7}) {
+      const double target = m * std::pow(10.0, k);
+      CAPTURE(target);
+      const double a = fr::half_width_from_load(target / 2, 1.0, 1.0, 1.0);  // b_f = 1: a = 1/beta
+      const double b = 1 / a;
+      REQUIRE(b > 0);
+      REQUIRE(b < 1);
+      // F(b) = g(b) - target b^2 and the change of F over one ulp of b: the root within 4 ulps
+      const M bm(b), tm(target), y = 2 * acos(bm);
+      const M F = (y - sin(y)) - tm * bm * bm;
+      const M dF = abs(-4 * sqrt(1 - bm * bm) - 2 * tm * bm) * M(b) * EPS;
+      CHECK(abs(F) <= 4 * dF);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
 TEST_CASE("flat-rounded and power law: double vs long double, and the raw side conditions") {
   struct sc {
     double q, s;

@@ -557,7 +557,7 @@ struct opposite_start_table {
   static constexpr double q_max = 0.999;
   static constexpr double K = 8, D_max = 80;
   double A[nx][ny], B[nx][ny], C[nx][ny];
-  double W[nx], Ci[nx];  // w and c_inf at the x nodes
+  double W[nx];  // w at the x nodes
   bool ok = true;        // every node solved (else the table is not used)
 
   static double q_of_x(double x) {
@@ -574,7 +574,6 @@ struct opposite_start_table {
       double c, w;
       sliding_stick_point(q, c, w);
       W[i] = w;
-      Ci[i] = c;
       const double m = q / (1 + std::sqrt(1 - q));
       for (int j = 0; j < ny; ++j) {
         // the row y = 0 is the limit D -> 0 (taken at D = 1e-7 w)
@@ -622,11 +621,8 @@ struct opposite_start_table {
     const double r = std::cbrt(1 - q);
     double wx[4];
     const int i0 = weights((1 - r) / (1 - r_max) * (nx - 1), nx, wx);
-    double w = 0, c = 0;
-    for (int a = 0; a < 4; ++a) {
-      w += wx[a] * W[i0 + a];
-      c += wx[a] * Ci[i0 + a];
-    }
+    double w = 0;
+    for (int a = 0; a < 4; ++a) w += wx[a] * W[i0 + a];
     const double m = q / (1 + std::sqrt(1 - q));
     const double D = s - 4 * m;
     if (!(D > 0) || !(w > 0)) return false;
