@@ -185,10 +185,12 @@ void static_rtol_rows(FILE *csv) {
 int main(int argc, char **argv) {
   // bench_history OUT.csv: every row; bench_history --static-rtol OUT.csv: only the static
   // solves' speed-accuracy rows (a minute, where the whole run takes many); bench_history OUT.csv
-  // --static-only: only section 5, the static solves' robustness and cost rows (a minute)
+  // --static-only: only section 5, the static solves' robustness and cost rows (a minute);
+  // bench_history OUT.csv --walks-only: only section 3, the march on the random walks (~15 min)
   const bool static_only = argc > 1 && std::string(argv[1]) == "--static-rtol";
   const char *out = argc > 1 + int(static_only) ? argv[1 + int(static_only)] : "history.csv";
   const bool section5_only = !static_only && argc > 2 && std::strcmp(argv[2], "--static-only") == 0;
+  const bool walks_only = !static_only && argc > 2 && std::strcmp(argv[2], "--walks-only") == 0;
   FILE *csv = std::fopen(out, "w");
   if (!csv) return 1;
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
@@ -203,6 +205,7 @@ int main(int argc, char **argv) {
   auto flat = std::make_shared<flat_rounded_pressure<double>>(0.5);
 
   if (!section5_only) {
+  if (!walks_only) {
   // 1. steady proportional Hertz cycle (+-(0.5, 0.4)): energy per cycle vs 4 x monotonic
   {
     hertz_scene<double> sc;
@@ -478,6 +481,7 @@ int main(int argc, char **argv) {
     }
   }
 
+  }  // !walks_only
   // 3. robustness and cost on random 100-vertex non-proportional paths (|Q/fP| <= 0.5,
   // sigma/fp0 in [0, 1.2], moves up to 0.15), Hertz and the flat punch, march at rtol 1e-8
   for (int g = 0; g < 2; ++g) {
@@ -523,7 +527,7 @@ int main(int argc, char **argv) {
   // 4. robustness on periodic loading: 162 cycles (Q_a 0.1-0.6, Q_m 0-0.15, sigma_m 0-1.5,
   // sigma_a 0-1, phase 0-180 degrees; 3 cycles of 16 chords after sigma first), Hertz, the march at
   // max_step 1/32 without refinement
-  {
+  if (!walks_only) {
     int ok = 0, n = 0, ok_low = 0, n_low = 0;
     double tsum = 0;
     for (const auto &pc : periodic_cases()) {
@@ -561,7 +565,7 @@ int main(int argc, char **argv) {
   // "non-proportional path of 100 vertices"), Hertz and flat punch, against the steady
   // cycle's closed form / general solution; (b) how far they take the random walks and
   // the periodic loadings above (the rest is marched by hs_history).
-  {
+  if (!walks_only) {
     for (int g = 0; g < 2; ++g) {
       std::shared_ptr<const pressure_model<double>> pm =
           g == 0 ? hertz : std::shared_ptr<const pressure_model<double>>(std::make_shared<flat_rounded_pressure<double>>(0.5));
