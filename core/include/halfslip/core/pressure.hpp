@@ -768,9 +768,9 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
   }
 
  private:
-  // F for m = k + delta, k = round(m) >= 0, 0 < |delta| < 1/8, y = x^2 < 1/2, z = 1 - y. With I_p = int_0^1 (y + z v^2)^p dv,
-  // F = I_(m - 1/2), integration by parts of d/dv [v (y + z v^2)^p] gives for every
-  // real p (y > 0)
+  // F for m = k + delta, k = round(m) >= 0, 0 < |delta| < 1/8, y = x^2 < 1/2, z = 1 - y.
+  // With I_p = int_0^1 (y + z v^2)^p dv, F = I_(m - 1/2), integration by parts of
+  // d/dv [v (y + z v^2)^p] gives for every real p (y > 0)
   //   I_p = (1 + 2 p y I_(p-1)) / (2p + 1),
   // the recurrence of the odd-n branch: k steps, p = delta + 1/2, ..., m - 1/2, from
   // F_delta = I_(delta - 1/2), F at the exponent 1 + 2 delta. Each step adds two
@@ -781,6 +781,7 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
   // for delta < 0). Checked against 50-digit quadrature of the definition in
   // tests/test_switches.cpp; derivation in docs/models.md ("Power law near odd n").
   T F_near_int(const T &x, const T &y, const T &z) const {
+    if (!(y == y)) return y;  // NaN: the series' stopping test would never hold
     if (x == 0) return 1 / (n_ - 1);
     T I = F_delta(x, y, z);
     for (int i = 1; i <= k_; ++i) {
