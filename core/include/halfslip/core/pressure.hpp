@@ -590,8 +590,10 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
 //                 + |x|^(2m) (sqrt(pi)/2) Gamma(-m)/Gamma(1/2-m) / sqrt(1-x^2);
 //   n odd: the recurrence I_p = (1 + 2 p x^2 I_{p-1})/(2p+1) from
 //     I_{-1/2} = asinh(sqrt(1-x^2)/|x|)/sqrt(1-x^2);
-//   otherwise (m near an integer): tanh-sinh quadrature of
-//     F = (1/beta) int_0^W (cosh t - beta sinh t)^(n-1) dt, beta = sqrt(1-x^2), W = atanh(beta).
+//   otherwise (m = k + delta near an integer k): the same recurrence, which holds
+//     for every real p (integration by parts of the definition), k steps from
+//     F at the exponent 1 + 2 delta, that by the connection formula regrouped
+//     around delta = 0 (F_near_int; issue 13: was a tanh-sinh integral per value).
 // x = 0 is a graded breakpoint unless n is an even integer (F is then a polynomial).
 template <class T> class power_law_pressure final : public pressure_model<T> {
  public:
@@ -604,21 +606,22 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     even_ = floor(hn) == hn;
     const T mr = floor(m_ + T(0.5));
     odd_ = (mr == m_);
-    // Near an integer m the connection formula's two parts, each ~ |x|^(2m)/delta
-    // (delta = |m - round(m)|), cancel down to ~ |x|^(2m) with |x|^2 < 1/2, so its
-    // error relative to F ~ 1/n is ~ eps n 2^-m/delta: quadrature only where that
-    // is not small (delta < 1/8 for small m, as before; delta < n 2^-m once m > ~6).
-    // The quadrature costs a tanh-sinh integral per value: with the old 1/8 for
-    // every m a power-law solve at n = 307.2 took 17 s (issue 13).
-    using std::ldexp;
-    near_int_ = !odd_ && abs(m_ - mr) < T(0.125) && abs(m_ - mr) < n * ldexp(T(1), -int(std::min(T(60), m_)));
-    // m near 0 (1 < n < 1.25): the connection formula without its cancellation
-    // (F_near_zero), not the quadrature (issue 13: n = 1.05 took 4.5-8.9 s a solve,
-    // n = 1.02 at Q/fP = 0.9977, sigma/fp0 = 3 ran 38 s and failed)
-    if (near_int_ && mr == 0) {
-      near_int_ = false;
-      near_zero_ = true;
-      lnc_ = log_connection_near_zero(m_);
+    // Near an integer k = round(m) the connection formula's two parts, each ~ y^k/delta
+    // (delta = m - k), cancel, and its series S must be summed past its pole term j = k
+    // (~ y^k/delta times the one before it), which the stopping test on small terms
+    // skips for small y and large k: F was off by 1e4 eps at n = 61 + 2^-19, x = 1/2
+    // (issue 13; the old band |delta| < n 2^-m sent such n to the connection formula).
+    // For |delta| < 1/8, every k, F is a series and k steps of a recurrence
+    // (F_near_int); before, for 1 <= k it was a tanh-sinh integral per value: n = 6.79
+    // near sliding took 6-13 s a solve, and NO_CONVERGENCE after 30-64 s at
+    // 1 - Q/fP = 4.5e-11 (and with that band for every m, n = 307.2 took 17 s); for
+    // k = 0 n = 1.05 took 4.5-8.9 s, n = 1.02 at Q/fP = 0.9977, sigma/fp0 = 3 ran 38 s
+    // and failed (issue 13). delta = m - k is exact (Sterbenz).
+    near_int_ = !odd_ && abs(m_ - mr) < T(0.125);
+    if (near_int_) {
+      k_ = int(mr);
+      delta_ = m_ - mr;
+      lnc_ = log_connection_near_zero(delta_);
     }
     if (!even_ && !odd_ && !near_int_)
       // (sqrt(pi)/2) Gamma(-m)/Gamma(1/2 - m) by reflection,
@@ -699,9 +702,7 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
   T F(const T &x, const T &z) const {
     using std::abs;
     using std::asinh;
-    using std::cosh;
     using std::pow;
-    using std::sinh;
     using std::sqrt;
     const T y = x * x;
     const T e = eps<T>();
@@ -746,74 +747,89 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
       for (T p = T(0.5); p <= (n_ - 2) / 2 + T(0.25); p += 1) I = (1 + 2 * p * y * I) / (2 * p + 1);
       return I;
     }
-    if (near_zero_) return F_near_zero(x, y, z);
-    if (!near_int_) {
-      // 2F1(1, 1/2 - m; 1 - m; y), y < 1/2
-      if (!(y == y)) return y;  // NaN: the test below would never hold
-      T term = 1, sum = 1;
-      const T b = T(0.5) - m_, c = 1 - m_;
-      int j = 0;
-      for (; j < 100000; ++j) {
-        term *= (b + j) / (c + j) * y;
-        sum += term;
-        if (abs(term) <= e * abs(sum) / 4) break;
-      }
-      check_iterations(j, 100000, "power law: the hypergeometric series of F did not converge");
-      return sum / (2 * m_) + pow(abs(x), 2 * m_) * conn_ / sqrt(z);
+    if (near_int_) return F_near_int(x, y, z);
+    // 2F1(1, 1/2 - m; 1 - m; y), y < 1/2
+    if (!(y == y)) return y;  // NaN: the test below would never hold
+    T term = 1, sum = 1;
+    const T b = T(0.5) - m_, c = 1 - m_;
+    int j = 0;
+    for (; j < 100000; ++j) {
+      term *= (b + j) / (c + j) * y;
+      sum += term;
+      // term = the coefficient j + 1 times y^(j+1). Before the largest ratio (j + 1 < m)
+      // the terms still to come fall by ratios y (1 + 1/(2(m - i - 1))) <= 0.72
+      // (m - i - 1 >= 9/8), then jump once by at most (1 + 4) y <= 2.5 (m - i - 1 =
+      // frac(m) in [1/8, 7/8] here), then fall by ratios < y: their sum is at most
+      // ~8 times this term (y < 1/2); the factor 16 keeps the truncation below eps/4.
+      if (abs(term) * (T(j + 1) < m_ ? 16 : 1) <= e * abs(sum) / 4) break;
     }
-    const T be = sqrt(z);
-    // integrand decreasing from ((1+be)/2...)~1 to |x|^(n-1) at W = asinh(be/|x|);
-    // beyond Tc it is below eps (times the remaining length, at most ~ln(1/eps))
-    using std::log;
-    using std::min;
-    const T Tc = -log(eps<T>()) / (n_ - 1) + 2;
-    const T ax = abs(x);
-    const T W = ax > 0 ? min(T(asinh(be / ax)), Tc) : Tc;
-    const T I = integrate_ts<T>(
-        [&](const T &t, const T &) {
-          const T v = cosh(t) - be * sinh(t);
-          return v > 0 ? pow(v, n_ - 1) : T(0);
-        },
-        T(0), W, boost::math::tools::root_epsilon<T>());
-    return I / be;
+    check_iterations(j, 100000, "power law: the hypergeometric series of F did not converge");
+    return sum / (2 * m_) + pow(abs(x), 2 * m_) * conn_ / sqrt(z);
   }
 
  private:
-  // F for 0 < m < 1/8, y = x^2 < 1/2, z = 1 - y. The connection formula
-  //   F = S(y)/(2m) + |x|^(2m) conn/sqrt(z),  S = 2F1(1, 1/2 - m; 1 - m; y),
-  //   conn = -c(m)/(2m),  c(m) = pi m cot(pi m) Gamma(1/2 + m)/(Gamma(1/2) Gamma(1 + m)) -> 1,
-  // has two parts ~ 1/(2m sqrt z) that cancel to F = O(1) (the n = 1 limit is
-  // asinh(sqrt(z)/|x|)/sqrt(z)). Regrouped around the m = 0 terms (S(y; 0) = 1/sqrt(z)):
-  //   F = A + B,  A = (S(y) - 1/sqrt(z))/(2m) = (1/2) sum_(j>=1) r_j e_j y^j,
-  //   B = -expm1(2m ln|x| + ln c(m)) / (2m sqrt(z)),
-  // with r_j = (1/2)_j/j! and e_j = (S's j-th coefficient / r_j - 1)/m by the exact
-  // recurrence e_j = e_(j-1) g_j + h_j, g_j = j (j - 1/2 - m)/((j - 1/2)(j - m)),
-  // h_j = -1/((2j - 1)(j - m)): every term of A negative and formed without
-  // cancellation; B's argument is negative (|x| < 1, ln c ~ -2 ln2 m) and its
-  // expm1 is accurate to a few eps relative. Checked against 50-digit quadrature
-  // of the definition in tests/test_switches.cpp.
-  T F_near_zero(const T &x, const T &y, const T &z) const {
+  // F for m = k + delta, k = round(m) >= 0, 0 < |delta| < 1/8, y = x^2 < 1/2, z = 1 - y.
+  // With I_p = int_0^1 (y + z v^2)^p dv, F = I_(m - 1/2), integration by parts of
+  // d/dv [v (y + z v^2)^p] gives for every real p (y > 0)
+  //   I_p = (1 + 2 p y I_(p-1)) / (2p + 1),
+  // the recurrence of the odd-n branch: k steps, p = delta + 1/2, ..., m - 1/2, from
+  // F_delta = I_(delta - 1/2), F at the exponent 1 + 2 delta. Each step adds two
+  // positive terms, and the share 2 p y I_(p-1)/(2p + 1 + ...) of the old value is
+  // below ~1/2 for y < 1/2: the relative error stays a few eps (it does not grow with k).
+  // F_delta by the connection formula regrouped around delta = 0 (F_delta, below).
+  // At x = 0, F = int_0^1 v^(n-2) dv = 1/(n-1) directly (F_delta is infinite there
+  // for delta < 0). Checked against 50-digit quadrature of the definition in
+  // tests/test_switches.cpp; derivation in docs/models.md ("Power law near odd n").
+  T F_near_int(const T &x, const T &y, const T &z) const {
+    if (!(y == y)) return y;  // NaN: the series' stopping test would never hold
+    if (x == 0) return 1 / (n_ - 1);
+    T I = F_delta(x, y, z);
+    for (int i = 1; i <= k_; ++i) {
+      const T p = delta_ + T(i) - T(0.5);
+      I = (1 + 2 * p * y * I) / (2 * p + 1);
+    }
+    return I;
+  }
+  // F at the exponent 1 + 2 delta, 0 < |delta| < 1/8, x != 0, y = x^2 < 1/2, z = 1 - y.
+  // The connection formula (d = delta)
+  //   F = S(y)/(2d) + |x|^(2d) conn/sqrt(z),  S = 2F1(1, 1/2 - d; 1 - d; y),
+  //   conn = -c(d)/(2d),  c(d) = pi d cot(pi d) Gamma(1/2 + d)/(Gamma(1/2) Gamma(1 + d))
+  //                            = sqrt(pi) Gamma(1 - d)/Gamma(1/2 - d) -> 1,
+  // has two parts ~ 1/(2d sqrt z) that cancel to F = O(1) (the n = 1 limit is
+  // asinh(sqrt(z)/|x|)/sqrt(z)). Regrouped around the d = 0 terms (S(y; 0) = 1/sqrt(z)):
+  //   F = A + B,  A = (S(y) - 1/sqrt(z))/(2d) = (1/2) sum_(j>=1) r_j e_j y^j,
+  //   B = -expm1(2d ln|x| + ln c(d)) / (2d sqrt(z)),
+  // with r_j = (1/2)_j/j! and e_j = (S's j-th coefficient / r_j - 1)/d by the exact
+  // recurrence e_j = e_(j-1) g_j + h_j, g_j = j (j - 1/2 - d)/((j - 1/2)(j - d)),
+  // h_j = -1/((2j - 1)(j - d)): every term of A negative (either sign of d) and formed
+  // without cancellation. B > 0: for d > 0 expm1's argument is negative (|x| < 1,
+  // ln c ~ -2 ln2 d), for d < 0 positive; either way expm1 is accurate to a few eps
+  // relative (an argument of size t carries ~t eps, t <= |2d ln|x|| + 1, large only
+  // where |x| is so small that y F_delta is negligible next to 1 in F_near_int).
+  // A + B cancels mildly (|A/2| < B, F ~ 1.2 at y = 1/2 against B ~ 1.5).
+  T F_delta(const T &x, const T &y, const T &z) const {
     using std::abs;
     using std::expm1;
     using std::log;
     using std::sqrt;
     const T e = eps<T>();
+    const T &d = delta_;
     T ej = 0, rj = 1, yj = 1, A = 0;
     int j = 1;
     for (; j < 100000; ++j) {
       const T jj = T(j);
-      ej = ej * (jj * (jj - T(0.5) - m_) / ((jj - T(0.5)) * (jj - m_))) - 1 / ((2 * jj - 1) * (jj - m_));
+      ej = ej * (jj * (jj - T(0.5) - d) / ((jj - T(0.5)) * (jj - d))) - 1 / ((2 * jj - 1) * (jj - d));
       rj *= (jj - T(0.5)) / jj;
       yj *= y;
       const T term = rj * ej * yj;
       A += term;
       if (abs(term) <= e * abs(A) / 4) break;
     }
-    check_iterations(j, 100000, "power law: the series of F near n = 1 did not converge");
-    const T B = x == 0 ? 1 / (2 * m_ * sqrt(z)) : -expm1(2 * m_ * log(abs(x)) + lnc_) / (2 * m_ * sqrt(z));
+    check_iterations(j, 100000, "power law: the series of F near an odd n did not converge");
+    const T B = -expm1(2 * d * log(abs(x)) + lnc_) / (2 * d * sqrt(z));
     return A / 2 + B;
   }
-  // ln c(m) for 0 < m < 1/8, to a few eps relative (c - 1 = O(m) must not be
+  // ln c(m) for 0 < |m| < 1/8, to a few eps relative (c - 1 = O(m) must not be
   // formed as a difference): ln(pi m cot(pi m)) = ln cos u - ln(sin u / u), u = pi m,
   // by log1p of -2 sin^2(u/2) and of the sine series; and
   // ln Gamma(1/2 + m) - ln Gamma(1/2) - ln Gamma(1 + m)
@@ -849,8 +865,9 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     return L + G;
   }
 
-  T n_, m_, conn_{0}, lnc_{0};
-  bool even_ = false, odd_ = false, near_int_ = false, near_zero_ = false;
+  T n_, m_, conn_{0}, lnc_{0}, delta_{0};
+  int k_ = 0;  // round(m) where near_int_
+  bool even_ = false, odd_ = false, near_int_ = false;
 };
 
 // ---------------------------------------------------------------------------
