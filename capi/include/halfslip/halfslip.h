@@ -501,7 +501,9 @@ typedef struct hs_history_vertex {
   double step;              /* the load step of the segment ending here (after refinement) */
   double error_estimate;    /* estimated error at this vertex (units as for rtol): the sum over the
                                segments so far of the differences of their marches at steps 2h
-                               and h over 7 (each from the state before it: local error control) */
+                               and h over 7 (each from the state before it: local error control),
+                               plus 3 times any back-slip at a contact edge over the largest energy
+                               (docs/history.md, "Slip back near the edge"; at rtol 0 that part alone) */
   long interior_merges;     /* interior slip patches merged with an edge zone so far (an approximation;
                                0: none; docs/history.md) */
 } hs_history_vertex;

@@ -1840,8 +1840,8 @@ template <class T> class refined_history {
     if (!(rtol_ > 0)) {
       auto r = march(opt_.max_step);
       check_patches(*r);
-      check_backslip(*r);
-      r->note_last_vertex(opt_.max_step, T(0));
+      est_ += check_backslip(*r);  // at fixed steps the estimate is the back-slip's alone
+      r->note_last_vertex(opt_.max_step, est_);
       fine_ = std::move(r);
       return;
     }
