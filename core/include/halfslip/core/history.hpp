@@ -1847,8 +1847,7 @@ template <class T> class refined_history {
     }
     auto diff = [&](const history<T> &a, const history<T> &b) {
       const auto &va = a.vertices().back(), &vb = b.vertices().back();
-      T emax = 0;
-      for (const auto &v : b.vertices()) emax = max(emax, max(abs(v.energy1), abs(v.energy2)));
+      const T emax = largest_energy(b);
       T d = max(abs(va.b1 - vb.b1), abs(va.b2 - vb.b2));
       if (emax > 0) d = max(d, max(abs(va.energy1 - vb.energy1), abs(va.energy2 - vb.energy2)) / emax);
       return d / 7;  // the march converges like h^3.4 away from events (2^3 - 1)
@@ -1933,13 +1932,20 @@ template <class T> class refined_history {
   // past max(rtol, 1e-5) (1e-5: the largest error a result may carry for a zone structure it
   // does not model, 100 times below the BEM's energy accuracy at 400 elements) the segment
   // is status::not_applicable, never a silently wrong state.
-  T backslip_estimate(const history<T> &h) const {
+  // the largest zone energy of a segment of the path so far: the scale of the energy
+  // differences (add_vertex) and of the back-slip
+  static T largest_energy(const history<T> &h) {
     using std::abs;
+    using std::max;
+    T emax = 0;
+    for (const auto &v : h.vertices()) emax = max(emax, max(abs(v.energy1), abs(v.energy2)));
+    return emax;
+  }
+  T backslip_estimate(const history<T> &h) const {
     using std::max;
     const auto &vs = h.vertices();
     if (vs.empty()) return T(0);
-    T emax = 0;
-    for (const auto &v : vs) emax = max(emax, max(abs(v.energy1), abs(v.energy2)));
+    const T emax = largest_energy(h);
     const auto &v = vs.back();
     return emax > 0 ? 3 * max(v.backslip1, v.backslip2) / emax : T(0);
   }
