@@ -5,12 +5,15 @@
 // (Hertz) or the sliding-stick-point balance (general pressures).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -403,6 +406,87 @@ TEST_CASE("issue 13: cel_log continues cel below the switch") {
       const double c = core::cel(kc, p, 1.0, 1.0), d = core::cel_log(kc, std::log(kc), p, 1.0, 1.0);
       CHECK(std::abs(c - d) <= 16 * 2.2e-16 * std::abs(c));
     }
+}
+
+// The near-sliding sweep quoted in docs/models.md and the README (issue 13, "Near
+// sliding"; skipped in ctest; run: build/tests/test_stability -tc="*near-sliding sweep*"
+// --no-skip -s). DEFAULT (rtol 0) through the C ABI on 8 geometries x 7 distances from
+// sliding x both signs of Q x 13 sigma; on a subset (1 - Q/fP = 1e-10 and 1e-13, sigma/fp0 =
+// -3, 0.018, 1, 20) d1, d2 against the long double solver, whose own bound (the quadrature
+// form at long double's epsilon) is added to the double estimate.
+TEST_CASE("issue 13: near-sliding sweep of the general double solver" * doctest::skip()) {
+  const std::vector<std::pair<int, double>> geos = {
+      {HS_GEOMETRY_FLAT_ROUNDED, 0.1}, {HS_GEOMETRY_FLAT_ROUNDED, 0.5}, {HS_GEOMETRY_FLAT_ROUNDED, 0.8},
+      {HS_GEOMETRY_FLAT_ROUNDED, 0.95}, {HS_GEOMETRY_POWER_LAW, 1.5},    {HS_GEOMETRY_POWER_LAW, 3},
+      {HS_GEOMETRY_POWER_LAW, 6.79},    {HS_GEOMETRY_POWER_LAW, 9.875}};
+  const double oms[] = {1e-6, 1e-8, 1e-10, 4.5e-11, 1e-11, 1e-12, 1e-13};
+  const double sigmas[] = {-3, -2.2, -1, -0.3, -0.018, 0, 0.018, 0.3, 1, 2.2, 5, 10, 20};
+  int total = 0, failed_total = 0, checked = 0, over = 0, ld_failed = 0;
+  double tmax = 0, worst = 0;
+  for (const auto &g : geos) {
+    int failed = 0;
+    double gmax = 0;
+    for (double om : oms)
+      for (int sgn : {+1, -1})
+        for (double s : sigmas) {
+          const double q = sgn * (1 - om);
+          hs_solution *sol = nullptr;
+          const auto t0 = std::chrono::steady_clock::now();
+          const int st = solve_geometry(g.first, g.second, q, s, HS_MODEL_DEFAULT, &sol);
+          const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          gmax = std::max(gmax, dt);
+          ++total;
+          if (st != HS_OK) {
+            ++failed;
+            std::printf("  FAIL %s %g: 1 - |Q/fP| = %g, Q/fP %s 0, sigma/fp0 = %g: %s (%.2f s)\n",
+                        g.first == HS_GEOMETRY_FLAT_ROUNDED ? "flat-rounded" : "power-law", g.second, om,
+                        sgn > 0 ? ">" : "<", s, hs_strerror(st), dt);
+            continue;
+          }
+          const hs_summary sm = summary(sol);
+          const bool subset = sgn > 0 && (om == 1e-10 || om == 1e-13) && (s == -3 || s == 0.018 || s == 1 || s == 20);
+          if (subset) {
+            std::unique_ptr<core::pressure_model<long double>> pm;
+            if (g.first == HS_GEOMETRY_FLAT_ROUNDED) pm.reset(new core::flat_rounded_pressure<long double>(g.second));
+            else pm.reset(new core::power_law_pressure<long double>(g.second));
+            core::general_scene<long double> w;
+            w.a = w.p0 = w.f = w.Estar = 1;
+            w.q = q;
+            w.s = s;
+            try {
+              const auto ws = core::solve_general(*pm, w);
+              const long double dm = std::min(ws.d1() > 0 ? ws.d1() : 2, ws.d2() > 0 ? ws.d2() : 2);
+              const double bound =
+                  double(64 * std::numeric_limits<long double>::epsilon() * (1 + 1 / dm + 1 / ws.width)) +
+                  double(ws.conditioning / dm);
+              const double D[2] = {sm.d1, sm.d2};
+              const long double W[2] = {ws.d1(), ws.d2()};
+              for (int z = 0; z < 2; ++z) {
+                if (!(D[z] > sm.zone_resolution)) continue;
+                const double err = double(std::abs(D[z] - W[z]) / W[z]);
+                ++checked;
+                worst = std::max(worst, err / (sm.error_estimate + bound));
+                if (err > sm.error_estimate + bound) {
+                  ++over;
+                  std::printf("  OVER %g: 1 - |Q/fP| = %g, sigma/fp0 = %g, zone %d: error %.2e, estimate %.2e\n",
+                              g.second, om, s, z + 1, err, sm.error_estimate);
+                }
+              }
+            } catch (const core::error &) {
+              ++ld_failed;
+            }
+          }
+          hs_solution_free(sol);
+        }
+    std::printf("%s %g: %d of %d scenes fail; slowest %.2f s\n",
+                g.first == HS_GEOMETRY_FLAT_ROUNDED ? "flat-rounded b_f/a =" : "power law n =", g.second, failed,
+                int(std::size(oms) * 2 * std::size(sigmas)), gmax);
+    failed_total += failed;
+    tmax = std::max(tmax, gmax);
+  }
+  std::printf("total: %d of %d scenes fail; slowest %.2f s; against long double: %d zones, %d above estimate + "
+              "long double's bound (worst ratio %.2f), %d long double solves failed\n",
+              failed_total, total, tmax, checked, over, worst, ld_failed);
 }
 
 // The domain sweep quoted in docs/models.md and the README (skipped in ctest;

@@ -262,8 +262,17 @@ void run_auto(hs_solution &h, bool hertz, const core::general_scene<double> &sc,
     }
   } else {
     const double rt = core::quadrature_tolerance(tol, sc);
-    if (!run_quadrature_or_asymptotic(h, sc, r.max_iterations, rt) && h.error_estimate > tol && rt > 0)
-      run_quadrature_or_asymptotic(h, sc, r.max_iterations, 0);
+    try {
+      if (!run_quadrature_or_asymptotic(h, sc, r.max_iterations, rt) && h.error_estimate > tol && rt > 0)
+        run_quadrature_or_asymptotic(h, sc, r.max_iterations, 0);
+    } catch (const core::error &e) {
+      // double cannot answer (issue 13: the general solver near sliding, within
+      // ~1e-10 of it, as for Hertz above): the reference route, which the result
+      // reports (HS_MODEL_REFERENCE)
+      if ((e.code() != core::status::overflow && e.code() != core::status::no_convergence) || !ref.available) throw;
+      run_reference(h, sc, r, ref);
+      return;
+    }
   }
   // a relative tolerance is met only where every zone is resolved (issue 13:
   // at the regime boundary a zone below the resolution has no relative error
