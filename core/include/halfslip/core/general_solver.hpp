@@ -427,7 +427,7 @@ template <class T, class F> bool local_root(F f, const T &x0, T h, const T &lo_l
 // floor. Kept only if every step brackets a root.
 template <class T>
 bool polish_near_sliding(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n) {
-  using std::abs;
+  using std::exp;
   using std::log;
   general_state<T> w = st;
   if (!(w.x1 > 0) || !(w.e > 0)) return false;
