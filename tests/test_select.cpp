@@ -850,13 +850,14 @@ TEST_CASE("issue 13: reduced estimate sweep: DEFAULT and AUTO within their estim
     CAPTURE(kind);
     const sweep_tally &n = tally[kind];
     // no truth: the reference's own NO_CONVERGENCE at loads below ~1e-60 on the general path
-    // (and once at sigma/fp0 = 7.3), long double near sliding (1 - |Q/fP| <= 1.4e-10); 5 and 4
-    CHECK(n.no_truth <= 6);
-    // DEFAULT answers them all but one each (NO_CONVERGENCE, and the long double solver
-    // fails there too): the flat punch b_f/a = 0.80 at 1 - Q/fP = 4.5e-11, sigma/fp0 = 0.018
-    // (every model; the reference solves it in 9 s), the power law n = 9.875 at
-    // 1 + Q/fP = 1.4e-10, sigma/fp0 = -2.2 (found here, docs/validation.md)
-    CHECK(n.no_truth_failed <= (kind == HS_GEOMETRY_FLAT_ROUNDED || kind == HS_GEOMETRY_POWER_LAW ? 1 : 0));
+    // (and once at sigma/fp0 = 7.3), long double near sliding (1 - |Q/fP| <= 1.4e-10); 4 and 3
+    // (5 and 4 before the near-sliding round of issue 13, whose long double solves one more each)
+    CHECK(n.no_truth <= 4);
+    // DEFAULT answers them all. Until the near-sliding round it gave NO_CONVERGENCE (and so
+    // did long double) on one each: the flat punch b_f/a = 0.80 at 1 - Q/fP = 4.5e-11,
+    // sigma/fp0 = 0.018 and the power law n = 9.875 at 1 + Q/fP = 1.4e-10, sigma/fp0 = -2.2
+    // (found here, docs/validation.md; now checked against the reference in "near sliding" below)
+    CHECK(n.no_truth_failed == 0);
     CHECK(n.resolved > 4 * n.scenes);
     CHECK(n.unresolved > 0);
     CHECK(n.energies_checked > 2 * n.scenes);
@@ -918,7 +919,8 @@ TEST_CASE("issue 13: near sliding, the general double solver answers within its 
       CAPTURE(s.error_estimate);
       CAPTURE(s.zone_resolution);
       CHECK(s.model == HS_MODEL_QUADRATURE);  // double answers: no reference route
-      CHECK(s.unresolved == 0);
+      CHECK(s.d1 > s.zone_resolution);  // both zones resolved
+      CHECK(s.d2 > s.zone_resolution);
       CHECK(s.error_estimate < 1e-6);
       double E[2];
       REQUIRE(hs_solution_energy(sol, E) == HS_OK);
