@@ -60,6 +60,7 @@ struct hs_history {
   struct static_vertex_rec {
     std::shared_ptr<const core::static_history<double>> snap;
     double E1 = 0, E2 = 0;  // the segment ending here, canonical units
+    int cycle = 0;          // periodic loading: the cycle this vertex belongs to (0: none)
   };
   std::vector<static_vertex_rec> static_vertices;
   size_t vertex_count() const {
@@ -359,6 +360,35 @@ struct ray_cycles_adapter {
   double q() const { return h.input.empty() ? 0.0 : h.input.back().first; }
   double s() const { return h.input.empty() ? 0.0 : h.input.back().second; }
 };
+
+// Periodic loading off the ray by static solves (issue 14): core::add_cycles on them while
+// every segment is one they take, as hs_history_add_vertices does vertex by vertex; the
+// first segment they cannot take leaves them (the march replays the path).
+struct leave_static {};
+struct static_cycles_adapter {
+  struct view {
+    double energy1, energy2, b1, b2;
+  };
+  hs_history &h;
+  std::vector<view> vs;
+  explicit static_cycles_adapter(hs_history &hh) : h(hh) {
+    for (const auto &v : h.static_vertices) vs.push_back(of(v));
+  }
+  static view of(const hs_history::static_vertex_rec &v) { return {v.E1, v.E2, v.snap->b1(), v.snap->b2()}; }
+  void add_vertex(double q, double s) {
+    hs_history::static_vertex_rec rec;
+    std::shared_ptr<const core::static_history<double>> nx;
+    if (!add_static(*h.st, q, s, nx, rec)) throw leave_static{};
+    h.st = nx;
+    h.static_vertices.push_back(std::move(rec));
+    h.input.emplace_back(q, s);
+    vs.push_back(of(h.static_vertices.back()));
+  }
+  const std::vector<view> &vertices() const { return vs; }
+  void tag_last_vertex(int c) { h.static_vertices.back().cycle = c; }
+  double q() const { return h.input.empty() ? 0.0 : h.input.back().first; }
+  double s() const { return h.input.empty() ? 0.0 : h.input.back().second; }
+};
 }  // namespace
 
 int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double sa, double phase_deg, int cycles) {
@@ -378,6 +408,23 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
       } catch (...) {
         h->ray = ray0;
         h->ray_vertices.resize(nv0);
+        h->input.resize(ni0);
+      }
+    }
+    // off the ray: the static solves while they take every segment (state kept on failure)
+    if ((h->ray_mode || h->static_mode) && to_static(*h)) {
+      const auto st0 = h->st;
+      const size_t nv0 = h->static_vertices.size(), ni0 = h->input.size();
+      try {
+        static_cycles_adapter ad(*h);
+        h->cycles = core::add_cycles<double>(ad, qm, qa, sm, sa, phase_deg, cycles,
+                                             core::ramp_order(h->opts.ramp_order), h->opts.segments_per_cycle,
+                                             h->opts.steady_rtol);
+        h->has_cycles = true;
+        return;
+      } catch (...) {
+        h->st = st0;
+        h->static_vertices.resize(nv0);
         h->input.resize(ni0);
       }
     }
@@ -437,7 +484,7 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       out->slip_dir2 = st.b2() < 1 ? st.dir2() : 0;
       out->energy1 = escale * v.E1;
       out->energy2 = escale * v.E2;
-      out->cycle = 0;
+      out->cycle = v.cycle;
       out->steps = 0;
       out->step = 0;
       out->error_estimate = 0;
@@ -572,6 +619,24 @@ int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double
         bool first = c.last_cycle_first > 0;
         for (size_t k = c.last_cycle_first > 0 ? c.last_cycle_first - 1 : 0; k < c.last_cycle_end; ++k) {
           const double v = ray_field_at(*h, k, HS_FIELD_SLIP, x[i]);
+          if (first || v < lo) lo = v;
+          if (first || v > hi) hi = v;
+          first = false;
+        }
+        tmp[i] = hi - lo;
+      }
+      std::copy(tmp.begin(), tmp.end(), out);
+      return;
+    }
+    if (h->static_mode) {  // the slips of the static states
+      const auto &sc = h->scene;
+      for (size_t i = 0; i < n; ++i) {
+        require(std::isfinite(x[i]), core::status::not_finite, "x");
+        require(std::fabs(x[i]) <= sc.a, core::status::point_outside, "x outside the contact");
+        double lo = 0, hi = 0;
+        bool first = c.last_cycle_first > 0;
+        for (size_t k = c.last_cycle_first > 0 ? c.last_cycle_first - 1 : 0; k < c.last_cycle_end; ++k) {
+          const double v = sc.f * sc.p0 * sc.a / sc.Estar * h->static_vertices[k].snap->slip(x[i] / sc.a);
           if (first || v < lo) lo = v;
           if (first || v > hi) hi = v;
           first = false;
