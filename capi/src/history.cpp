@@ -473,7 +473,7 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       return;
     }
     const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
-    if (h->static_mode) {  // static solves: exact to the tests' 1e-10, no steps
+    if (h->static_mode) {  // static solves: within rtol of the exact static solve (tests/test_static_history.cpp), no steps
       const auto &v = h->static_vertices[i];
       const auto &st = *v.snap;
       out->Q_over_fP = st.q();
@@ -487,7 +487,7 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       out->cycle = v.cycle;
       out->steps = 0;
       out->step = 0;
-      out->error_estimate = 0;
+      out->error_estimate = h->march_rtol;  // the accuracy the static solves were set to (for_rtol)
       out->interior_merges = 0;
       return;
     }
@@ -578,7 +578,7 @@ int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
       auto r = std::make_unique<hs_solution>();
       r->solution.emplace<hs::capi::static_state>(h->static_vertices[vertex].snap, h->scene);
       r->model_used = 0;
-      r->error_estimate = 0;
+      r->error_estimate = h->march_rtol;
       *out = r.release();
       return;
     }
