@@ -72,6 +72,12 @@ template <class T> class pressure_model {
     return phi(x, dm, dp);
   }
   virtual std::vector<breakpoint<T>> breakpoints() const { return {}; }
+  // phi_dphi's derivative is phi's own to rounding (closed forms, not the
+  // default difference above, whose error near a cusp of phi left the general
+  // solver's Newton converging only linearly: power law n = 1.5, issue 16). The
+  // solver then trusts quadratic convergence to skip evaluations that would
+  // only confirm a step (general_solver.hpp, general_problem::shortcut).
+  virtual bool exact_dphi() const { return false; }
   // Stick half-width c (units of a) of the symmetric shear-only problem
   // (sigma = 0) at q = Q/fP in [0, 1), if known in closed form or cheaply
   // (a start for the solver); false otherwise.
@@ -151,6 +157,7 @@ template <class T> class hertz_pressure final : public pressure_model<T> {
     d = 0;
     return T(1);
   }
+  bool exact_dphi() const override { return true; }
   bool symmetric() const override { return true; }
   T edge_phi(int) const override { return T(1); }
   bool shear_only_half_width(const T &q, T &c) const override {
@@ -371,6 +378,9 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     return d;
   }
   T phi_dphi(const T &x, const T &dm, const T &dp, T &d) const override { return eval(x, dm, dp, &d); }
+  // (phi' to ~eps^(3/4) relative, see above: a Newton step's linear error is that
+  // times the step, far below any step the solver skips)
+  bool exact_dphi() const override { return true; }
   std::vector<breakpoint<T>> breakpoints() const override {
     if (beta_ == 0) return {};
     return {{-beta_, true}, {beta_, true}};
@@ -1235,6 +1245,7 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
   T edge_phi(int side) const override { return b_.edge_phi(-side); }
   bool shear_only_half_width(const T &q, T &c) const override { return b_.shear_only_half_width(q, c); }
   T accuracy_eps() const override { return b_.accuracy_eps(); }
+  bool exact_dphi() const override { return b_.exact_dphi(); }
   T tail(int side, const T &c) const override { return b_.tail(-side, c); }
   knot_view<T> knots() const override {
     knot_view<T> v = b_.knots();
