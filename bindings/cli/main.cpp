@@ -1055,8 +1055,9 @@ int cmd_history(int argc, char **argv) {
           emax);
     } else if (statics) {
       std::printf(
-          "  every segment advances: one static solve per segment from the state before it (no march; "
-          "docs/history.md)\n");
+          "  static solves, one per segment from the state before it (no march; docs/history.md), to within "
+          "rtol %.2g\n",
+          ho.rtol);
     } else if (nv) {
       double smin = vs[0].step, smax = vs[0].step, emax = 0;
       for (const auto &v : vs) {

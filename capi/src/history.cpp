@@ -60,6 +60,7 @@ struct hs_history {
   struct static_vertex_rec {
     std::shared_ptr<const core::static_history<double>> snap;
     double E1 = 0, E2 = 0;  // the segment ending here, canonical units
+    int cycle = 0;          // periodic loading: the cycle this vertex belongs to (0: none)
   };
   std::vector<static_vertex_rec> static_vertices;
   size_t vertex_count() const {
@@ -359,28 +360,81 @@ struct ray_cycles_adapter {
   double q() const { return h.input.empty() ? 0.0 : h.input.back().first; }
   double s() const { return h.input.empty() ? 0.0 : h.input.back().second; }
 };
+
+// Periodic loading off the ray by static solves (issue 14): core::add_cycles on them while
+// every segment is one they take, as hs_history_add_vertices does vertex by vertex; the
+// first segment they cannot take leaves them (the march replays the path).
+struct leave_static {};
+struct static_cycles_adapter {
+  struct view {
+    double energy1, energy2, b1, b2;
+  };
+  hs_history &h;
+  std::vector<view> vs;
+  explicit static_cycles_adapter(hs_history &hh) : h(hh) {
+    for (const auto &v : h.static_vertices) vs.push_back(of(v));
+  }
+  static view of(const hs_history::static_vertex_rec &v) { return {v.E1, v.E2, v.snap->b1(), v.snap->b2()}; }
+  void add_vertex(double q, double s) {
+    hs_history::static_vertex_rec rec;
+    std::shared_ptr<const core::static_history<double>> nx;
+    if (!add_static(*h.st, q, s, nx, rec)) throw leave_static{};
+    h.st = nx;
+    h.static_vertices.push_back(std::move(rec));
+    h.input.emplace_back(q, s);
+    vs.push_back(of(h.static_vertices.back()));
+  }
+  const std::vector<view> &vertices() const { return vs; }
+  void tag_last_vertex(int c) { h.static_vertices.back().cycle = c; }
+  double q() const { return h.input.empty() ? 0.0 : h.input.back().first; }
+  double s() const { return h.input.empty() ? 0.0 : h.input.back().second; }
+};
+
+// core::add_cycles on one of the cheaper methods (its adapter); on any failure the history is
+// put back as it was (restore) and false returned, for the next method to replay the path
+template <class Adapter, class Restore>
+bool cycles_by(hs_history &h, const Restore &restore, double qm, double qa, double sm, double sa, double phase_deg,
+               int cycles) {
+  try {
+    Adapter ad(h);
+    h.cycles = core::add_cycles<double>(ad, qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h.opts.ramp_order),
+                                        h.opts.segments_per_cycle, h.opts.steady_rtol);
+    h.has_cycles = true;
+    return true;
+  } catch (...) {
+    restore();
+    return false;
+  }
+}
 }  // namespace
 
 int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double sa, double phase_deg, int cycles) {
   return guard([&] {
     require(h != nullptr, core::status::null_pointer, "NULL history");
+    const size_t ni0 = h->input.size();
+    // on the ray: the superposition
     if (h->ray_mode) {
-      // try the superposition; off the ray, undo and march the whole path
       const auto ray0 = h->ray;
-      const size_t nv0 = h->ray_vertices.size(), ni0 = h->input.size();
-      try {
-        ray_cycles_adapter ad(*h);
-        h->cycles = core::add_cycles<double>(ad, qm, qa, sm, sa, phase_deg, cycles,
-                                             core::ramp_order(h->opts.ramp_order), h->opts.segments_per_cycle,
-                                             h->opts.steady_rtol);
-        h->has_cycles = true;
-        return;
-      } catch (...) {
+      const size_t nv0 = h->ray_vertices.size();
+      auto restore = [&] {
         h->ray = ray0;
         h->ray_vertices.resize(nv0);
         h->input.resize(ni0);
-      }
+      };
+      if (cycles_by<ray_cycles_adapter>(*h, restore, qm, qa, sm, sa, phase_deg, cycles)) return;
     }
+    // off the ray: the static solves while they take every segment
+    if ((h->ray_mode || h->static_mode) && to_static(*h)) {
+      const auto st0 = h->st;
+      const size_t nv0 = h->static_vertices.size();
+      auto restore = [&] {
+        h->st = st0;
+        h->static_vertices.resize(nv0);
+        h->input.resize(ni0);
+      };
+      if (cycles_by<static_cycles_adapter>(*h, restore, qm, qa, sm, sa, phase_deg, cycles)) return;
+    }
+    // else the march replays the whole path
     to_march(*h);
     h->cycles = h->h->add_cycles(qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h->opts.ramp_order),
                                  h->opts.segments_per_cycle, h->opts.steady_rtol);
@@ -426,7 +480,7 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       return;
     }
     const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
-    if (h->static_mode) {  // static solves: exact to the tests' 1e-10, no steps
+    if (h->static_mode) {  // static solves: within rtol of the exact static solve (tests/test_static_history.cpp), no steps
       const auto &v = h->static_vertices[i];
       const auto &st = *v.snap;
       out->Q_over_fP = st.q();
@@ -437,10 +491,10 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       out->slip_dir2 = st.b2() < 1 ? st.dir2() : 0;
       out->energy1 = escale * v.E1;
       out->energy2 = escale * v.E2;
-      out->cycle = 0;
+      out->cycle = v.cycle;
       out->steps = 0;
       out->step = 0;
-      out->error_estimate = 0;
+      out->error_estimate = h->march_rtol;  // the accuracy the static solves were set to (for_rtol)
       out->interior_merges = 0;
       return;
     }
@@ -531,7 +585,7 @@ int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
       auto r = std::make_unique<hs_solution>();
       r->solution.emplace<hs::capi::static_state>(h->static_vertices[vertex].snap, h->scene);
       r->model_used = 0;
-      r->error_estimate = 0;
+      r->error_estimate = h->march_rtol;
       *out = r.release();
       return;
     }
@@ -560,34 +614,32 @@ int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out) {
   });
 }
 
+namespace {
+// the slip h at x (dimensional) after vertex k, whichever method holds the states
+double vertex_slip(const hs_history &h, size_t k, double x) {
+  if (h.ray_mode) return ray_field_at(h, k, HS_FIELD_SLIP, x);  // the superposed states
+  if (h.static_mode) {
+    const auto &sc = h.scene;
+    require(std::isfinite(x), core::status::not_finite, "x");
+    require(std::fabs(x) <= sc.a, core::status::point_outside, "x outside the contact");
+    return sc.f * sc.p0 * sc.a / sc.Estar * h.static_vertices[k].snap->slip(x / sc.a);
+  }
+  return field_at(h, h.h->fine().vertices()[k].step_end, HS_FIELD_SLIP, x);
+}
+}  // namespace
+
 int hs_history_slip_range(const hs_history *h, size_t n, const double *x, double *out) {
   return guard([&] {
     require(h != nullptr && (n == 0 || (x != nullptr && out != nullptr)), core::status::null_pointer, "NULL");
     require(h->has_cycles, core::status::not_applicable, "no periodic loading in this history");
     const auto &c = h->cycles;
     std::vector<double> tmp(n);
-    if (h->ray_mode) {  // the slips of the superposed states
-      for (size_t i = 0; i < n; ++i) {
-        double lo = 0, hi = 0;
-        bool first = c.last_cycle_first > 0;
-        for (size_t k = c.last_cycle_first > 0 ? c.last_cycle_first - 1 : 0; k < c.last_cycle_end; ++k) {
-          const double v = ray_field_at(*h, k, HS_FIELD_SLIP, x[i]);
-          if (first || v < lo) lo = v;
-          if (first || v > hi) hi = v;
-          first = false;
-        }
-        tmp[i] = hi - lo;
-      }
-      std::copy(tmp.begin(), tmp.end(), out);
-      return;
-    }
-    const auto &vs = h->h->fine().vertices();
     for (size_t i = 0; i < n; ++i) {
       // from the state before the cycle (the unloaded start when the cycle begins the history)
       double lo = 0, hi = 0;
       bool first = c.last_cycle_first > 0;
       for (size_t k = c.last_cycle_first > 0 ? c.last_cycle_first - 1 : 0; k < c.last_cycle_end; ++k) {
-        const double v = field_at(*h, vs[k].step_end, HS_FIELD_SLIP, x[i]);
+        const double v = vertex_slip(*h, k, x[i]);
         if (first || v < lo) lo = v;
         if (first || v > hi) hi = v;
         first = false;

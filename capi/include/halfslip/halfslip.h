@@ -545,7 +545,9 @@ HS_EXPORT int hs_history_state(const hs_history *h, size_t vertex, hs_solution *
 /* How the history computes its states (issue 14, unreleased), as chosen by itself:
  * HS_HISTORY_SUPERPOSITION: every vertex on one ray through the origin, sums of
  * monotonic solutions; HS_HISTORY_STATIC: every segment so far advances (no zone
- * recedes), one static solve per segment from the state before it (exact; no steps);
+ * recedes), one static solve per segment from the state before it (no steps; its
+ * quadrature orders are chosen from opts->rtol, and error_estimate reports that rtol,
+ * 0 at full accuracy);
  * HS_HISTORY_MARCH: load steps (steps, step and error_estimate of hs_history_vertex).
  * The first vertex that a method cannot take replays the whole path in the next one. */
 #define HS_HISTORY_SUPERPOSITION 1

@@ -53,9 +53,12 @@ template <class T> struct general_problem {
   const T &tol_step;
   T noise_floor;
 
+  bool quadratic;  // the Jacobian is exact (pressure_model::exact_dphi): Newton converges quadratically
+
   general_problem(const pressure_model<T> &pm_, const T &q_, const T &s_, int n_, const T &tol_step_)
       : pm(pm_), q(q_), s(s_), n(n_), tol_step(tol_step_) {
     noise_floor = 64 * eps<T>() * pi<T>() * (1 + s);
+    quadratic = pm.exact_dphi();
   }
   eval residual(const state &st) const { return general_residual(pm, q, s, st, n, true); }
   // the rounding floor of |F1| + |F2|: the quadrature's own (64 eps pi (1 + s))
@@ -65,17 +68,49 @@ template <class T> struct general_problem {
     return max(noise_floor, T(4 * r.grain));
   }
   jacobian2<T> jacobian(const state &, const eval &r) const { return {r.J11, r.J12, r.J21, r.J22}; }
+  // Quadratic convergence (issue 16): full steps s_k, s_{k+1} <= s_k/4 give
+  // K = s_{k+1}/s_k^2 (s_{k+2} ~ K s_{k+1}^2 in the quadratic regime of Newton with
+  // the exact Jacobian); kest is the latest such estimate (-1: none), last_full the
+  // last full step (-1: none, or the last step was damped). A Newton at the doubled
+  // order starts with the estimate of the run at the order before (the same side
+  // conditions, to the quadrature's difference): its first step, from the order-n
+  // solution, is that difference, and where K s^2 is far below the step tolerance
+  // it is taken without evaluating the residual there (that evaluation would only
+  // confirm it; the order control's next residual, at the doubled order, is taken
+  // at the new state anyway).
+  T kest = -1, last_full = -1;
   // a full step below the step tolerance after a converging one: take it
-  // without evaluating the residual there (it would only confirm the step)
+  // without evaluating the residual there (it would only confirm the step).
+  // Likewise a step s whose successor K s^2 is below an eighth of the step
+  // tolerance, with K the largest of kest, 1 and 1/(the shorter zone): after a
+  // converging step with an estimate of K, or (the first step, no estimate) a
+  // step already below the step tolerance (the evaluation there judged only
+  // the decrease of the Newton correction, which a step that small passes).
+  // (K = max(1, kest) alone, without the zone, sent three scenes of the grid of
+  // docs/benchmarks.md from order 16 to 32: kest from two steps can be low.)
+  // Only with an exact Jacobian: with the default difference quotient of phi'
+  // (power law n = 1.5, q = 0.1, sigma/fp0 = 10) the steps fell 1e-6, 2e-9,
+  // 1.5e-12 (linear) where K s^2 predicted 4e-18 after 2e-9
   bool shortcut(state &st, const T &dx, const T &dy, const T &prev_step) const {
     using std::abs;
     using std::exp;
     using std::max;
-    if (prev_step >= 0 && max(abs(dx), abs(dy)) <= tol_step && max(abs(dx), abs(dy)) <= prev_step) {
-      st = st.step(dx, dy);
-      return true;
+    using std::min;
+    const T step = max(abs(dx), abs(dy));
+    bool take = prev_step >= 0 && step <= tol_step && step <= prev_step;
+    if (!take && quadratic &&
+        ((kest > 0 && (last_full < 0 || step <= last_full / 4)) || (prev_step < 0 && step <= tol_step))) {
+      const T d1 = st.d1(), d2 = st.d2();
+      const T dmin = d2 > 0 ? min(d1, d2) : d1;
+      T K = max(T(1), kest);
+      if (dmin > 0) K = max(K, T(1 / dmin));
+      take = K * step * step <= tol_step / 8;
     }
-    return false;
+    if (!take) return false;
+    state nst;
+    if (!trial(st, T(1), dx, dy, nst)) return false;
+    st = nst;
+    return true;
   }
   // x1 = +-d1 moves by at most the contact half-width
   void cap_x(T &dx, T &dy) const {
@@ -91,21 +126,32 @@ template <class T> struct general_problem {
     // (the width may leave the range of T: ln e carries it, issue 13)
     return nst.ln_e == nst.ln_e && nst.ln_e < 1 && nd2 > st.d2() / 4 && nst.d1() < 2;
   }
-  newton_steps<T> steps(const state &, const T &lam, const T &dx, const T &dy) const {
+  newton_steps<T> steps(const state &, const T &lam, const T &dx, const T &dy) {
     using std::abs;
     using std::max;
     const T step = max(abs(lam * dx), abs(lam * dy));
+    if (lam == 1) {
+      if (last_full > 0 && step <= last_full / 4) kest = step / last_full / last_full;
+      last_full = step;
+    } else {
+      kest = last_full = -1;
+    }
     return {step, step};
   }
   bool converged(const T &lam, const T &step, const T &, const T &) const { return lam == 1 && step <= tol_step; }
 };
 
 // Newton from a start at fixed order n; true on convergence. iterations is
-// increased by the iterations begun.
+// increased by the iterations begun. kest (if given): the estimate of K of
+// general_problem from the run at the order before (-1: none), and on return
+// this run's.
 template <class T> bool newton(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
-                               const T &tol_step, int max_it, int &iterations, const general_eval<T> *r0 = nullptr) {
+                               const T &tol_step, int max_it, int &iterations, const general_eval<T> *r0 = nullptr,
+                               T *kest = nullptr) {
   general_problem<T> p(pm, q, s, n, tol_step);
+  if (kest) p.kest = *kest;
   const newton_outcome o = damped_newton(p, st, r0 ? *r0 : p.residual(st), max_it);
+  if (kest) *kest = o.converged ? p.kest : T(-1);
   iterations += o.iterations;
   // a state without a finite ln e (a width that underflowed with no logarithm
   // carried) is not a solution, even where the kernel's singular-Jacobian rule
@@ -604,7 +650,11 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
       trial = st;
     }
   }
-  if (!ok) ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+  T kest = -1;  // general_problem::kest, carried from one order to the next
+  if (!ok)
+    ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its,
+                         static_cast<const general_eval<T> *>(nullptr), &kest);
+  if (!ok) kest = -1;
   if (!ok && st.x1 < 0 && st.e < T(0.1)) {
     // large sigma: start from the sliding stick point (issue 13)
     if (gdetail::large_sigma_start(P, q, s, n, trial))
@@ -675,7 +725,7 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     if (2 * n > opt.max_order) throw error(status::no_convergence, "general solver: quadrature order limit reached");
     // Newton at the doubled order from the residual just evaluated there
     const general_state<T> before = st;
-    if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its, &r2)) {
+    if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its, &r2, &kest)) {
       // near sliding, where the floor hides F2 (polish_near_sliding; flat punch
       // b_f/a = 0.95, 1 - Q/fP = 1e-13, sigma/fp0 = 1): the bracketed polish, then
       // the order control goes on

@@ -72,6 +72,12 @@ template <class T> class pressure_model {
     return phi(x, dm, dp);
   }
   virtual std::vector<breakpoint<T>> breakpoints() const { return {}; }
+  // phi_dphi's derivative is phi's own to rounding (closed forms, not the
+  // default difference above, whose error near a cusp of phi left the general
+  // solver's Newton converging only linearly: power law n = 1.5, issue 16). The
+  // solver then trusts quadratic convergence to skip evaluations that would
+  // only confirm a step (general_solver.hpp, general_problem::shortcut).
+  virtual bool exact_dphi() const { return false; }
   // Stick half-width c (units of a) of the symmetric shear-only problem
   // (sigma = 0) at q = Q/fP in [0, 1), if known in closed form or cheaply
   // (a start for the solver); false otherwise.
@@ -151,6 +157,7 @@ template <class T> class hertz_pressure final : public pressure_model<T> {
     d = 0;
     return T(1);
   }
+  bool exact_dphi() const override { return true; }
   bool symmetric() const override { return true; }
   T edge_phi(int) const override { return T(1); }
   bool shear_only_half_width(const T &q, T &c) const override {
@@ -371,6 +378,9 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
     return d;
   }
   T phi_dphi(const T &x, const T &dm, const T &dp, T &d) const override { return eval(x, dm, dp, &d); }
+  // (phi' to ~eps^(3/4) relative, see above: a Newton step's linear error is that
+  // times the step, far below any step the solver skips)
+  bool exact_dphi() const override { return true; }
   std::vector<breakpoint<T>> breakpoints() const override {
     if (beta_ == 0) return {};
     return {{-beta_, true}, {beta_, true}};
@@ -629,6 +639,7 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
       // of negative argument underflow to 0/0 from m ~ 170 (n = 999.1 gave NaN)
       conn_ = -boost::math::constants::root_pi<T>() / 2 * boost::math::cos_pi(m_) / boost::math::sin_pi(m_) *
               boost::math::tgamma_delta_ratio(T(m_ + T(0.5)), T(0.5));
+    if constexpr (std::numeric_limits<T>::digits10 > std::numeric_limits<long double>::digits10) make_tables();
   }
   // Contact half-width from the load per unit length P of the profile
   // g = coef |x|^n (E*: contact modulus; coef > 0 (bad_size) and 1 < n < 1000
@@ -663,6 +674,38 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     const T dist = min(dm, dp);
     const T z = dist * (2 - dist);  // 1 - x^2
     return n_ / 2 * F(x, z);
+  }
+  // phi and phi' together beyond long double (the reference backend's tiers):
+  // phi' from F alone. With I_p = int_0^1 (y + z v^2)^p dv (F = I_p, p = n/2 - 1,
+  // y = x^2, z = 1 - y), d/dy under the integral and y + z v^2 = y (1 - v^2) + v^2
+  // give dI_p/dy = p (I_(p-1) - I_p)/z, and the recurrence I_p = (1 + 2p y I_(p-1))/(2p + 1)
+  // (F_near_int) removes I_(p-1):
+  //   dF/dx = 2x dF/dy = ((1 + (n - 2) z) F - 1)/(x z).
+  // (n = 4: F = 1/3 + 2x^2/3, ((1 + 2z)(1 - 2z/3) - 1)/(xz) = 4x/3.) The numerator
+  // cancels to O(z) near the edges and to O(F - F(0)) near x = 0: the relative error
+  // is ~ eps/z + eps/|x|^2 n, below the central difference's eps^(2/3) wherever
+  // z and x^2 exceed n eps^(1/3); elsewhere (and at x = 0, a breakpoint that is no
+  // node) the central difference of the base class as before. One F per node in
+  // place of three (the central difference): the Jacobians of the power law's
+  // solve at MPFR were two thirds of its time (issue 16). Used only in Newton
+  // Jacobians, never in a residual. Double and long double keep the central
+  // difference (bitwise unchanged).
+  T phi_dphi(const T &x, const T &dm, const T &dp, T &d) const override {
+    using std::abs;
+    using std::cbrt;
+    using std::min;
+    if constexpr (std::numeric_limits<T>::digits10 > std::numeric_limits<long double>::digits10) {
+      const T dist = min(dm, dp);
+      const T z = dist * (2 - dist);  // 1 - x^2
+      const T lim = (n_ > 1 ? n_ : T(1)) * cbrt(eps<T>());
+      if (z > lim && x * x > lim) {
+        const T f = F(x, z);
+        d = n_ / 2 * (((1 + (n_ - 2) * z) * f - 1) / (x * z));
+        return n_ / 2 * f;
+      }
+    }
+    d = this->dphi(x, dm, dp);
+    return phi(x, dm, dp);
   }
   // x = 0 (graded unless n is even); for large n also plain splits at the
   // distances 2^k/n from each edge (k >= 0, up to 1/4): phi rises from ~1/2 in
@@ -714,11 +757,17 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
       // and lost everything to cancellation for large n (issue 13: F off by
       // 1e-9 relative at n = 50, by 1e13 at n = 200). Terms grow up to
       // j ~ (n+1) z/(2(1-z)) <= (n+1)/2, then fall at least like z^j.
-      T term = 1, sum = 1;
+      T term = 1, sum = 1, zj = 1;
       const T b = (n_ + 1) / 2;
+      const int nt = int(euler_.size());
       int j = 0;
       for (; j < 100000; ++j) {
-        term *= (T(0.5) + j) * (b + j) / ((T(1.5) + j) * (j + 1)) * z;
+        if (j < nt) {
+          zj *= z;
+          term = euler_[j] * zj;
+        } else {
+          term *= (T(0.5) + j) * (b + j) / ((T(1.5) + j) * (j + 1)) * z;
+        }
         sum += term;
         if (term <= e * sum / 4 && T(j) > b * z) break;
       }
@@ -750,11 +799,17 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     if (near_int_) return F_near_int(x, y, z);
     // 2F1(1, 1/2 - m; 1 - m; y), y < 1/2
     if (!(y == y)) return y;  // NaN: the test below would never hold
-    T term = 1, sum = 1;
+    T term = 1, sum = 1, yj = 1;
     const T b = T(0.5) - m_, c = 1 - m_;
+    const int nt = int(conn_series_.size());
     int j = 0;
     for (; j < 100000; ++j) {
-      term *= (b + j) / (c + j) * y;
+      if (j < nt) {
+        yj *= y;
+        term = conn_series_[j] * yj;
+      } else {
+        term *= (b + j) / (c + j) * y;
+      }
       sum += term;
       // term = the coefficient j + 1 times y^(j+1). Before the largest ratio (j + 1 < m)
       // the terms still to come fall by ratios y (1 + 1/(2(m - i - 1))) <= 0.72
@@ -865,6 +920,43 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
     return L + G;
   }
 
+  // Beyond long double (the reference backend's tiers; issue 16): the coefficients
+  // of F's two long series, independent of x, once per model, so that a term costs
+  // two products instead of a quotient and three products (the series were most of
+  // the power law's solve at MPFR). euler_[j]: the coefficient of z^(j+1) in
+  // 2F1(1/2, (n+1)/2; 3/2; z); conn_series_[j]: that of y^(j+1) in
+  // 2F1(1, 1/2 - m; 1 - m; y). Each table holds the terms F's stopping test needs at
+  // the branch's largest argument, 1/2 (its own test, there); F continues by the
+  // recurrence past a table's end (smaller arguments need fewer terms, and the
+  // rounding is that of the recurrence: ~j eps relative at term j either way).
+  // Double and long double build no table (F bitwise unchanged).
+  void make_tables() {
+    using std::abs;
+    const T e = eps<T>(), h = T(0.5);
+    {
+      const T b = (n_ + 1) / 2;
+      T c = 1, hj = 1, sum = 1;
+      for (int j = 0; j < 100000; ++j) {
+        c *= (T(0.5) + j) * (b + j) / ((T(1.5) + j) * (j + 1));
+        euler_.push_back(c);
+        hj *= h;
+        sum += c * hj;
+        if (c * hj <= e * sum / 4 && T(j) > b * h) break;
+      }
+    }
+    if (!even_ && !odd_ && !near_int_) {
+      const T b = T(0.5) - m_, cc = 1 - m_;
+      T c = 1, hj = 1, sum = 1;
+      for (int j = 0; j < 100000; ++j) {
+        c *= (b + j) / (cc + j);
+        conn_series_.push_back(c);
+        hj *= h;
+        sum += c * hj;
+        if (abs(c * hj) * (T(j + 1) < m_ ? 16 : 1) <= e * abs(sum) / 4) break;
+      }
+    }
+  }
+  std::vector<T> euler_, conn_series_;
   T n_, m_, conn_{0}, lnc_{0}, delta_{0};
   int k_ = 0;  // round(m) where near_int_
   bool even_ = false, odd_ = false, near_int_ = false;
@@ -1153,6 +1245,7 @@ template <class T> class mirrored_pressure final : public pressure_model<T> {
   T edge_phi(int side) const override { return b_.edge_phi(-side); }
   bool shear_only_half_width(const T &q, T &c) const override { return b_.shear_only_half_width(q, c); }
   T accuracy_eps() const override { return b_.accuracy_eps(); }
+  bool exact_dphi() const override { return b_.exact_dphi(); }
   T tail(int side, const T &c) const override { return b_.tail(-side, c); }
   knot_view<T> knots() const override {
     knot_view<T> v = b_.knots();

@@ -225,7 +225,12 @@ template <class T> error_estimate<T> quadrature_estimate(const T &rt, const T &d
   using std::max;
   error_estimate<T> e;
   const T pe = eps<T>() * max(T(1), T(acc / 4));
-  e.resolution = (d1 == 0 && d2 == 0 && q == 0) ? T(0) : T(16 * (pe + rt) + length_floor<T>());
+  // the resolution is the absolute part of the bound below: the state's 16 (pe + rt)
+  // and the conditioning, itself a bound on |d_i - d_i,true| (units of a). Without
+  // the latter, a zone 1e3 times shorter than the conditioning was "resolved" with
+  // a relative estimate of 1.2e4 and the wrong slip direction (issue 13: a callback
+  // at the regime boundary, tests/test_select.cpp)
+  e.resolution = (d1 == 0 && d2 == 0 && q == 0) ? T(0) : T(max(T(16 * (pe + rt)), conditioning) + length_floor<T>());
   const T dm = smallest_zone(resolved_zone(d1, e.resolution, e.unresolved),
                              resolved_zone(d2, e.resolution, e.unresolved));
   if (!(dm > 0)) return e;  // stuck, or no zone resolved
