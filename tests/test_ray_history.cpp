@@ -525,3 +525,40 @@ TEST_CASE("periodic loading off the ray by static solves, against the march") {
   CHECK(method == HS_HISTORY_STATIC);
   CHECK(vertex(rh, 0).steps == 0);
 }
+
+TEST_CASE("periodic loading: bad arguments leave the history as it was; cycle tags survive a change of method") {
+  // (review of session 12) add_cycles checked its arguments inside each method's attempt: a bad
+  // argument made the superposition replay the path in the static solves and then the march
+  // before the error came back, and left the history in the march
+  hist_handle h;
+  new_history(h, 0);
+  add(h, {{0.3, 0.2}, {0, 0}});  // on the ray of the cycles below, back at zero
+  int method = -1;
+  REQUIRE(hs_history_method(h.h, &method) == HS_OK);
+  REQUIRE(method == HS_HISTORY_SUPERPOSITION);
+  CHECK(hs_history_add_cycles(h.h, 0, 0.3, 0, 0.2, 0, 0) == HS_ERR_BAD_OPTION);
+  CHECK(hs_history_add_cycles(h.h, 0.6, 0.5, 0, 0.2, 0, 2) == HS_ERR_GROSS_SLIDING);
+  CHECK(hs_history_add_cycles(h.h, 0, std::nan(""), 0, 0.2, 0, 2) == HS_ERR_NOT_FINITE);
+  REQUIRE(hs_history_method(h.h, &method) == HS_OK);
+  CHECK(method == HS_HISTORY_SUPERPOSITION);
+  size_t n = 0;
+  REQUIRE(hs_history_vertex_count(h.h, &n) == HS_OK);
+  CHECK(n == 2);
+  // cycles on the ray, tagged 1 and 2; a vertex off the ray then replays the path in the
+  // static solves, and the tags go with it
+  REQUIRE(hs_history_add_cycles(h.h, 0, 0.3, 0, 0.2, 0, 2) == HS_OK);
+  REQUIRE(hs_history_method(h.h, &method) == HS_OK);
+  CHECK(method == HS_HISTORY_SUPERPOSITION);
+  REQUIRE(hs_history_vertex_count(h.h, &n) == HS_OK);
+  std::vector<int> tags;
+  for (size_t i = 0; i < n; ++i) tags.push_back(vertex(h, i).cycle);
+  CHECK(tags.back() == 2);
+  add(h, {{0.1, 0.5}});
+  REQUIRE(hs_history_method(h.h, &method) == HS_OK);
+  CHECK(method != HS_HISTORY_SUPERPOSITION);
+  for (size_t i = 0; i < n; ++i) {
+    CAPTURE(i);
+    CHECK(vertex(h, i).cycle == tags[i]);
+  }
+  CHECK(vertex(h, n).cycle == 0);
+}

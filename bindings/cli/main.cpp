@@ -624,7 +624,9 @@ int cmd_solve(int argc, char **argv) {
   const double P = M_PI * sm.a * sm.p0 / 2;
   int recedes = 0;
   double recedes_at = 0;
-  check(hs_solution_ramp(sol, &recedes, &recedes_at), "ramp");
+  // the ramp note is extra: its failure (its monotonic solves along the ray, e.g. near
+  // sliding where only the reference answered the scene) is reported, not fatal
+  const int ramp_status = hs_solution_ramp(sol, &recedes, &recedes_at);
 
   // issue 15: peak surface stresses of each body (not for the reference model: its point
   // evaluations are too slow for the search) and the optional field grid
@@ -654,8 +656,12 @@ int cmd_solve(int argc, char **argv) {
     std::printf(", \"quadrature_order\": %d, \"model\": \"%s\", \"error_estimate\": %s", sm.quadrature_order,
                 model_name(sm.model), num(sm.error_estimate).c_str());
     std::printf(", \"zone_resolution\": %s", num(sm.zone_resolution).c_str());
-    std::printf(", \"ramp_recedes\": %s, \"ramp_recedes_at_Q_over_fP\": %s", recedes ? "true" : "false",
-                recedes ? num(recedes_at).c_str() : "null");
+    if (ramp_status == HS_OK)
+      std::printf(", \"ramp_recedes\": %s, \"ramp_recedes_at_Q_over_fP\": %s", recedes ? "true" : "false",
+                  recedes ? num(recedes_at).c_str() : "null");
+    else  // unknown: not decided
+      std::printf(", \"ramp_recedes\": null, \"ramp_recedes_at_Q_over_fP\": null, \"ramp_error\": \"%s\"",
+                  hs_strerror(ramp_status));
     if (have_surface) {
       std::printf(", \"surface_stress\": {");
       for (int b = 0; b < 2; ++b)
@@ -706,6 +712,9 @@ int cmd_solve(int argc, char **argv) {
           "  either way (the regime boundary), so its direction is reported as 0 and it is left out of the\n"
           "  estimate (docs/models.md)\n",
           sm.slip_dir1 == 0 ? 1 : 2, sm.zone_resolution / sm.a);
+    if (ramp_status != HS_OK)
+      std::printf("note: whether a proportional ramp from zero recedes a zone was not decided: %s\n",
+                  hs_strerror(ramp_status));
     if (recedes)
       std::printf(
           "note: this is the monotonic state (every slip zone grown from zero). A proportional ramp from\n"

@@ -63,6 +63,12 @@ struct hs_history {
     int cycle = 0;          // periodic loading: the cycle this vertex belongs to (0: none)
   };
   std::vector<static_vertex_rec> static_vertices;
+  // the cycle tag of vertex i (hs_history_vertex.cycle) in whichever method holds it
+  int vertex_cycle(size_t i) const {
+    if (ray_mode) return i < ray_vertices.size() ? ray_vertices[i].cycle : 0;
+    if (static_mode) return i < static_vertices.size() ? static_vertices[i].cycle : 0;
+    return h && i < h->fine().vertices().size() ? h->fine().vertices()[i].cycle : 0;
+  }
   size_t vertex_count() const {
     return ray_mode ? ray_vertices.size() : static_mode ? static_vertices.size() : h->fine().vertices().size();
   }
@@ -245,7 +251,10 @@ void to_march(hs_history &h) {
   if (!h.ray_mode && !h.static_mode) return;
   // into a fresh march: if the replay fails, the history stays as it was
   auto m = std::make_unique<core::refined_history<double>>(h.pm, h.march_options, h.march_rtol);
-  for (const auto &v : h.input) m->add_vertex(v.first, v.second);
+  for (size_t i = 0; i < h.input.size(); ++i) {
+    m->add_vertex(h.input[i].first, h.input[i].second);
+    m->tag_last_vertex(h.vertex_cycle(i));  // periodic loading's tags carried over
+  }
   h.h = std::move(m);
   h.ray_mode = false;
   h.static_mode = false;
@@ -282,10 +291,11 @@ bool to_static(hs_history &h) {
   std::shared_ptr<const core::static_history<double>> cur =
       std::make_shared<core::static_history<double>>(h.pm, h.static_accuracy);
   std::vector<hs_history::static_vertex_rec> recs;
-  for (const auto &v : h.input) {
+  for (size_t i = 0; i < h.input.size(); ++i) {
     hs_history::static_vertex_rec rec;
     std::shared_ptr<const core::static_history<double>> nx;
-    if (!add_static(*cur, v.first, v.second, nx, rec)) return false;
+    if (!add_static(*cur, h.input[i].first, h.input[i].second, nx, rec)) return false;
+    rec.cycle = h.vertex_cycle(i);  // periodic loading's tags carried over
     cur = nx;
     recs.push_back(std::move(rec));
   }
@@ -411,6 +421,8 @@ bool cycles_by(hs_history &h, const Restore &restore, double qm, double qa, doub
 int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double sa, double phase_deg, int cycles) {
   return guard([&] {
     require(h != nullptr, core::status::null_pointer, "NULL history");
+    // bad arguments first: each method below is tried and undone on any failure
+    core::check_cycles<double>(qm, qa, sm, sa, phase_deg, cycles, h->opts.segments_per_cycle);
     const size_t ni0 = h->input.size();
     // on the ray: the superposition
     if (h->ray_mode) {

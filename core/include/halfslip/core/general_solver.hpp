@@ -494,6 +494,14 @@ bool polish_near_sliding(const pressure_model<T> &pm, const T &q, const T &s, ge
   return true;
 }
 
+// Where the polish runs: within 1e-8 of sliding, same sign, and only in double and
+// long double, whose Newton floor can hide F2 there. Beyond (the reference's MPFR
+// tiers) Newton's floor is far below F2, and the polish's ln e tolerance (1e-12)
+// would cap the digits that the tiers certify.
+template <class T> bool polish_applies(const T &q, const general_state<T> &st) {
+  return std::numeric_limits<T>::digits <= 64 && q > 1 - T(1e-8) && st.x1 > 0;
+}
+
 // Continuation in s from s = 0 with the tangent predictor dx/ds = -J^-1 dF/ds.
 template <class T> bool continuation(const pressure_model<T> &pm, const T &q, const T &s, general_state<T> &st, int n,
                                      const T &tol_step, int max_it, int &iterations, int &steps) {
@@ -717,7 +725,7 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
       }
       // near sliding: the width to the rounding of F2 (polish_near_sliding); the
       // conditioning above holds for the polished state
-      if (q > 1 - T(1e-8) && st.x1 > 0) gdetail::polish_near_sliding(P, q, s, st, max(4 * n, 128));
+      if (gdetail::polish_applies(q, st)) gdetail::polish_near_sliding(P, q, s, st, max(4 * n, 128));
       n *= 2;
       break;
     }
@@ -730,7 +738,7 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
       // b_f/a = 0.95, 1 - Q/fP = 1e-13, sigma/fp0 = 1): the bracketed polish, then
       // the order control goes on
       st = before;
-      if (!(q > 1 - T(1e-8) && st.x1 > 0 && gdetail::polish_near_sliding(P, q, s, st, max(2 * n, 128))))
+      if (!(gdetail::polish_applies(q, st) && gdetail::polish_near_sliding(P, q, s, st, max(2 * n, 128))))
         throw error(status::no_convergence, "general solver: Newton iteration did not converge");
     }
   }

@@ -1628,6 +1628,20 @@ template <class T> struct cycle_result {
   size_t last_cycle_first = 0, last_cycle_end = 0;  // vertex range [first - 1, end) of the last cycle
 };
 
+// The arguments of add_cycles, checked before any vertex is added (the C ABI checks
+// them before it tries a method, so that a bad argument leaves the history as it was)
+template <class T>
+void check_cycles(const T &qm, const T &qa, const T &sm, const T &sa, const T &phase_deg, int cycles, int segments) {
+  using boost::math::isfinite;
+  using std::abs;
+  if (!isfinite(qm) || !isfinite(qa) || !isfinite(sm) || !isfinite(sa) || !isfinite(phase_deg))
+    throw error(status::not_finite, "cycles: a parameter is not finite");
+  if (cycles < 1 || cycles > 100000) throw error(status::bad_option, "cycles: need 1 <= cycles <= 100000");
+  if (segments < 4 || segments > 100000)
+    throw error(status::bad_option, "cycles: segments per cycle out of 4..100000");
+  if (!(abs(qm) + abs(qa) < 1)) throw error(status::gross_sliding, "cycles: |Qm| + |Qa| >= fP: gross sliding");
+}
+
 // Periodic loading q(t) = qm + qa sin(wt), s(t) = sm + sa sin(wt + phase),
 // reached from the current state (ramp order), then `cycles` cycles. A cycle
 // that traces a straight line (in phase, or one amplitude zero) is marched
@@ -1636,17 +1650,11 @@ template <class T> struct cycle_result {
 template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const T &qa, const T &sm, const T &sa,
                                                        const T &phase_deg, int cycles, ramp_order order, int segments,
                                                        const T &steady_rtol) {
-  using boost::math::isfinite;
   using std::abs;
   using std::fmod;
   using std::max;
   using std::sin;
-  if (!isfinite(qm) || !isfinite(qa) || !isfinite(sm) || !isfinite(sa) || !isfinite(phase_deg))
-    throw error(status::not_finite, "cycles: a parameter is not finite");
-  if (cycles < 1 || cycles > 100000) throw error(status::bad_option, "cycles: need 1 <= cycles <= 100000");
-  if (segments < 4 || segments > 100000)
-    throw error(status::bad_option, "cycles: segments per cycle out of 4..100000");
-  if (!(abs(qm) + abs(qa) < 1)) throw error(status::gross_sliding, "cycles: |Qm| + |Qa| >= fP: gross sliding");
+  check_cycles(qm, qa, sm, sa, phase_deg, cycles, segments);
   const T pi_ = pi<T>();
   const T ph = phase_deg * pi_ / 180;
   auto at = [&](const T &th, T &q, T &s) {
