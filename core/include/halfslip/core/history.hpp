@@ -83,6 +83,10 @@ template <class T> struct history_vertex {
 };
 
 namespace hdetail {
+// the status message of an interior slip patch (history::erase_at_limit, refined_history)
+constexpr const char *interior_patch_message =
+    "history: an interior slip zone opens away from the stick-zone end (more zones than the march models; "
+    "history_options::merge_interior_patches merges it into the edge zone, an approximation)";
 
 // b(u) = bb + (u - 1) g(u), g a polynomial in u of degree <= 3: exact at u = 1.
 template <class T> struct endpoly {
@@ -1399,9 +1403,7 @@ template <class T> class history {
           if (!patch) break;
           if (!opt_.merge_interior_patches)
             throw error(status::not_applicable,
-                        "history: an interior slip zone opens away from the stick-zone end (more zones than the "
-                        "march models; history_options::merge_interior_patches merges it into the edge zone, "
-                        "an approximation)");
+                        hdetail::interior_patch_message);
           ++interior_merges_;
           continue;
         }
@@ -1834,9 +1836,6 @@ template <class T> class refined_history {
     using std::max;
     using std::min;
     const history<T> &base = *fine_;
-    const char *patch_message =
-        "history: an interior slip zone opens away from the stick-zone end (more zones than the march models; "
-        "history_options::merge_interior_patches merges it into the edge zone, an approximation)";
     // a march that fails after merging an interior patch in this segment (patched_failure):
     // two such at consecutive steps are the patch's, not the step's (a march that merges a
     // real patch and goes on can lose its way: Hertz (0.95, 2.5) -> (0.95, -2.5) failed at
@@ -1857,7 +1856,7 @@ template <class T> class refined_history {
     };
     auto check_patches = [&](const history<T> &accepted) {
       if (strict_patches_ && accepted.interior_merges() > base.interior_merges())
-        throw error(status::not_applicable, patch_message);
+        throw error(status::not_applicable, hdetail::interior_patch_message);
     };
     if (!(rtol_ > 0)) {
       // one march, which is the accepted one: it merges only if the caller asked for it
@@ -1898,7 +1897,7 @@ template <class T> class refined_history {
         next = march(hn);
       } catch (const error &e) {
         if (e.code() != status::no_convergence) throw;
-        if (strict_patches_ && patched_failure && last_patched_failure) throw error(status::not_applicable, patch_message);
+        if (strict_patches_ && patched_failure && last_patched_failure) throw error(status::not_applicable, hdetail::interior_patch_message);
         last_patched_failure = patched_failure;
         if (!prev && hn / 2 >= min_step_) {
           h = hn;
