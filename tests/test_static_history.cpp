@@ -586,3 +586,84 @@ TEST_CASE("static history: random walks against the BEM (Hertz and flat punch)")
     check_against_bem(std::make_shared<flat_rounded_pressure<double>>(0.5), walk(7, 100));
   }
 }
+
+TEST_CASE("static history: copies share their segments; a long history is released without recursion") {
+  // a copy (hs_history's snapshot at each vertex) must not copy the earlier segments: their memory
+  // grew like the square of the vertex count when it did
+  static_history<double> h(hertz_pm());
+  h.add_vertex(0.0, 0.6);
+  h.add_vertex(-0.3, 0.6);
+  h.add_vertex(0.3, 0.6);
+  static_history<double> c(h);
+  REQUIRE(c.segment_count() == 3);
+  for (size_t k = 0; k < 3; ++k) CHECK(&c.segment(k) == &h.segment(k));
+  // the copy goes on alone: the original keeps its segments and its state
+  const double b1 = h.b1(), b2 = h.b2(), slip = h.slip(0.95);
+  c.add_vertex(-0.3, 0.6);
+  CHECK(c.segment_count() == 4);
+  CHECK(h.segment_count() == 3);
+  CHECK(h.b1() == b1);
+  CHECK(h.b2() == b2);
+  CHECK(h.slip(0.95) == slip);
+  CHECK(&c.segment(2) == &h.segment(2));
+  CHECK(&c.last_segment() != &h.last_segment());
+  CHECK(c.segment(1).dq == doctest::Approx(-0.3));
+  // the slip sums the segments oldest first, as before (the copy at the same state agrees bitwise)
+  static_history<double> d(h);
+  CHECK(d.slip(0.95) == slip);
+  CHECK_THROWS_AS(h.segment(3), error);
+  // a history of 3e5 segments (zero-length vertices cost nothing to solve; about 80 MB) and a
+  // copy of it: both are released node by node (a recursive release overflowed the 8 MB stack at
+  // this length, in the Release build and under ASan)
+  {
+    static_history<double> g(hertz_pm());
+    g.add_vertex(0.2, 0.1);
+    for (int k = 0; k < 300000; ++k) g.add_vertex(0.2, 0.1);
+    CHECK(g.segment_count() == 300001);
+    static_history<double> gc(g);
+    CHECK(&gc.segment(0) == &g.segment(0));
+  }
+}
+
+TEST_CASE("static history: a sampled pressure's new traction by the treecode equals the direct sums") {
+  // either side of static_history_accuracy::far_min (the treecode of the bands' fixed nodes,
+  // fmm1d.hpp): a sampled pressure cuts the bands at every sample; direct sums cost the cube of
+  // the sample count over a ramp (each end crosses every sample), the treecode about its square
+  auto run = [](auto zero, int n, std::size_t far_min) {
+    using R = decltype(zero);
+    std::vector<R> xs, ps;
+    for (int i = 0; i <= n; ++i) {
+      const R x = i == n ? R(1) : R(-1) + R(2 * i) / R(n);
+      xs.push_back(x);
+      ps.push_back(i == 0 || i == n ? R(0) : std::sqrt((1 - x) * (1 + x)) * (1 + x / 5));
+    }
+    auto pm = std::make_shared<sampled_pressure<R>>(xs, ps, R(1));
+    auto acc = static_history_accuracy<R>::for_rtol(R(1e-8));
+    acc.far_min = far_min;
+    static_history<R> h(pm, acc);
+    std::vector<R> out;
+    const R path[][2] = {{R(0.3), R(0.5)}, {R(0.1), R(0.2)}, {R(0.25), R(0.2)}};
+    for (const auto &v : path) {
+      h.add_vertex(v[0], v[1]);
+      out.insert(out.end(), {h.b1(), h.b2(), h.last_segment().E1, h.last_segment().E2});
+      for (const R x : {R(-0.95), R(-0.5), R(0.2), R(0.7), R(0.97)}) out.insert(out.end(), {h.traction(x), h.slip(x)});
+    }
+    return out;
+  };
+  for (int n : {300}) {
+    const auto a = run(0.0, n, 0), b = run(0.0, n, std::size_t(-1));
+    REQUIRE(a.size() == b.size());
+    double scale = 0;
+    for (double v : b) scale = std::max(scale, std::fabs(v));
+    for (size_t k = 0; k < a.size(); ++k) {
+      CAPTURE(k);
+      // the treecode's sums agree with the direct ones to a few eps of sum |terms|; through the
+      // ends' Newton and the panels' resolution (1e-10 at rtol 1e-8) they move the state by far
+      // less than the accuracy asked
+      CHECK(std::fabs(a[k] - b[k]) <= 1e-11 * scale);
+    }
+  }
+  // long double: the treecode takes more terms (its epsilon)
+  const auto al = run(0.0L, 120, 0), bl = run(0.0L, 120, std::size_t(-1));
+  for (size_t k = 0; k < al.size(); ++k) CHECK(std::fabs(double(al[k] - bl[k])) <= 1e-11);
+}

@@ -24,8 +24,10 @@
 // expansions move between parent and child by the binomial theorem (M2M, L2L),
 // and the leaves evaluate their expansion at their targets (Horner).
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include <boost/math/tools/precision.hpp>
@@ -211,6 +213,101 @@ template <class T> class cauchy_fmm {
   std::size_t leaf_;
   std::vector<node> sn_, tn_;
   std::vector<T> binom_;
+};
+
+// The same sums for targets that come one at a time (an adaptive subdivision that decides
+// where to evaluate from the values it has: core/static_history.hpp's new traction on a
+// sampled pressure), by a treecode (Barnes and Hut; Greengard and Rokhlin's multipole
+// expansion without the local one):
+//
+//   f(y) = sum_i q_i / (x_i - y).
+//
+// The sources (copied, sorted) get a binary tree over index ranges (leaves of at most `leaf`
+// points); node (centre c, radius r) holds the moments a_k = sum_i q_i ((x_i - c)/r)^k,
+// k < m, each from its points (no translation: |(x_i - c)/r| <= 1, no growth). A node with
+// |y - c| > 4r contributes -(1/D) sum_k a_k (r/D)^k, D = y - c (Horner), whose truncation
+// errs by at most sum|q_i|/|D| 4^-m/(1 - 1/4) <= (5/3) 4^-m sum|q_i|/|x_i - y| (|x_i - y| <=
+// 5|D|/4); m is the least with (5/3) 4^-m <= eps/4. Other nodes open, down to leaves summed
+// directly. Cost per target: about 2 m log2(n/leaf) + 2 leaf operations, not n.
+template <class T> class cauchy_treecode {
+ public:
+  explicit cauchy_treecode(std::vector<std::pair<T, T>> src, std::size_t leaf = 32) : leaf_(leaf < 1 ? 1 : leaf) {
+    using std::log;
+    std::sort(src.begin(), src.end(), [](const std::pair<T, T> &a, const std::pair<T, T> &b) { return a.first < b.first; });
+    x_.reserve(src.size());
+    q_.reserve(src.size());
+    for (auto &s : src) {
+      x_.push_back(std::move(s.first));
+      q_.push_back(std::move(s.second));
+    }
+    m_ = 1;
+    const T target = eps<T>() / 4 * 3 / 5;
+    for (T t = 1; t > target && m_ < 4096; t /= 4) ++m_;
+    if (!x_.empty()) build(0, x_.size());
+  }
+  std::size_t size() const { return x_.size(); }
+  int terms() const { return m_; }
+
+  T operator()(const T &y) const {
+    using std::abs;
+    T s = 0;
+    if (nodes_.empty()) return s;
+    int stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const node &nd = nodes_[std::size_t(stack[--top])];
+      const T D = y - nd.c;
+      if (abs(D) > 4 * nd.r) {
+        const T t = nd.r / D;
+        const T *a = &mom_[nd.mom];
+        T acc = a[m_ - 1];
+        for (int k = m_ - 1; k-- > 0;) acc = acc * t + a[k];
+        s -= acc / D;
+      } else if (nd.left < 0) {
+        for (std::size_t i = nd.lo; i < nd.hi; ++i) s += q_[i] / (x_[i] - y);
+      } else {
+        stack[top++] = nd.right;
+        stack[top++] = nd.left;
+      }
+    }
+    return s;
+  }
+
+ private:
+  struct node {
+    std::size_t lo, hi, mom;
+    T c, r;
+    int left, right;
+  };
+  // (depth: halving index ranges from at most 2^62 points is below 64 levels, so the
+  // evaluation's stack of 128 holds every pending right child)
+  int build(std::size_t lo, std::size_t hi) {
+    const int id = int(nodes_.size());
+    const T c = (x_[lo] + x_[hi - 1]) / 2, r = (x_[hi - 1] - x_[lo]) / 2;
+    nodes_.push_back({lo, hi, mom_.size(), c, r, -1, -1});
+    mom_.resize(mom_.size() + std::size_t(m_), T(0));
+    T *a = &mom_[nodes_[std::size_t(id)].mom];
+    for (std::size_t i = lo; i < hi; ++i) {
+      const T u = r > 0 ? T((x_[i] - c) / r) : T(0);
+      T t = q_[i];
+      for (int k = 0; k < m_; ++k) {
+        a[k] += t;
+        t *= u;
+      }
+    }
+    if (hi - lo <= leaf_) return id;
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const int l = build(lo, mid);
+    const int rr = build(mid, hi);
+    nodes_[std::size_t(id)].left = l;
+    nodes_[std::size_t(id)].right = rr;
+    return id;
+  }
+  std::size_t leaf_;
+  int m_ = 1;
+  std::vector<T> x_, q_, mom_;
+  std::vector<node> nodes_;
 };
 
 }}  // namespace hs::core

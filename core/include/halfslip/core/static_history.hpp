@@ -42,12 +42,16 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <boost/math/tools/roots.hpp>
 
+#include "fmm1d.hpp"
 #include "gauss.hpp"
 #include "history_rates.hpp"
 #include "numerics.hpp"
@@ -327,6 +331,75 @@ template <class T> struct sh_segment {
   std::vector<sh_jump<T>> jumps;  // phases with a fold (their slip from their start and end states)
 };
 
+// The segments of a path, oldest first, as a persistent list: appending shares every earlier
+// segment, so a copy of a history (each vertex's snapshot in hs_history, the work copy of
+// add_vertex) costs O(1) time and memory where a vector of the segments cost O(segments), which
+// made a history's memory grow like the square of its vertex count (516 MB for 2000 cycles of
+// `halfslip history --cycle 0.3,0.2,0.5,0,0`). The nodes are immutable once linked, so copies
+// may be read from several threads; release is iterative (a long chain would recurse).
+template <class T> class sh_segment_list {
+  struct node {
+    std::shared_ptr<const sh_segment<T>> seg;
+    std::shared_ptr<const node> prev;
+  };
+  std::shared_ptr<const node> head_;  // the newest segment
+  std::size_t n_ = 0;
+
+  void release() noexcept {
+    // drop the chain node by node while this list is its only owner (a node still shared by
+    // another copy ends the loop: that copy keeps the rest)
+    std::shared_ptr<const node> p = std::move(head_);
+    while (p && p.use_count() == 1) {
+      std::shared_ptr<const node> next = p->prev;
+      p.reset();
+      p = std::move(next);
+    }
+    n_ = 0;
+  }
+
+ public:
+  sh_segment_list() = default;
+  sh_segment_list(const sh_segment_list &) = default;
+  sh_segment_list(sh_segment_list &&o) noexcept : head_(std::move(o.head_)), n_(o.n_) { o.n_ = 0; }
+  sh_segment_list &operator=(sh_segment_list o) noexcept {
+    release();
+    head_ = std::move(o.head_);
+    n_ = o.n_;
+    o.n_ = 0;
+    return *this;
+  }
+  ~sh_segment_list() { release(); }
+
+  std::size_t size() const { return n_; }
+  void push_back(std::shared_ptr<const sh_segment<T>> sg) {
+    head_ = std::make_shared<const node>(node{std::move(sg), head_});
+    ++n_;
+  }
+  const sh_segment<T> &back() const {
+    if (!head_) throw error(status::internal, "static_history: no segment yet");
+    return *head_->seg;
+  }
+  // the k-th segment from the oldest (0-based), by a walk from the newest: O(size - k)
+  const sh_segment<T> &at(std::size_t k) const {
+    if (k >= n_) throw error(status::internal, "static_history: segment index out of range");
+    const node *p = head_.get();
+    for (std::size_t j = n_ - 1; j > k; --j) p = p->prev.get();
+    return *p->seg;
+  }
+  // f(segment) from the newest backwards while f returns true
+  template <class F> void newest_first(F &&f) const {
+    for (const node *p = head_.get(); p; p = p->prev.get())
+      if (!f(*p->seg)) return;
+  }
+  // the segments oldest first (pointers into the list, valid while it lives)
+  std::vector<const sh_segment<T> *> oldest_first() const {
+    std::vector<const sh_segment<T> *> v(n_);
+    std::size_t j = n_;
+    for (const node *p = head_.get(); p; p = p->prev.get()) v[--j] = p->seg.get();
+    return v;
+  }
+};
+
 // The quadrature orders and tolerances of the static solves. The defaults are full accuracy
 // (rounding level: ~1e-15 in the ends). for_rtol(rtol) picks cheaper ones whose result
 // agrees with the full-accuracy solve to within rtol (ends in units of a, energies relative
@@ -343,6 +416,11 @@ template <class T> struct static_history_accuracy {
   int slip = 24;                 // Gauss order of seg_slip's onset map
   T panel_tol = T(1e3) * eps<T>();  // panels resolved: last Legendre coefficients below this of the scale
   T rtol = 0;                    // the accuracy asked (0: full)
+  // the new traction sums a band's fixed nodes by a treecode (fmm1d.hpp, cauchy_treecode) from
+  // this many on, directly below: a sampled pressure cuts the bands at every sample, and the
+  // direct sums at every point of the new traction's panels cost the square of the sample count
+  // (0: always the treecode; SIZE_MAX: never; tests compare the two)
+  std::size_t far_min = 256;
 
   static static_history_accuracy for_rtol(const T &rtol) {
     static_history_accuracy a;
@@ -402,6 +480,7 @@ template <class T> class static_history {
         sorder_(acc.slip),
         ptol_(acc.panel_tol),
         rtol_(acc.rtol),
+        far_min_(acc.far_min),
         mono_tol_(std::max(T(1e3) * eps<T>(), T(acc.rtol))) {
     if (!pm_) throw error(status::null_pointer, "static_history: no pressure model");
     if (acc.theta < 4 || acc.lambda < 2 || acc.band < 2 || acc.band_theta < 2 || acc.zone < 2 || acc.slip < 2 || !(acc.panel_tol > 0))
@@ -428,8 +507,8 @@ template <class T> class static_history {
   int dir2() const { return s2_; }
   // the segments so far (shared and immutable: a copy of the history is cheap)
   size_t segment_count() const { return segs_.size(); }
-  const sh_segment<T> &segment(size_t k) const { return *segs_.at(k); }
-  const sh_segment<T> &last_segment() const { return *segs_.back(); }
+  const sh_segment<T> &segment(size_t k) const { return segs_.at(k); }  // O(segments - k)
+  const sh_segment<T> &last_segment() const { return segs_.back(); }
   const pressure_model<T> &pressure() const { return *pm_; }
 
   // the memory points inside the stick zone (cusps of the traction) and its ends
@@ -447,7 +526,7 @@ template <class T> class static_history {
   // slip accumulated at x over all segments
   T slip(const T &x) const {
     T h = 0;
-    for (const auto &sg : segs_) h += seg_slip(*sg, x);
+    for (const sh_segment<T> *sg : segs_.oldest_first()) h += seg_slip(*sg, x);
     return h;
   }
 
@@ -619,12 +698,16 @@ template <class T> class static_history {
   };
   struct bcache {
     std::vector<bpiece> pieces;
+    // pieces by (i, d, l, r): a sampled pressure cuts the bands into a piece per sample, and a
+    // linear search cost the square of their number
+    std::map<std::tuple<int, int, T, T>, std::size_t> index;
     std::vector<T> sig;
     bcache() = default;
     bcache(const bcache &) {}
     bcache(bcache &&) = default;
     bcache &operator=(const bcache &) {
       pieces.clear();
+      index.clear();
       sig.clear();
       return *this;
     }
@@ -661,20 +744,22 @@ template <class T> class static_history {
   void check_cache() const {
     if (!bc_.sig.empty() && sig_matches()) return;
     bc_.pieces.clear();
+    bc_.index.clear();
     state_sig(bc_.sig);
   }
   void clear_cache() const {
     bc_.pieces.clear();
+    bc_.index.clear();
     bc_.sig.clear();
   }
   const std::vector<bnode> &cached_nodes(int i, int d, const T &l, const T &r, int code) const {
     bpiece *pc = nullptr;
-    for (auto &q : bc_.pieces)
-      if (q.i == i && q.d == d && q.l == l && q.r == r) {
-        pc = &q;
-        break;
-      }
-    if (!pc) {
+    const auto key = std::make_tuple(i, d, l, r);
+    const auto it = bc_.index.find(key);
+    if (it != bc_.index.end()) {
+      pc = &bc_.pieces[it->second];
+    } else {
+      bc_.index.emplace(key, bc_.pieces.size());
       bc_.pieces.push_back(bpiece{i, d, l, r, std::vector<std::vector<bnode>>(nslots)});
       pc = &bc_.pieces.back();
     }
@@ -1465,13 +1550,15 @@ template <class T> class static_history {
   // ends b1_, b2_ (to 1e-9) with the zone directions d1, d2 and no fold (null: none)
   const sh_segment<T> *similar_segment(const T &dq, const T &ds, int d1, int d2) const {
     using std::abs;
-    for (size_t k = segs_.size(), n = 0; k-- > 0 && n < 4; ++n) {
-      const auto &S = *segs_[k];
+    const sh_segment<T> *found = nullptr;
+    int n = 0;
+    segs_.newest_first([&](const sh_segment<T> &S) {
       if (S.dq == dq && S.ds == ds && S.jumps.empty() && S.d1 == d1 && S.d2 == d2 && abs(S.b1s - b1_) <= T(1e-9) &&
           abs(S.b2s - b2_) <= T(1e-9))
-        return &S;
-    }
-    return nullptr;
+        found = &S;
+      return !found && ++n < 4;
+    });
+    return found;
   }
 
   // The fold after end i landed on a cusp at pt (lambda, b1, b2): if just inside the point the
@@ -1796,6 +1883,11 @@ template <class T> class static_history {
     T b1, b2;
     int d[2];
     std::vector<kpiece> p[2];
+    // the bands' pieces away from the new end (their nodes do not depend on x), summed by a
+    // treecode where they are many (far_min_): in coordinates from the new end (band 1: xi - b1
+    // > 0, band 2: xi + b2 < 0), as exact as the direct sums' (l - x) + (xi - l)
+    bool far_done = false;
+    std::unique_ptr<cauchy_treecode<T>> far[2];
   };
   kparts make_kparts(const T &b1, const T &b2, int d1, int d2) const {
     kparts kp;
@@ -1822,44 +1914,77 @@ template <class T> class static_history {
     }
     return kp;
   }
+  // the nodes (offset from the piece's end, weight) of piece P of band i at a theta-interval code
+  const std::vector<std::pair<T, T>> &kpiece_nodes(int i, int d, kpiece &P, int code, const T &b1, const T &b2,
+                                                  std::vector<bnode> &scratch) const {
+    using std::sqrt;
+    auto &v = P.lev[code_slot(code)];
+    if (!v.empty()) return v;
+    const T l = P.l, r = P.r, L = r - l;
+    const std::vector<bnode> *nd;
+    if (P.at_inner) {
+      make_nodes(i, d, l, r, code, scratch);
+      nd = &scratch;
+    } else {
+      nd = &cached_nodes(i, d, l, r, code);
+    }
+    const T sL = sqrt(L);
+    for (const bnode &q : *nd) {
+      T jw;
+      if (i == 1) {
+        const T dplus = q.xi + b2;
+        if (P.at_inner) jw = sL * q.ch / sqrt(dplus);
+        else jw = L * q.sh * q.ch / sqrt((l - b1 + q.xl) * dplus);
+        v.emplace_back(q.xl, q.gw * jw);
+      } else {
+        const T dminus = b1 - q.xi;
+        if (P.at_inner) jw = -sL * q.sh / sqrt(dminus);
+        else jw = -L * q.sh * q.ch / sqrt((-b2 - r + q.xr) * dminus);
+        v.emplace_back(q.xr, -(q.gw * jw));
+      }
+    }
+    return v;
+  }
+  void build_far(kparts &kp) const {
+    kp.far_done = true;
+    std::vector<bnode> scratch;
+    for (int i = 1; i <= 2; ++i) {
+      std::size_t n = 0;
+      for (const auto &P : kp.p[i - 1])
+        if (!P.at_inner)
+          for_codes(P.K, -2, [&](int code) { n += code == -2 ? std::size_t(rule_->n()) : brule_->x.size(); });
+      if (n == 0 || n < far_min_) continue;
+      std::vector<std::pair<T, T>> src;
+      src.reserve(n);
+      for (auto &P : kp.p[i - 1]) {
+        if (P.at_inner) continue;
+        // xi - b1 = (l - b1) + xl; xi + b2 = -((-b2 - r) + xr)
+        const T base = i == 1 ? T(P.l - kp.b1) : T(-kp.b2 - P.r);
+        for_codes(P.K, -2, [&](int code) {
+          for (const auto &of : kpiece_nodes(i, kp.d[i - 1], P, code, kp.b1, kp.b2, scratch))
+            src.emplace_back(i == 1 ? T(base + of.first) : T(-(base + of.first)), i == 1 ? of.second : T(-of.second));
+        });
+      }
+      kp.far[i - 1] = std::make_unique<cauchy_treecode<T>>(std::move(src));
+    }
+  }
   T new_traction(const T &x, kparts &kp) const {
     using std::sqrt;
     const T b1 = kp.b1, b2 = kp.b2;
+    if (!kp.far_done) build_far(kp);
     T Ks = 0;
     std::vector<bnode> scratch;
     for (int i = 1; i <= 2; ++i) {
       const int d = kp.d[i - 1];
+      const bool far = bool(kp.far[i - 1]);
+      if (far) Ks += (*kp.far[i - 1])(i == 1 ? T(x - b1) : T(x + b2));
       for (auto &P : kp.p[i - 1]) {
+        if (far && !P.at_inner) continue;
         const T l = P.l, r = P.r, L = r - l;
         const T base = i == 1 ? l - x : x - r;  // xi - x = base + xl (band 1), -(base + xr) (band 2)
         const int K = P.at_inner ? grade_level(base, L) : P.K;
         for_codes(K, -2, [&](int code) {
-          auto &v = P.lev[code_slot(code)];
-          if (v.empty()) {
-            const std::vector<bnode> *nd;
-            if (P.at_inner) {
-              make_nodes(i, d, l, r, code, scratch);
-              nd = &scratch;
-            } else {
-              nd = &cached_nodes(i, d, l, r, code);
-            }
-            const T sL = sqrt(L);
-            for (const bnode &q : *nd) {
-              T jw;
-              if (i == 1) {
-                const T dplus = q.xi + b2;
-                if (P.at_inner) jw = sL * q.ch / sqrt(dplus);
-                else jw = L * q.sh * q.ch / sqrt((l - b1 + q.xl) * dplus);
-                v.emplace_back(q.xl, q.gw * jw);
-              } else {
-                const T dminus = b1 - q.xi;
-                if (P.at_inner) jw = -sL * q.sh / sqrt(dminus);
-                else jw = -L * q.sh * q.ch / sqrt((-b2 - r + q.xr) * dminus);
-                v.emplace_back(q.xr, -(q.gw * jw));
-              }
-            }
-          }
-          for (const auto &of : v) Ks += of.second / (base + of.first);
+          for (const auto &of : kpiece_nodes(i, d, P, code, b1, b2, scratch)) Ks += of.second / (base + of.first);
         });
       }
     }
@@ -2459,6 +2584,7 @@ template <class T> class static_history {
   int sorder_ = 24;                          // seg_slip's Gauss order
   T ptol_ = T(1e3) * eps<T>();               // panel resolution (last Legendre coefficients)
   T rtol_ = 0;                               // the accuracy asked (0: full)
+  std::size_t far_min_ = 256;                // band nodes from which the new traction uses a treecode
   // how far an end found at a lambda node may lie outside the one before (rounding, or at an
   // accuracy asked the ends' own error, up to rtol) before the segment is not advancing-only
   T mono_tol_ = T(1e3) * eps<T>();
@@ -2468,7 +2594,7 @@ template <class T> class static_history {
   std::vector<std::array<T, 6>> zrates_;  // the zones' rates lately: g1, g2, A, B and the two rates
   std::vector<T> pbreaks_;
   std::vector<sh_panel<T>> panels_;
-  std::vector<std::shared_ptr<const sh_segment<T>>> segs_;
+  sh_segment_list<T> segs_;  // shared with copies (snapshots)
   T q_{0}, s_{0}, b1_{1}, b2_{1};
   int s1_ = 0, s2_ = 0;
 };
