@@ -65,9 +65,9 @@ template <class T> void zone_node_sc(const pressure_model<T> &pm, int side, cons
 }
 template <class T> void zone_node(const pressure_model<T> &pm, int side, const T &d, const T &e, const T &th,
                                   const T &w, bool jac, zone_sums<T> &r) {
-  using std::cos;
-  using std::sin;
-  zone_node_sc(pm, side, d, e, T(sin(th)), T(cos(th)), w, jac, r);
+  T sn, cs;
+  sin_cos(th, sn, cs);
+  zone_node_sc(pm, side, d, e, sn, cs, w, jac, r);
 }
 
 // The zone integrals of a model with a knot quadrature (the sampled pressure

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <type_traits>
 #include <vector>
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/precision.hpp>
@@ -17,6 +18,27 @@ namespace hs { namespace core {
 
 template <class T> inline T pi() { return boost::math::constants::pi<T>(); }
 template <class T> inline T eps() { return boost::math::tools::epsilon<T>(); }
+
+// s = sin x, c = cos x. A type may specialise sin_cos_of (the reference backend's MPFR
+// tiers: mpfr_sin_cos, one argument reduction for both, each correctly rounded as
+// mpfr_sin and mpfr_cos are, so the same values; issue 16).
+template <class T> struct sin_cos_of {
+  static void apply(const T &x, T &s, T &c) {
+    using std::cos;
+    using std::sin;
+    s = sin(x);
+    c = cos(x);
+  }
+};
+template <class T> inline void sin_cos(const T &x, T &s, T &c) { sin_cos_of<T>::apply(x, s, c); }
+
+// Whether the hottest loops of the reference backend (the flat punch's Gauss-ladder sum,
+// the energies' Cauchy sums) run in place, without a temporary a term: beyond the
+// built-in floating types (MPFR), where each temporary costs an initialisation. The
+// same operations in the same order, so the same values: tests/test_reference.cpp
+// turns it off for one MPFR type and compares (issue 16). The built-in types keep the
+// plain loops (their expressions might otherwise contract differently).
+template <class T> struct inplace_loops : std::integral_constant<bool, !std::is_floating_point<T>::value> {};
 
 // (product of num) / den * v, in that order, without an intermediate overflow or
 // underflow: the mantissas are multiplied (each in [1/2, 1), so their running

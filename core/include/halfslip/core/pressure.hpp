@@ -441,11 +441,30 @@ template <class T> class flat_rounded_pressure final : public pressure_model<T> 
       const rung &R = ladder_[j];
       const T *nd = nodes_.data() + R.first;
       T s = 0, sd = 0;
-      for (std::size_t k = 0; k < R.count; ++k, nd += 2) {
-        const T inv = 1 / (D - nd[0]);
-        const T f = nd[1] * inv;
-        s += f;
-        sd += f * inv;
+      if constexpr (!inplace_loops<T>::value) {
+        for (std::size_t k = 0; k < R.count; ++k, nd += 2) {
+          const T inv = 1 / (D - nd[0]);
+          const T f = nd[1] * inv;
+          s += f;
+          sd += f * inv;
+        }
+      } else {
+        // the same operations in place (no temporary a term; issue 16: this sum is
+        // most of a flat-punch solve in the reference backend), and sd only if asked
+        T dt, inv, f;
+        for (std::size_t k = 0; k < R.count; ++k, nd += 2) {
+          dt = D;
+          dt -= nd[0];
+          inv = 1;
+          inv /= dt;
+          f = nd[1];
+          f *= inv;
+          s += f;
+          if (d) {
+            f *= inv;
+            sd += f;
+          }
+        }
       }
       if (d) *d = sd;
       return s;

@@ -4,7 +4,8 @@
 // Precision tiers. Boost 1.74's variable-precision mpfr_float keeps its
 // default precision in one process-wide variable, so two threads working
 // at different precisions would interfere. The reference therefore uses
-// fixed-precision MPFR types, number<mpfr_float_backend<D>, et_off>, for a
+// fixed-precision MPFR types, number<mpfr_float_backend<D, allocate_stack>, et_off>
+// (the limbs inside the number: no allocation per temporary), for a
 // ladder of D (decimal digits). Each tier is explicitly instantiated in its
 // own translation unit (reference/src/tier.cpp, compiled once per tier with
 // -DHS_TIER_DIGITS=D). A request for N digits
