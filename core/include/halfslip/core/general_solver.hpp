@@ -449,6 +449,39 @@ bool near_sliding_start(const pressure_model<T> &pm, const T &q, const T &s, int
   return out.d2() > 0 && out.d1() < 2;
 }
 
+// The near-sliding start at an order that resolves it (issue 13, round two). The
+// start's ln e comes from F2, whose O(e^2) signal (~1e-11) is below the error of
+// the order the tolerance gives (16 in double): at order 16 the start's ln e was
+// off by 1.2 (flat punch b_f/a = 0.5, 1 - Q/fP = 1e-11, sigma/fp0 = 3: -13.65 for
+// -12.44), Newton from it left for ln e ~ -17.6 at every order up to 128, and
+// the continuation failed after it. Here the start is made at n and 2n, doubling
+// n (up to 4 times, 4n within max_order) until the two agree (x1 to 1e-6, ln e
+// to 0.05); n is then the lower of the two orders and out the start at 2n. False
+// where they never agree (the caller then tries the start at the entry order, as
+// before: two agreeing starts need not lead Newton to the root, flat punch
+// b_f/a = 0.8, 1 - Q/fP = 1e-13, sigma/fp0 = 1).
+template <class T>
+bool near_sliding_start_resolved(const pressure_model<T> &pm, const T &q, const T &s, int &n, int max_order,
+                                 general_state<T> &out) {
+  using std::abs;
+  general_state<T> a;
+  bool has_a = near_sliding_start(pm, q, s, n, a);
+  int m = n;
+  for (int k = 0; k < 4 && 4 * m <= max_order; ++k) {
+    general_state<T> b;
+    const bool has_b = near_sliding_start(pm, q, s, 2 * m, b);
+    if (has_a && has_b && abs(a.x1 - b.x1) <= T(1e-6) && abs(a.lw() - b.lw()) <= T(0.05)) {
+      out = b;
+      n = m;
+      return true;
+    }
+    a = b;
+    has_a = has_b;
+    m *= 2;
+  }
+  return false;
+}
+
 // A root of f near x0 (f's sign change within x0 -+ h, h doubled up to 8 times),
 // to tol; false if none is bracketed or the iteration limit is reached.
 template <class T, class F> bool local_root(F f, const T &x0, T h, const T &lo_lim, const T &hi_lim, const T &tol,
@@ -690,8 +723,23 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     const int n0 = n;
     // (up to 16 -> 256 in double from the near-sliding start: flat punch b_f/a = 0.5,
     // 1 - Q/fP = 4.5e-11, sigma/fp0 = 5 needs 256; up to 64 from the Hertz start)
-    if (s > 0 && gdetail::near_sliding_start(P, q, s, n, trial))
+    if (s > 0 && gdetail::near_sliding_start_resolved(P, q, s, n, opt.max_order, trial))
       ok = gdetail::newton_raising_order(P, q, s, trial, n, opt.max_order, tol_step, opt.max_iterations, its, 4);
+    if (!ok && s > 0) {
+      n = n0;
+      if (gdetail::near_sliding_start(P, q, s, n, trial))
+        ok = gdetail::newton_raising_order(P, q, s, trial, n, opt.max_order, tol_step, opt.max_iterations, its, 4);
+    }
+    if (!ok && st.x1 < 0 && s > 0) {
+      // opposite sign next to sliding (issue 13, round two): no near-sliding start
+      // (it follows a same-sign zone), and the large-sigma start above was tried at
+      // order n only, which does not resolve F1 there (power law n = 9.875,
+      // 1 - Q/fP = 1e-10, sigma/fp0 = 10: F1 at orders 16 and 32 differs by 1.2e-7
+      // at the start); Newton at a raised order from it
+      n = n0;
+      if (gdetail::large_sigma_start(P, q, s, n, trial))
+        ok = gdetail::newton_raising_order(P, q, s, trial, n, opt.max_order, tol_step, opt.max_iterations, its, 4);
+    }
     if (!ok) {
       n = n0;
       trial = st;

@@ -708,16 +708,23 @@ template <class T> class power_law_pressure final : public pressure_model<T> {
   // place of three (the central difference): the Jacobians of the power law's
   // solve at MPFR were two thirds of its time (issue 16). Used only in Newton
   // Jacobians, never in a residual. Double and long double keep the central
-  // difference (bitwise unchanged).
+  // difference, except for n < 3 at every x != 0 with z above the limit (issue 13,
+  // near sliding, round two): there p has a cusp ~|x|^(n-1) at x = 0 whose phi' the
+  // central difference (step ~3e-6 in double) misses at the graded panel's nodes
+  // near 0 (n = 1.5, x = 1e-6: off by 80 %, x = 1e-9: by 100 %), while the closed
+  // form's numerator is ~|x|^(n-1) there (relative error ~eps/|x|^(n-1)). Near
+  // sliding the Jacobian's moment row is ~1e-9 and took that error whole (J21
+  // -1.7e-5 for -3e-9 at n = 1.5, 1 - Q/fP = 1e-10, sigma/fp0 = 1): Newton stalled.
   T phi_dphi(const T &x, const T &dm, const T &dp, T &d) const override {
     using std::abs;
     using std::cbrt;
     using std::min;
-    if constexpr (std::numeric_limits<T>::digits10 > std::numeric_limits<long double>::digits10) {
+    {
+      constexpr bool mp = std::numeric_limits<T>::digits10 > std::numeric_limits<long double>::digits10;
       const T dist = min(dm, dp);
       const T z = dist * (2 - dist);  // 1 - x^2
       const T lim = (n_ > 1 ? n_ : T(1)) * cbrt(eps<T>());
-      if (z > lim && x * x > lim) {
+      if (z > lim && x != 0 && (mp ? x * x > lim : n_ < 3)) {
         const T f = F(x, z);
         d = n_ / 2 * (((1 + (n_ - 2) * z) * f - 1) / (x * z));
         return n_ / 2 * f;
