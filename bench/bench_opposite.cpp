@@ -4,8 +4,9 @@
 // baseline of the issue's targets; the slip at a point and the zone energies,
 // fixed Gauss rules in tau (the library) against the adaptive tanh-sinh path
 // they replace (hertz_solution::hhat_tanh_sinh / energy_hat_tanh_sinh, kept
-// callable); and hs_solve_batch against one hs_solve + summary per scene, on
-// the same scenes in the same run.
+// callable), and for the slip the same rules without the per-solution table
+// (hhat_untabulated) and the table's one-time set-up; and hs_solve_batch
+// against one hs_solve + summary per scene, on the same scenes in the same run.
 //   build/bench/bench_opposite --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //       --benchmark_out=bench/results/opposite.csv --benchmark_out_format=csv
 #include <benchmark/benchmark.h>
@@ -49,12 +50,28 @@ void bm_solve(benchmark::State &state, double q, double s, bool legacy) {
   }
 }
 
-void bm_slip(benchmark::State &state, double q, double s, bool old) {
+// path 0: adaptive tanh-sinh (before issue 16); 1: the library (the fixed
+// rules, reading the per-solution table where the zone has one; the table is
+// built by the first call, before the timed loop); 2: the same fixed rules
+// without the table (the library before session 13)
+void bm_slip(benchmark::State &state, double q, double s, int path) {
   const auto sol = solution(q, s);
   const double dl = 0.5 * sol.delta1;  // middle of zone 1, as bench_capi
+  benchmark::DoNotOptimize(sol.hhat(1, dl));
   for (auto _ : state) {
-    const double h = old ? sol.hhat_tanh_sinh(1, dl) : sol.hhat(1, dl);
+    const double h = path == 0 ? sol.hhat_tanh_sinh(1, dl) : path == 1 ? sol.hhat(1, dl) : sol.hhat_untabulated(1, dl);
     benchmark::DoNotOptimize(h);
+  }
+}
+
+// the one-time set-up of a zone's slip table (what the first slip of a
+// solution adds), to set beside the solve
+void bm_slip_table(benchmark::State &state, double q, double s) {
+  const auto sol = solution(q, s);
+  const auto st = sol.zone_state(1);
+  for (auto _ : state) {
+    const core::opposite_zone_integrals<double> z(st, true);
+    benchmark::DoNotOptimize(z.tabulated());
   }
 }
 
@@ -128,10 +145,14 @@ int main(int argc, char **argv) {
     for (bool old : {true, false}) {
       const std::string tag = std::string(old ? "tanh-sinh/" : "gauss-tau/") + c.name;
       benchmark::RegisterBenchmark(("slip_point/" + tag).c_str(),
-                                   [c, old](benchmark::State &st) { bm_slip(st, c.q, c.s, old); });
+                                   [c, old](benchmark::State &st) { bm_slip(st, c.q, c.s, old ? 0 : 1); });
       benchmark::RegisterBenchmark(("energies/" + tag).c_str(),
                                    [c, old](benchmark::State &st) { bm_energy(st, c.q, c.s, old); });
     }
+    benchmark::RegisterBenchmark((std::string("slip_point/gauss-tau-untabulated/") + c.name).c_str(),
+                                 [c](benchmark::State &st) { bm_slip(st, c.q, c.s, 2); });
+    benchmark::RegisterBenchmark((std::string("slip_table_setup/") + c.name).c_str(),
+                                 [c](benchmark::State &st) { bm_slip_table(st, c.q, c.s); });
   }
   for (int t : {1, 2})
     benchmark::RegisterBenchmark(("batch/threads:" + std::to_string(t)).c_str(),

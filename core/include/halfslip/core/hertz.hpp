@@ -10,6 +10,7 @@
 // units of a inside the canonical solution (beta = b/a, delta = 1 - beta).
 #pragma once
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -48,6 +49,47 @@ template <class T> void validate(const hertz_scene<T> &sc) {
   if (!(abs(sc.q) < 1)) throw error(status::gross_sliding, "|Q| >= fP: gross sliding, no stick zone");
 }
 
+// The opposite-sign zone integrals of a solution with their tables (issue 16:
+// the slip at a point reads 1 + 2G/pi from a Chebyshev table built once per
+// zone, opposite_zone_integrals::tabulate_g), built on a zone's first slip and
+// kept with the solution. Thread-safe without locks: a zone's object is
+// published once by compare-and-swap (a thread that loses the race deletes its
+// own) and is immutable afterwards. Each object records the state it was built
+// for: a caller whose solution's lengths have since been changed gets nullptr
+// (and evaluates without the table). A copy starts empty.
+template <class T> class opposite_zone_cache {
+ public:
+  using zone = opposite_zone_integrals<T>;
+  opposite_zone_cache() = default;
+  opposite_zone_cache(const opposite_zone_cache &) noexcept {}
+  opposite_zone_cache &operator=(const opposite_zone_cache &) noexcept {
+    reset();
+    return *this;
+  }
+  ~opposite_zone_cache() { reset(); }
+  // the zone object for state st (i = 0: right zone, 1: left), or nullptr
+  const zone *get(int i, const opposite_state<T> &st) const {
+    const zone *z = p_[i].load(std::memory_order_acquire);
+    if (!z) {
+      const zone *fresh = new zone(st, true);
+      const zone *expected = nullptr;
+      if (p_[i].compare_exchange_strong(expected, fresh, std::memory_order_acq_rel, std::memory_order_acquire)) {
+        z = fresh;
+      } else {
+        delete fresh;
+        z = expected;
+      }
+    }
+    return z->same_state(st) ? z : nullptr;
+  }
+
+ private:
+  mutable std::atomic<const zone *> p_[2] = {nullptr, nullptr};
+  void reset() noexcept {
+    for (auto &p : p_) delete p.exchange(nullptr, std::memory_order_acq_rel);
+  }
+};
+
 template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>, T, hertz_scene<T>> {
   using base = canonical_solution<hertz_solution<T>, T, hertz_scene<T>>;
   using base::beta1;
@@ -63,6 +105,10 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
   // range of T (width = 0); the opposite-sign slip and energies need its log
   T log_width{0};
 
+ private:
+  opposite_zone_cache<T> zone_cache_;
+
+ public:
   // Quadrature tolerance for the numerically integrated outputs.
   T quad_tol() const {
     using std::sqrt;
@@ -90,9 +136,15 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
 
   // The opposite-sign zone integrals of a canonical zone: the state with the
   // other zone first (as opposite_G_state takes it).
-  opposite_zone_integrals<T> zone_integrals(int zone) const {
-    return opposite_zone_integrals<T>(zone > 0 ? opposite_state<T>{delta2, delta1, width, log_width}
-                                               : opposite_state<T>{delta1, delta2, width, log_width});
+  opposite_state<T> zone_state(int zone) const {
+    return zone > 0 ? opposite_state<T>{delta2, delta1, width, log_width}
+                    : opposite_state<T>{delta1, delta2, width, log_width};
+  }
+  opposite_zone_integrals<T> zone_integrals(int zone) const { return opposite_zone_integrals<T>(zone_state(zone)); }
+  // the same with the slip table, kept with the solution (opposite_zone_cache);
+  // nullptr if the solution's lengths changed after the first call
+  const opposite_zone_integrals<T> *cached_zone_integrals(int zone) const {
+    return zone_cache_.get(zone > 0 ? 0 : 1, zone_state(zone));
   }
   // The fixed Gauss rules of hertz_opposite_slip.hpp are sized for <= 64-bit
   // significands (double, long double); wider types (the MPFR reference
@@ -101,6 +153,19 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
 
   // canonical dimensionless slip h = (f p0 a / E*) * hhat, zero at the stick boundary.
   T hhat(int zone, const T &dl) const {
+    if (!(dl > 0)) return T(0);
+    if (reg != regime::opposite_sign) return 2 * sqrt_quadratic_integral(dl, half_width());
+    if constexpr (!fixed_rules) {
+      return hhat_tanh_sinh(zone, dl);
+    } else {
+      const auto *z = cached_zone_integrals(zone);
+      const T I = z ? z->slip(dl) : zone_integrals(zone).slip(dl);
+      return zone > 0 ? I : -I;
+    }
+  }
+  // The same without the table (the path of before the table; tests and bench/
+  // compare the two)
+  T hhat_untabulated(int zone, const T &dl) const {
     if (!(dl > 0)) return T(0);
     if (reg != regime::opposite_sign) return 2 * sqrt_quadratic_integral(dl, half_width());
     if constexpr (!fixed_rules) {

@@ -24,9 +24,13 @@
 // tau = T - L_p s^2 makes it s^4 times a function analytic near [0, 1].
 // tests/test_hertz.cpp checks both against the tanh-sinh path in long double
 // and tests/test_reference.cpp against the MPFR reference backend.
+// The slip at a point can also read the integrand from a per-zone Chebyshev
+// table in tau (tabulate_g, issue 16 round two: no elliptic integral per node),
+// which hertz_solution builds on a zone's first slip and keeps.
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "gauss.hpp"
 #include "hertz_opposite.hpp"
@@ -68,7 +72,10 @@ template <class T> T hertz_pressure_tail(const T &c) {
 // drives G, st.d2 the length of this zone).
 template <class T> class opposite_zone_integrals {
  public:
-  explicit opposite_zone_integrals(const opposite_state<T> &st) : st_(st) {
+  // tabulate: also build the per-solution table of 1 + 2G/pi over the zone
+  // (tabulate_g) that slip reads at a point; the plain object (false) is what
+  // one evaluation needs.
+  explicit opposite_zone_integrals(const opposite_state<T> &st, bool tabulate = false) : st_(st) {
     using std::log;
     using std::sqrt;
     le_ = log_width(st);
@@ -93,7 +100,15 @@ template <class T> class opposite_zone_integrals {
     two_op1_ = 2 / op1_;
     coef_ = 4 * st.d1 * op2_ / 3;
     g2_ = 2 * coef_ / pi<T>();
+    if (tabulate) tabulate_g();
   }
+
+  // the state this object was built for (a cache checks it before use)
+  bool same_state(const opposite_state<T> &st) const {
+    return st.d1 == st_.d1 && st.d2 == st_.d2 && st.e == st_.e && st.le == st_.le;
+  }
+  // whether slip reads 1 + 2G/pi from the table (tabulate_g)
+  bool tabulated() const { return tab_n_ > 0; }
 
   // slip int_0^dl b(u) du (dl >= 0)
   T slip(const T &dl) const {
@@ -101,6 +116,7 @@ template <class T> class opposite_zone_integrals {
     using std::expm1;
     if (!(dl > 0)) return T(0);
     const T tmax = tau_of(dl);
+    if (tab_n_ > 0 && tmax <= tab_end_) return slip_tabulated(tmax);
     const T em1T = expm1(-tmax);
     const T eT = exp(-tmax);  // not 1 + em1T: that cancels for large T
     const T dlb = dl / (em1T * em1T);
@@ -164,6 +180,143 @@ template <class T> class opposite_zone_integrals {
   T agm_em_ = 1;
   int agm_n_ = 0;  // 0: not available (the generic cel_log is used)
 
+  // The table (issue 16, slip at a point). With u = e sinh^2(tau/2),
+  // R = (e/2) sinh(tau), the slip is
+  //   h(dl) = int_0^T -2 R^2 (1 + 2G/pi) dtau = -(e^2/2) int_0^T tau^2 f(tau) dtau,
+  //   f = (sinh(tau)/tau)^2 (1 + 2G/pi),  T = tau(dl).
+  // f is analytic in |Im tau| < pi (the second factor, above; the first is
+  // entire), so on [0, tab_end_] (tab_end_ just beyond tau(L), L this zone's
+  // length) its Chebyshev interpolant at the points of the first kind
+  // converges like rho^(-N), rho = pi/hw + sqrt(1 + (pi/hw)^2), hw the half
+  // length: hw <= 1/2 (rho >= 12.6) with N = 16 and hw <= 1 (rho >= 6.4) with
+  // N = 24 leave < 1e-17 of f's size on the Bernstein ellipse (sinh^2 adds at
+  // most a factor ~5 there). Built once per zone of a solution (N gfac
+  // evaluations side by side; hertz_solution keeps it), for double, and only
+  // where tau(L) <= 2, a stick zone not much narrower than the slip zone
+  // (longer ranges would need more terms than a solve's worth of set-up; they
+  // keep the direct evaluation). The series is stored in powers
+  // of x = 2 tau/tab_end_ - 1 (tab_a_), evaluated by Estrin's scheme (short
+  // dependency chains): with rho >= 6.4 > 1 + sqrt(2) the monomial
+  // coefficients stay of the order of the Chebyshev ones (the largest
+  // coefficient of T_k grows like (1 + sqrt 2)^k), so |x| <= 1 costs no digits.
+  static constexpr int tab_max = 24;
+  int tab_n_ = 0;  // 0: no table
+  T tab_end_ = 0, tab_scale_ = 0;  // tab_scale_ = 2/tab_end_
+  T tab_a_[tab_max];
+  T e2h_ = 0;  // e^2/2
+
+  template <int N> struct cheb_cos {
+    // cos(pi k (j + 1/2)/N) and the nodes cos(pi (j + 1/2)/N)
+    T c[N][N];
+    T x[N];
+    // the coefficients of T_k in powers of x (integers, exact)
+    T t[N][N];
+    cheb_cos() {
+      // cos(pi m/(2N)) with m = k (2j + 1) reduced mod 4N first: an angle
+      // rounded at k (j + 1/2) pi/N would be off by up to ~N^2 eps
+      using std::cos;
+      for (int j = 0; j < N; ++j) {
+        x[j] = cos(pi<T>() * T(2 * j + 1) / T(2 * N));
+        for (int k = 0; k < N; ++k) c[k][j] = cos(pi<T>() * T((k * (2 * j + 1)) % (4 * N)) / T(2 * N));
+      }
+      for (int k = 0; k < N; ++k)
+        for (int j = 0; j < N; ++j) t[k][j] = 0;
+      t[0][0] = 1;
+      if (N > 1) t[1][1] = 1;
+      for (int k = 2; k < N; ++k)
+        for (int j = 0; j < N; ++j) t[k][j] = (j > 0 ? 2 * t[k - 1][j - 1] : T(0)) - t[k - 2][j];
+    }
+  };
+  template <int N> void tabulate_n(const T &end) {
+    using std::expm1;
+    // (immutable after its thread-safe initialisation)
+    static const cheb_cos<N> cc;
+    T u[N], v[N], g[N];
+    for (int j = 0; j < N; ++j) {
+      const T tau = end * (1 + cc.x[j]) / 2;
+      // sinh(tau/2) from expm1 (no cancellation near tau = 0)
+      const T E = expm1(tau / 2);
+      const T sh = (E + E / (E + 1)) / 2;
+      u[j] = st_.e * sh * sh;
+      v[j] = u[j] + st_.e;
+    }
+    for (int j = 0; j < N; j += 16) gfac_batch(std::min(16, N - j), u + j, v + j, g + j);
+    for (int j = 0; j < N; ++j) {
+      // (sinh(tau)/tau)^2 = 4 u v/(e tau)^2
+      const T tau = end * (1 + cc.x[j]) / 2;
+      const T et = st_.e * tau;
+      g[j] *= 4 * u[j] * v[j] / (et * et);
+    }
+    // the transform of f - f0 (its rounding relative to the variation of f),
+    // f0 added back to c_0
+    const T f0 = g[N / 2];
+    T c[N];
+    for (int k = 0; k < N; ++k) {
+      T a = 0;
+      for (int j = 0; j < N; ++j) a += cc.c[k][j] * (g[j] - f0);
+      c[k] = (k == 0 ? T(1) : T(2)) * a / N;
+    }
+    c[0] += f0;
+    for (int j = 0; j < N; ++j) {
+      T a = 0;
+      for (int k = N - 1; k >= j; --k) a += c[k] * cc.t[k][j];
+      tab_a_[j] = a;
+    }
+    tab_n_ = N;
+  }
+  void tabulate_g() {
+    // double only: the table's 1e-17 is not long double's precision (wider
+    // types keep the direct evaluation)
+    if constexpr (std::numeric_limits<T>::digits > 53) return;
+    // (e^2/2 below is far from underflow)
+    if (!(st_.e >= T(1e-100)) || !(agm_n_ > 0)) return;
+    const T TL = tau_of(st_.d2);
+    if (!(TL > 0) || !(TL <= 2)) return;
+    const T end = TL * (1 + 64 * boost::math::tools::epsilon<T>());
+    if (end <= 1) tabulate_n<16>(end);
+    else tabulate_n<24>(end);
+    tab_end_ = end;
+    tab_scale_ = 2 / end;
+    e2h_ = st_.e * st_.e / 2;
+  }
+  // The slip at tau(dl) = tmax <= tab_end_ (<= 2) from the table:
+  // -(e^2/2) int_0^tmax tau^2 f(tau) dtau by the Gauss-Legendre rule
+  // integrate gives [0, tmax] (the same integrand up to the factor e^2/2,
+  // analytic in the same strip), with no transcendental call per node: nodes
+  // tau_k = (tmax/2)(1 -+ x_k) (1 - x_k exact), f by the table.
+  T slip_tabulated(const T &tmax) const {
+    if (tmax <= T(0.25)) return tab_n_ == 16 ? slip_tabulated_n<6, 16>(tmax) : slip_tabulated_n<6, 24>(tmax);
+    if (tmax <= T(0.75)) return tab_n_ == 16 ? slip_tabulated_n<8, 16>(tmax) : slip_tabulated_n<8, 24>(tmax);
+    if (tmax <= T(1.25)) return tab_n_ == 16 ? slip_tabulated_n<10, 16>(tmax) : slip_tabulated_n<10, 24>(tmax);
+    return tab_n_ == 16 ? slip_tabulated_n<12, 16>(tmax) : slip_tabulated_n<12, 24>(tmax);
+  }
+  // (n nodes and N terms fixed: the nodes' arrays stay in registers)
+  template <int n, int N> T slip_tabulated_n(const T &tmax) const {
+    const auto &r = rule(n);
+    const T h = tmax / 2;
+    T tau[n], w[n], x[n], p[n], q[N / 2][n];
+    for (int i = 0; i < n / 2; ++i) {
+      const T xi = r.x[n - 1 - i];  // > 0
+      tau[2 * i] = h * (1 - xi);
+      tau[2 * i + 1] = h * (1 + xi);
+      w[2 * i] = w[2 * i + 1] = r.w[i];
+    }
+    for (int k = 0; k < n; ++k) x[k] = tau[k] * tab_scale_ - 1;
+    // Estrin: pairs, then pairs of pairs with x^2, x^4, ...
+    for (int j = 0; j < N / 2; ++j)
+      for (int k = 0; k < n; ++k) q[j][k] = tab_a_[2 * j] + tab_a_[2 * j + 1] * x[k];
+    for (int k = 0; k < n; ++k) p[k] = x[k] * x[k];
+    for (int m = N / 2; m > 1; m = (m + 1) / 2) {
+      for (int j = 0; j < m / 2; ++j)
+        for (int k = 0; k < n; ++k) q[j][k] = q[2 * j][k] + q[2 * j + 1][k] * p[k];
+      if (m % 2)
+        for (int k = 0; k < n; ++k) q[m / 2][k] = q[m - 1][k];
+      for (int k = 0; k < n; ++k) p[k] *= p[k];
+    }
+    T sum = 0;
+    for (int k = 0; k < n; ++k) sum += w[k] * (tau[k] * tau[k]) * q[0][k];
+    return -e2h_ * h * sum;
+  }
   void agm_init(T kc) {
     using std::abs;
     using std::sqrt;
@@ -339,7 +492,8 @@ template <class T> class opposite_zone_integrals {
   // underflow, and what is left there is below e^(-40) of the total (see
   // integrate): such nodes count zero.
   template <class Fn> T node_sum(int n, const T *sig, const T *esig, const T *w, const Fn &f) const {
-    T u[16], v[16], m[16], g[16];
+    // (u, v zeroed only to spare GCC's -Wmaybe-uninitialized: f sets them)
+    T u[16] = {}, v[16] = {}, m[16], g[16];
     for (int k = 0; k < n; ++k) {
       m[k] = f(sig[k], esig[k], u[k], v[k]);
       if (!(v[k] > 0)) {
