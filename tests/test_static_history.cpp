@@ -667,3 +667,30 @@ TEST_CASE("static history: a sampled pressure's new traction by the treecode equ
   const auto al = run(0.0L, 120, 0), bl = run(0.0L, 120, std::size_t(-1));
   for (size_t k = 0; k < al.size(); ++k) CHECK(std::fabs(double(al[k] - bl[k])) <= 1e-11);
 }
+
+TEST_CASE("static history: slip at a sample after a fold (cuts within rounding merged)") {
+  // a sampled Hertz pressure (201 samples); the last segment reverses both zones with a fold, so
+  // its slip comes from its start and end states (sh_start). At x = 0.91, a sample lies at
+  // 0.90999999999999992: the slip's pieces had one of an ulp, whose nodes fell on its ends, and
+  // the slip was NaN at 0.9, 0.91, 0.92, 0.93 (not at 0.901, 0.905, 0.94)
+  const int n = 200;
+  std::vector<double> xs, ps;
+  for (int i = 0; i <= n; ++i) {
+    const double x = i == n ? 1.0 : -1.0 + 2.0 * i / n;
+    xs.push_back(x);
+    ps.push_back(i == 0 || i == n ? 0.0 : std::sqrt((1 - x) * (1 + x)));
+  }
+  static_history<double> h(std::make_shared<sampled_pressure<double>>(xs, ps, 1.0),
+                           static_history_accuracy<double>::for_rtol(1e-8));
+  const double path[][2] = {{0.3, 0.5}, {0.1, 0.2}, {0.25, 0.2}, {-0.2, 0.3}};
+  for (const auto &v : path) h.add_vertex(v[0], v[1]);
+  REQUIRE(h.last_segment().jumps.size() == 1);
+  for (const double x : {0.9, 0.91, 0.92, 0.93, -1.0 + 2.0 * 183 / n, -1.0 + 2.0 * 195 / n}) {
+    CAPTURE(x);
+    const double v = h.slip(x);
+    REQUIRE(std::isfinite(v));
+    // continuous: against points 1e-9 either side (the slip's slope here is about 1)
+    CHECK(std::fabs(v - (h.slip(x - 1e-9) + h.slip(x + 1e-9)) / 2) <= 1e-12);
+    CHECK(v < 0);  // zone 1 slips back (direction -1) over the reversal
+  }
+}

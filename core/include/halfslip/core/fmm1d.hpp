@@ -227,7 +227,7 @@ template <class T> class cauchy_fmm {
 // k < m, each from its points (no translation: |(x_i - c)/r| <= 1, no growth). A node with
 // |y - c| > 4r contributes -(1/D) sum_k a_k (r/D)^k, D = y - c (Horner), whose truncation
 // errs by at most sum|q_i|/|D| 4^-m/(1 - 1/4) <= (5/3) 4^-m sum|q_i|/|x_i - y| (|x_i - y| <=
-// 5|D|/4); m is the least with (5/3) 4^-m <= eps/4. Other nodes open, down to leaves summed
+// 5|D|/4); m is one more than the least with (5/3) 4^-m <= eps/4. Other nodes open, down to leaves summed
 // directly. Cost per target: about 2 m log2(n/leaf) + 2 leaf operations, not n.
 template <class T> class cauchy_treecode {
  public:

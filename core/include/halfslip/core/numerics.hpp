@@ -35,7 +35,7 @@ template <class T> inline void sin_cos(const T &x, T &s, T &c) { sin_cos_of<T>::
 // Whether the hottest loops of the reference backend (the flat punch's Gauss-ladder sum,
 // the energies' Cauchy sums) run in place, without a temporary a term: beyond the
 // built-in floating types (MPFR), where each temporary costs an initialisation. The
-// same operations in the same order, so the same values: tests/test_reference.cpp
+// same operations in the same order, so the same values: tests/test_reference_inplace.cpp
 // turns it off for one MPFR type and compares (issue 16). The built-in types keep the
 // plain loops (their expressions might otherwise contract differently).
 template <class T> struct inplace_loops : std::integral_constant<bool, !std::is_floating_point<T>::value> {};

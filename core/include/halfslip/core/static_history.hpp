@@ -168,6 +168,8 @@ template <class T, class F> T pv_pieces(const std::vector<T> &cuts, const F &f, 
       const T xl = L * sh * sh, xr = L * ch * ch;
       const T eta = xl <= xr ? l + xl : cuts[k + 1] - xr;
       const T w = pi_ / 2 * gr->w[j] * L * sh * ch;
+      // (a node on x itself, in a piece of a few ulps next to it: its term is w f'(x), w ~ L)
+      if (inside && eta == x) continue;
       s += w * (f(eta) - fx) / (eta - x);
     }
   }
@@ -213,7 +215,21 @@ template <class T> struct sh_start {
     c.push_back(hi);
     std::sort(c.begin(), c.end());
     c.erase(std::unique(c.begin(), c.end()), c.end());
-    return c;
+    // cuts within rounding of each other are one (the piece between them is merged into its
+    // neighbour, not dropped): a piece of an ulp or two has its nodes on its ends, where the
+    // PV's (f(eta) - f(x)) / (eta - x) is 0/0 and 1/X at the stick end infinite. A slip
+    // evaluated at a sample of a sampled pressure after a fold was NaN: the knot 0.90999999999999992
+    // and x = 0.91 (tests/test_static_history.cpp, "slip at a sample after a fold"). The PV point x
+    // and the ends are kept.
+    const T tol = 64 * eps<T>();
+    std::vector<T> m{c.front()};
+    for (size_t k = 1; k < c.size(); ++k) {
+      const bool keep = k + 1 == c.size() || (x && c[k] == *x);
+      if (c[k] - m.back() > tol) m.push_back(c[k]);
+      else if (keep && m.size() > 1 && !(x && m.back() == *x)) m.back() = c[k];
+      else if (keep && k + 1 == c.size()) m.push_back(c[k]);  // (lo and hi, or x and hi, that close)
+    }
+    return m;
   }
   // dh'(x) of the state (b1, b2, d1, d2), x outside its stick zone
   T dhp(const T &x, const T &e1, const T &e2, int d1, int d2) const {
@@ -340,20 +356,28 @@ template <class T> struct sh_segment {
 template <class T> class sh_segment_list {
   struct node {
     std::shared_ptr<const sh_segment<T>> seg;
-    std::shared_ptr<const node> prev;
+    mutable std::shared_ptr<const node> prev;  // (mutable: taken over by the destructor)
+    node(std::shared_ptr<const sh_segment<T>> s, std::shared_ptr<const node> p) : seg(std::move(s)), prev(std::move(p)) {}
+    node(const node &) = delete;
+    node &operator=(const node &) = delete;
+    // drop the chain before this node one by one while it is the only owner (a node still
+    // shared by another copy ends the loop: that copy keeps the rest). Whichever thread
+    // destroys a node runs this loop, so two threads releasing copies at once recurse at most
+    // one level, never along the chain.
+    ~node() {
+      std::shared_ptr<const node> p = std::move(prev);
+      while (p && p.use_count() == 1) {
+        std::shared_ptr<const node> next = std::move(p->prev);
+        p.reset();
+        p = std::move(next);
+      }
+    }
   };
   std::shared_ptr<const node> head_;  // the newest segment
   std::size_t n_ = 0;
 
   void release() noexcept {
-    // drop the chain node by node while this list is its only owner (a node still shared by
-    // another copy ends the loop: that copy keeps the rest)
-    std::shared_ptr<const node> p = std::move(head_);
-    while (p && p.use_count() == 1) {
-      std::shared_ptr<const node> next = p->prev;
-      p.reset();
-      p = std::move(next);
-    }
+    head_.reset();
     n_ = 0;
   }
 
@@ -372,7 +396,7 @@ template <class T> class sh_segment_list {
 
   std::size_t size() const { return n_; }
   void push_back(std::shared_ptr<const sh_segment<T>> sg) {
-    head_ = std::make_shared<const node>(node{std::move(sg), head_});
+    head_ = std::make_shared<const node>(std::move(sg), head_);
     ++n_;
   }
   const sh_segment<T> &back() const {
@@ -793,6 +817,18 @@ template <class T> class static_history {
   // crossings, where an end lies just inside a memory point and the piece beyond the point
   // was integrated with errors of 1e-4), or the point x of the kernel 1/(xi - x)
   // (dq = x - the end: D = dq for the piece at the end).
+  // dxi / X at a node of piece (l, r) of band i (dxi = L sh ch dtheta), X from the exact
+  // distances; a piece at the new end (at_inner) takes the end's square root into the map
+  static T band_jw(int i, bool at_inner, const T &l, const T &r, const T &L, const T &sL, const T &b1, const T &b2,
+                   const bnode &q) {
+    using std::sqrt;
+    if (i == 1) {
+      const T dplus = q.xi + b2;
+      return at_inner ? T(sL * q.ch / sqrt(dplus)) : T(L * q.sh * q.ch / sqrt((l - b1 + q.xl) * dplus));
+    }
+    const T dminus = b1 - q.xi;
+    return at_inner ? T(-sL * q.sh / sqrt(dminus)) : T(-L * q.sh * q.ch / sqrt((-b2 - r + q.xr) * dminus));
+  }
   band_out band(int i, const T &b1, const T &b2, int d, bool want_k, const T &x) const {
     using std::sqrt;
     band_out o;
@@ -833,18 +869,7 @@ template <class T> class static_history {
           nd = &cached_nodes(i, d, l, r, code);
         }
         for (const bnode &q : *nd) {
-          // dxi / X: dxi = L sh ch dtheta
-          T jw;
-          if (i == 1) {
-            const T dplus = q.xi + b2;
-            if (at_inner) jw = sL * q.ch / sqrt(dplus);
-            else jw = L * q.sh * q.ch / sqrt((l - b1 + q.xl) * dplus);
-          } else {
-            const T dminus = b1 - q.xi;
-            if (at_inner) jw = -sL * q.sh / sqrt(dminus);
-            else jw = -L * q.sh * q.ch / sqrt((-b2 - r + q.xr) * dminus);
-          }
-          const T f = q.gw * jw;
+          const T f = q.gw * band_jw(i, at_inner, l, r, L, sL, b1, b2, q);
           o.I += f;
           o.J += f * (q.xi - c);
           // xi - x from the exact distances (x is close to the band's end: xi - x = D + xl)
@@ -1887,6 +1912,7 @@ template <class T> class static_history {
     // treecode where they are many (far_min_): in coordinates from the new end (band 1: xi - b1
     // > 0, band 2: xi + b2 < 0), as exact as the direct sums' (l - x) + (xi - l)
     bool far_done = false;
+    bool far_ok = true;  // false: direct sums (few points to evaluate)
     std::unique_ptr<cauchy_treecode<T>> far[2];
   };
   kparts make_kparts(const T &b1, const T &b2, int d1, int d2) const {
@@ -1930,23 +1956,15 @@ template <class T> class static_history {
     }
     const T sL = sqrt(L);
     for (const bnode &q : *nd) {
-      T jw;
-      if (i == 1) {
-        const T dplus = q.xi + b2;
-        if (P.at_inner) jw = sL * q.ch / sqrt(dplus);
-        else jw = L * q.sh * q.ch / sqrt((l - b1 + q.xl) * dplus);
-        v.emplace_back(q.xl, q.gw * jw);
-      } else {
-        const T dminus = b1 - q.xi;
-        if (P.at_inner) jw = -sL * q.sh / sqrt(dminus);
-        else jw = -L * q.sh * q.ch / sqrt((-b2 - r + q.xr) * dminus);
-        v.emplace_back(q.xr, -(q.gw * jw));
-      }
+      const T f = q.gw * band_jw(i, P.at_inner, l, r, L, sL, b1, b2, q);
+      if (i == 1) v.emplace_back(q.xl, f);
+      else v.emplace_back(q.xr, -f);
     }
     return v;
   }
   void build_far(kparts &kp) const {
     kp.far_done = true;
+    if (!kp.far_ok) return;
     std::vector<bnode> scratch;
     for (int i = 1; i <= 2; ++i) {
       std::size_t n = 0;
@@ -2125,6 +2143,9 @@ template <class T> class static_history {
     }
     if (xs.empty()) return true;
     kparts kp = make_kparts(pt[1], pt[2], d1, d2);
+    // (the treecode's set-up costs about m log2(N/32) direct sums of its N nodes, m ~ 29 terms in
+    // double: below ~128 points they are cheaper; a review's estimate, session 13)
+    kp.far_ok = xs.size() >= 128;
     for (const T &x : xs)
       if (abs(new_traction(x, kp)) > pm_->p(x) * (1 + T(1e-9)) + T(1e-10)) return false;
     return true;
