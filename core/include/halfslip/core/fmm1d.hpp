@@ -232,7 +232,6 @@ template <class T> class cauchy_fmm {
 template <class T> class cauchy_treecode {
  public:
   explicit cauchy_treecode(std::vector<std::pair<T, T>> src, std::size_t leaf = 32) : leaf_(leaf < 1 ? 1 : leaf) {
-    using std::log;
     std::sort(src.begin(), src.end(), [](const std::pair<T, T> &a, const std::pair<T, T> &b) { return a.first < b.first; });
     x_.reserve(src.size());
     q_.reserve(src.size());

@@ -459,13 +459,16 @@ bool near_sliding_start(const pressure_model<T> &pm, const T &q, const T &s, int
 // to 0.05); n is then the lower of the two orders and out the start at 2n. False
 // where they never agree (the caller then tries the start at the entry order, as
 // before: two agreeing starts need not lead Newton to the root, flat punch
-// b_f/a = 0.8, 1 - Q/fP = 1e-13, sigma/fp0 = 1).
+// b_f/a = 0.8, 1 - Q/fP = 1e-13, sigma/fp0 = 1). entry (entry_ok): the start at the
+// entry order, made first, for that fallback.
 template <class T>
 bool near_sliding_start_resolved(const pressure_model<T> &pm, const T &q, const T &s, int &n, int max_order,
-                                 general_state<T> &out) {
+                                 general_state<T> &out, general_state<T> &entry, bool &entry_ok) {
   using std::abs;
   general_state<T> a;
   bool has_a = near_sliding_start(pm, q, s, n, a);
+  entry = a;
+  entry_ok = has_a;
   int m = n;
   for (int k = 0; k < 4 && 4 * m <= max_order; ++k) {
     general_state<T> b;
@@ -723,11 +726,15 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     const int n0 = n;
     // (up to 16 -> 256 in double from the near-sliding start: flat punch b_f/a = 0.5,
     // 1 - Q/fP = 4.5e-11, sigma/fp0 = 5 needs 256; up to 64 from the Hertz start)
-    if (s > 0 && gdetail::near_sliding_start_resolved(P, q, s, n, opt.max_order, trial))
+    general_state<T> entry;
+    bool entry_ok = false;
+    if (s > 0 && gdetail::near_sliding_start_resolved(P, q, s, n, opt.max_order, trial, entry, entry_ok))
       ok = gdetail::newton_raising_order(P, q, s, trial, n, opt.max_order, tol_step, opt.max_iterations, its, 4);
     if (!ok && s > 0) {
+      // the start at the entry order (made first by near_sliding_start_resolved)
       n = n0;
-      if (gdetail::near_sliding_start(P, q, s, n, trial))
+      trial = entry;
+      if (entry_ok)
         ok = gdetail::newton_raising_order(P, q, s, trial, n, opt.max_order, tol_step, opt.max_iterations, its, 4);
     }
     if (!ok && st.x1 < 0 && s > 0) {

@@ -153,15 +153,14 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
 
   // canonical dimensionless slip h = (f p0 a / E*) * hhat, zero at the stick boundary.
   T hhat(int zone, const T &dl) const {
-    if (!(dl > 0)) return T(0);
-    if (reg != regime::opposite_sign) return 2 * sqrt_quadratic_integral(dl, half_width());
-    if constexpr (!fixed_rules) {
-      return hhat_tanh_sinh(zone, dl);
-    } else {
-      const auto *z = cached_zone_integrals(zone);
-      const T I = z ? z->slip(dl) : zone_integrals(zone).slip(dl);
-      return zone > 0 ? I : -I;
+    if constexpr (fixed_rules) {
+      if (dl > 0 && reg == regime::opposite_sign)
+        if (const auto *z = cached_zone_integrals(zone)) {
+          const T I = z->slip(dl);
+          return zone > 0 ? I : -I;
+        }
     }
+    return hhat_untabulated(zone, dl);
   }
   // The same without the table (the path of before the table; tests and bench/
   // compare the two)

@@ -376,24 +376,7 @@ template <class T> class sh_segment_list {
   std::shared_ptr<const node> head_;  // the newest segment
   std::size_t n_ = 0;
 
-  void release() noexcept {
-    head_.reset();
-    n_ = 0;
-  }
-
  public:
-  sh_segment_list() = default;
-  sh_segment_list(const sh_segment_list &) = default;
-  sh_segment_list(sh_segment_list &&o) noexcept : head_(std::move(o.head_)), n_(o.n_) { o.n_ = 0; }
-  sh_segment_list &operator=(sh_segment_list o) noexcept {
-    release();
-    head_ = std::move(o.head_);
-    n_ = o.n_;
-    o.n_ = 0;
-    return *this;
-  }
-  ~sh_segment_list() { release(); }
-
   std::size_t size() const { return n_; }
   void push_back(std::shared_ptr<const sh_segment<T>> sg) {
     head_ = std::make_shared<const node>(std::move(sg), head_);
@@ -715,23 +698,17 @@ template <class T> class static_history {
   // the band cache: per state (checked by a signature of the state's traction: the cache is
   // filled and read only in the calls of a segment, on the history's private copy; a copy of
   // the history starts with an empty one)
-  struct bpiece {
-    int i, d;
-    T l, r;
-    std::vector<std::vector<bnode>> lev;
-  };
   struct bcache {
-    std::vector<bpiece> pieces;
-    // pieces by (i, d, l, r): a sampled pressure cuts the bands into a piece per sample, and a
-    // linear search cost the square of their number
-    std::map<std::tuple<int, int, T, T>, std::size_t> index;
+    // a piece's nodes by theta-interval code slot, by (i, d, l, r): a map, where a sampled
+    // pressure cuts the bands into a piece per sample and a linear search cost the square of
+    // their number (the map's values stay where they are as it grows)
+    std::map<std::tuple<int, int, T, T>, std::vector<std::vector<bnode>>> pieces;
     std::vector<T> sig;
     bcache() = default;
     bcache(const bcache &) {}
     bcache(bcache &&) = default;
     bcache &operator=(const bcache &) {
       pieces.clear();
-      index.clear();
       sig.clear();
       return *this;
     }
@@ -768,26 +745,16 @@ template <class T> class static_history {
   void check_cache() const {
     if (!bc_.sig.empty() && sig_matches()) return;
     bc_.pieces.clear();
-    bc_.index.clear();
     state_sig(bc_.sig);
   }
   void clear_cache() const {
     bc_.pieces.clear();
-    bc_.index.clear();
     bc_.sig.clear();
   }
   const std::vector<bnode> &cached_nodes(int i, int d, const T &l, const T &r, int code) const {
-    bpiece *pc = nullptr;
-    const auto key = std::make_tuple(i, d, l, r);
-    const auto it = bc_.index.find(key);
-    if (it != bc_.index.end()) {
-      pc = &bc_.pieces[it->second];
-    } else {
-      bc_.index.emplace(key, bc_.pieces.size());
-      bc_.pieces.push_back(bpiece{i, d, l, r, std::vector<std::vector<bnode>>(nslots)});
-      pc = &bc_.pieces.back();
-    }
-    auto &v = pc->lev[code_slot(code)];
+    auto &lev = bc_.pieces[std::make_tuple(i, d, l, r)];
+    if (lev.empty()) lev.resize(nslots);
+    auto &v = lev[code_slot(code)];
     if (v.empty()) make_nodes(i, d, l, r, code, v);
     return v;
   }
