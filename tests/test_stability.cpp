@@ -527,6 +527,26 @@ TEST_CASE("issue 13: the power law's phi' next to its cusp at x = 0 (n = 1.5), d
   }
 }
 
+namespace {
+// A near-sliding scene of the tests below: geometry, its parameter, 1 - |Q/fP| and sigma/fp0
+struct near_case {
+  int kind;
+  double par, om, s;
+};
+// its summary from HS_MODEL_DEFAULT at Q/fP = q (which must answer)
+hs_summary default_summary(const near_case &c, double q) {
+  CAPTURE(c.kind);
+  CAPTURE(c.par);
+  CAPTURE(q);
+  CAPTURE(c.s);
+  hs_solution *sol = nullptr;
+  REQUIRE(solve_geometry(c.kind, c.par, q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
+  const hs_summary sm = summary(sol);
+  hs_solution_free(sol);
+  return sm;
+}
+}  // namespace
+
 TEST_CASE("issue 13: near sliding, same sign: scenes of the sweep that failed, against long double") {
   // Before: HS_ERR_NO_CONVERGENCE from DEFAULT on each (near-sliding sweep above). Causes:
   //  - the power law n = 1.5: the Jacobian near the cusp (test above);
@@ -535,10 +555,6 @@ TEST_CASE("issue 13: near sliding, same sign: scenes of the sweep that failed, a
   //    and Newton left for ln e ~ -17.6 at every order up to 128; now the start is made at
   //    the order where two successive orders agree.
   // Truth: the long double solver, with its own bound as in the sweep.
-  struct near_case {
-    int kind;
-    double par, om, s;
-  };
   const near_case cases[] = {
       {HS_GEOMETRY_POWER_LAW, 1.5, 1e-10, 1},        {HS_GEOMETRY_POWER_LAW, 1.5, 4.5e-11, -0.3},
       {HS_GEOMETRY_POWER_LAW, 1.5, 1e-13, 2.2},      {HS_GEOMETRY_FLAT_ROUNDED, 0.5, 1e-11, -3},
@@ -551,10 +567,7 @@ TEST_CASE("issue 13: near sliding, same sign: scenes of the sweep that failed, a
       CAPTURE(c.par);
       CAPTURE(q);
       CAPTURE(c.s);
-      hs_solution *sol = nullptr;
-      REQUIRE(solve_geometry(c.kind, c.par, q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
-      const hs_summary sm = summary(sol);
-      hs_solution_free(sol);
+      const hs_summary sm = default_summary(c, q);
       CHECK(sm.model == HS_MODEL_QUADRATURE);
       CHECK(sm.regime == HS_REGIME_SAME_SIGN);
       CHECK(sm.error_estimate < 1e-6);
@@ -588,16 +601,12 @@ TEST_CASE("issue 13: near sliding, opposite sign at larger sigma: follows the sl
   // same-sign zones only. Now Newton from the large-sigma start at a raised order.
   // Check independent of the solver: the sliding stick point's balance (sliding_d), with
   // |d1 - (1 - x0)| <= w/2 + the estimate (as in "flat punch at large bulk tension").
-  struct far_case {
-    int kind;
-    double par, om, s;
-  };
-  const far_case cases[] = {
+  const near_case cases[] = {
       {HS_GEOMETRY_FLAT_ROUNDED, 0.8, 1e-6, 10}, {HS_GEOMETRY_FLAT_ROUNDED, 0.95, 1e-6, -20},
       {HS_GEOMETRY_POWER_LAW, 6.79, 1e-8, 20},   {HS_GEOMETRY_POWER_LAW, 9.875, 1e-10, 10},
       {HS_GEOMETRY_POWER_LAW, 9.875, 1e-11, 10},
   };
-  for (const far_case &c : cases) {
+  for (const near_case &c : cases) {
     const double q = 1 - c.om;
     const auto pm = ld_pressure(c.kind, c.par);
     const double dinf = sliding_d(*pm, q);
@@ -606,10 +615,7 @@ TEST_CASE("issue 13: near sliding, opposite sign at larger sigma: follows the sl
     CAPTURE(q);
     CAPTURE(c.s);
     CAPTURE(dinf);
-    hs_solution *sol = nullptr;
-    REQUIRE(solve_geometry(c.kind, c.par, q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
-    const hs_summary sm = summary(sol);
-    hs_solution_free(sol);
+    const hs_summary sm = default_summary(c, q);
     CHECK(sm.model == HS_MODEL_QUADRATURE);
     CHECK(sm.regime == HS_REGIME_OPPOSITE_SIGN);
     const double w = sm.b1 + sm.b2;
