@@ -572,6 +572,30 @@ TEST_CASE("static history: a fold whose path back runs outside the other end (ag
   check_against_bem(hertz_pm(), cut);
 }
 
+// A patch merged with an edge zone by the vertex (bench_history's random walk, seed 8, vertex 3).
+// Zone 2 slipped -1 to 0.9238 a (vertex 1), then +1 in a thin band to 0.9979 a (vertex 2); at vertex 3
+// it slips -1 again from the edge, and the band (-0.9979, -0.9238), just short of the limit with
+// that sign since vertex 1, slips as a patch that merges with the edge zone. The ends' own root at
+// the vertex (b2 = 0.99803 a) leaves the stick traction 3e-5 p past the limit at x = -0.987 a, and
+// the segment was refused (the march took the path and gave zone 2's energy as 3.43e-6, 20 % short
+// of the BEM's 4.34e-6, 4.31e-6, 4.36e-6 at N = 400, 800, 1600, with an estimate of 1.2e-8). The
+// state is the root further in, b2 = 0.9228 a: within the limit, both bands slipped one way.
+TEST_CASE("static history: a patch merged with an edge zone by the vertex (against the BEM)") {
+  const auto path = hs::reference::random_walk(3, 8);
+  static_history<double> h(hertz_pm());
+  for (const auto &p : path) h.add_vertex(p.first, p.second);
+  CHECK(h.last_segment().jumps.size() == 1);  // slip and energy from the start and end states
+  CHECK(h.dir2() == -1);
+  CHECK(h.b2() < 0.93);
+  check_against_bem(hertz_pm(), path, 800);
+  hs::reference::bem::options o;
+  o.nodes = o.steps_per_unit = 800;
+  const auto pm = hertz_pm();
+  const auto r = hs::reference::bem::run([&](double x) { return pm->p(x); }, path, o);
+  // (the BEM's spread over N = 400 to 1600 is 1.2 % of this energy; the march's miss was 20 %)
+  CHECK(std::fabs(h.last_segment().E2 - r[2].energy2) <= 0.03 * r[2].energy2);
+}
+
 // Random non-proportional walks of 100 vertices (bench_history's, |Q/fP| <= 0.5, sigma/fp0 in
 // [0, 1.2]), which the static solves now take whole (before: 7 and 2 vertices; folds at which the
 // other end moves out on the way back, symmetric returns), against the BEM, Hertz and the flat punch.

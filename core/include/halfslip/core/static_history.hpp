@@ -1452,6 +1452,30 @@ template <class T> class static_history {
     for (size_t k = 0; k < pieces.size() && !patch; ++k)
       if (!pieces[k].lam.empty())
         patch = !limit_ok_at({{pieces[k].lam.back(), pieces[k].b1.back(), pieces[k].b2.back()}}, d1, d2, fb1, fb2);
+    // the new traction on panels over (-fb2, fb1)
+    // (the panels' layout of a recent segment like this one, if any, starts the subdivision)
+    panel_layout lay;
+    std::vector<sh_panel<T>> np = new_panels(fb1, fb2, d1, d2, layout_hint(fb1, fb2, d1, d2), lay);
+    // A patch open at the vertex (the ends' state passes the friction limit inside its stick
+    // zone): where the patch has merged with an edge zone by the vertex, the state is the static
+    // one with that end further in (docs/history.md, "Patches merged by the vertex"), and the
+    // phase takes its slip and energy from its start and end states, as a fold does.
+    if (!limit_ok_panels(np)) {
+      T m1 = fb1, m2 = fb2;
+      std::vector<sh_panel<T>> mp;
+      panel_layout ml;
+      if (merged_state(d1, d2, DQ, DS, m1, m2, mp, ml)) {
+        fb1 = m1;
+        fb2 = m2;
+        np = std::move(mp);
+        lay = std::move(ml);
+        patch = true;
+      }
+    }
+    // the friction limit inside the new stick zone (an interior slip zone otherwise)
+    check_limit(np);
+    if (layouts_.size() >= 4) layouts_.erase(layouts_.begin());
+    layouts_.push_back(std::move(lay));
     std::vector<sh_jump<T>> jrec;
     if (!jumps.empty() || patch) {
       auto st = std::make_shared<sh_start<T>>();
@@ -1477,14 +1501,6 @@ template <class T> class static_history {
       jrec.push_back(std::move(J));
       pieces.clear();
     }
-    // the new traction on panels over (-fb2, fb1)
-    // (the panels' layout of a recent segment like this one, if any, starts the subdivision)
-    panel_layout lay;
-    std::vector<sh_panel<T>> np = new_panels(fb1, fb2, d1, d2, layout_hint(fb1, fb2, d1, d2), lay);
-    if (layouts_.size() >= 4) layouts_.erase(layouts_.begin());
-    layouts_.push_back(std::move(lay));
-    // the friction limit inside the new stick zone (an interior slip zone otherwise)
-    check_limit(np);
     panels_ = std::move(np);
     b1_ = fb1;
     b2_ = fb2;
@@ -2117,7 +2133,7 @@ template <class T> class static_history {
       if (abs(new_traction(x, kp)) > pm_->p(x) * (1 + T(1e-9)) + T(1e-10)) return false;
     return true;
   }
-  void check_limit(const std::vector<sh_panel<T>> &np) const {
+  bool limit_ok_panels(const std::vector<sh_panel<T>> &np) const {
     using std::abs;
     const auto &R = *rule_;
     for (const auto &P : np)
@@ -2128,11 +2144,101 @@ template <class T> class static_history {
         // (an excess within the traction's own accuracy is rounding: next to an end, where
         // the traction meets d p, 1.7e-12 was seen in steady cycles; 1e-10 f p0 and 1e-9 of
         // p are far below any slip zone the method could resolve)
-        if (abs(P.v[j]) > p * (1 + T(1e-9)) + T(1e-10))
-          throw error(status::not_applicable,
-                      "static_history: the stick traction passes the friction limit inside the stick zone (an "
-                      "interior slip zone)");
+        if (abs(P.v[j]) > p * (1 + T(1e-9)) + T(1e-10)) return false;
       }
+    return true;
+  }
+  void check_limit(const std::vector<sh_panel<T>> &np) const {
+    if (!limit_ok_panels(np))
+      throw error(status::not_applicable,
+                  "static_history: the stick traction passes the friction limit inside the stick zone (an "
+                  "interior slip zone)");
+  }
+
+  // The state at the phase's end (lambda = 1 of the increments dq, ds) when the ends' own state
+  // (b1, b2) leaves a patch open in its stick zone. The patch opened at a memory point, in a
+  // region close to the limit with a zone's sign, and may have merged with that edge zone by the
+  // vertex: then every band point of the vertex's state slipped in its zone's direction and every
+  // stick point was stuck (the holonomic problem from the phase's start state, whose solution is
+  // unique: the elastic operator is positive definite and the friction law monotone). Such a
+  // state is another root of the static equations at lambda = 1, with one end further in. Each
+  // end is scanned inwards along the path (end_driven, from the ends' state), every crossing of
+  // lambda = 1 is located, and the first root whose state is within the friction limit, whose
+  // bands slipped one way (sh_start::one_way) and whose ends still advance is taken: b1, b2,
+  // np and lay are then its. False (nothing changed) if there is none.
+  bool merged_state(int d1, int d2, const T &dq, const T &ds, T &b1, T &b2, std::vector<sh_panel<T>> &np,
+                    panel_layout &lay) const {
+    using std::abs;
+    using std::max;
+    const std::array<T, 3> pt{{T(1), b1, b2}};
+    const T width = b1 + b2;
+    if (!(width > 0)) return false;
+    sh_start<T> st;
+    st.pm = pm_;
+    st.rule = rule_;
+    st.panels = panels_;
+    st.cusps = cusps_in(T(-1), T(1));
+    st.b1 = b1_;
+    st.b2 = b2_;
+    st.s1 = s1_;
+    st.s2 = s2_;
+    auto accept = [&](const std::array<T, 3> &o) {
+      T x1 = o[1], x2 = o[2];
+      if (!solve(x1, x2, d1, d2, dq, ds)) return false;
+      if (!(x1 <= b1_ && x2 <= b2_ && x1 + x2 > 0)) return false;
+      if (!(abs(x1 - o[1]) + abs(x2 - o[2]) <= T(1e-6) * width)) return false;  // another root
+      const T e = (x1 + x2) / 2;
+      if (!(T(d1) * hist_rate_end(1, dq, ds, e) > 0) || !(T(d2) * hist_rate_end(2, dq, ds, e) > 0)) return false;
+      panel_layout l;
+      auto p = new_panels(x1, x2, d1, d2, nullptr, l);
+      if (!limit_ok_panels(p)) return false;
+      if (!st.one_way(1, x1, x2, d1, d2) || !st.one_way(2, x1, x2, d1, d2)) return false;
+      b1 = x1;
+      b2 = x2;
+      np = std::move(p);
+      lay = std::move(l);
+      return true;
+    };
+    const T noise = T(1e-10);
+    for (int i = 1; i <= 2; ++i) {
+      const T bi = i == 1 ? pt[1] : pt[2];
+      std::array<T, 3> o;
+      auto lam_at = [&](const T &d, T &v) {
+        if (!end_driven(i, bi - d, pt, d1, d2, dq, ds, o, nullptr, true)) return false;
+        v = o[0] - 1;
+        return true;
+      };
+      bool have = false;
+      T dprev = 0, vprev = 0;
+      for (T d = max(T(1e-9) * width, T(1e4) * eps<T>()); d < width; d *= T(1.5)) {
+        T v;
+        if (!lam_at(d, v)) {
+          have = false;
+          continue;
+        }
+        if (have && abs(v) > noise && abs(vprev) > noise && (v > 0) != (vprev > 0)) {
+          // a crossing of lambda = 1 in (dprev, d): bisection, then Newton at lambda = 1
+          T lo = dprev, hi = d;
+          const bool slo = vprev > 0;
+          bool ok = true;
+          for (int it = 0; it < 100 && hi - lo > T(1e-7) * width; ++it) {
+            const T mid = lo + (hi - lo) / 2;
+            T vm;
+            if (!lam_at(mid, vm)) {
+              ok = false;
+              break;
+            }
+            ((vm > 0) == slo ? lo : hi) = mid;
+          }
+          T vh;
+          if (ok && lam_at(hi, vh) && accept(o)) return true;
+        }
+        have = true;
+        dprev = d;
+        vprev = v;
+      }
+    }
+    return false;
   }
 
   // The slip rate of a zone has the sign of r_i next to its stick end and changes sign at most
