@@ -503,7 +503,10 @@ typedef struct hs_history_vertex {
                                segments so far of the differences of their marches at steps 2h
                                and h over 7 (each from the state before it: local error control),
                                plus 3 times any back-slip at a contact edge over the largest energy
-                               (docs/history.md, "Slip back near the edge"; at rtol 0 that part alone) */
+                               (docs/history.md, "Slip back near the edge"; at rtol 0 that part alone);
+                               and at least the march's measured difference from the superposition or
+                               the static solves on the vertices they took before the path left them
+                               (ends over a, energies over the largest; docs/history.md) */
   long interior_merges;     /* interior slip patches merged with an edge zone so far (an approximation;
                                0: none; docs/history.md) */
 } hs_history_vertex;
