@@ -208,7 +208,7 @@ module halfslip
     integer(c_int)    :: cycle = 0               ! 0: path or ramp; k >= 1: k-th cycle
     integer(c_long)   :: steps = 0               ! load steps marched up to this vertex
     real(c_double)    :: step = 0                ! load step after refinement
-    real(c_double)    :: error_estimate = 0      ! estimated error of the march
+    real(c_double)    :: error_estimate = 0      ! estimated error (halfslip.h: hs_history_vertex)
     integer(c_long)   :: interior_merges = 0     ! interior slip patches merged so far
   end type hs_history_vertex
 

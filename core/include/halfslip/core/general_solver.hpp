@@ -233,6 +233,40 @@ bool newton_raising_order(const pressure_model<T> &pm, const T &q, const T &s, g
   return false;
 }
 
+// Bracketed Illinois iteration for a root of f on [lo, hi] (f(lo), f(hi) of
+// opposite signs) until done(lo, hi) or f vanishes; false if the iteration
+// limit is reached first or f is NaN.
+template <class T, class F, class Done>
+bool illinois_until(F f, T lo, T hi, T flo, T fhi, Done done, T &root) {
+  int side = 0;
+  for (int it = 0; it < 200; ++it) {
+    T m = (lo * fhi - hi * flo) / (fhi - flo);
+    if (!(m > lo && m < hi)) m = (lo + hi) / 2;
+    const T fm = f(m);
+    if (!(fm == fm)) return false;
+    if ((fm < 0) == (flo < 0)) {
+      lo = m;
+      flo = fm;
+      if (side == -1) fhi /= 2;
+      side = -1;
+    } else {
+      hi = m;
+      fhi = fm;
+      if (side == +1) flo /= 2;
+      side = +1;
+    }
+    if (done(lo, hi) || fm == 0) {
+      root = fm == 0 ? m : (lo + hi) / 2;
+      return true;
+    }
+  }
+  return false;
+}
+// ... to an absolute bracket width tol
+template <class T, class F> bool illinois(F f, T lo, T hi, T flo, T fhi, const T &tol, T &root) {
+  return illinois_until(f, lo, hi, flo, fhi, [&](const T &l, const T &h) { return h - l <= tol; }, root);
+}
+
 // Start at s = 0: the restriction of F2 to b1 = b2 = 1 - d (e = 2 - 2d),
 // F2(d) = I2L - I2R + pi q/2, falls monotonically from pi q/2 (d = 0) to
 // pi (q - 1)/2 (d -> 1); bracketed Illinois iteration in d to sqrt(eps).
@@ -244,26 +278,10 @@ template <class T> general_state<T> shear_only_start(const pressure_model<T> &pm
   using std::abs;
   using std::sqrt;
   auto F = [&](const T &d) { return general_residual(pm, q, T(0), general_state<T>{d, 2 * (1 - d)}, n, false).F2; };
-  T lo = 0, hi = 1, flo = pi<T>() * q / 2, fhi = pi<T>() * (q - 1) / 2;
-  int side = 0;
   const T tol = sqrt(eps<T>());
-  for (int it = 0; it < 200 && hi - lo > tol; ++it) {
-    T d = (lo * fhi - hi * flo) / (fhi - flo);
-    if (!(d > lo && d < hi)) d = (lo + hi) / 2;
-    const T fd = F(d);
-    if (fd > 0) {
-      lo = d;
-      flo = fd;
-      if (side == +1) fhi /= 2;
-      side = +1;
-    } else {
-      hi = d;
-      fhi = fd;
-      if (side == -1) flo /= 2;
-      side = -1;
-    }
-  }
-  const T d = (lo + hi) / 2;
+  T d = T(1) / 2;  // (the limit reached, or F not finite: a start all the same)
+  illinois_until(F, T(0), T(1), pi<T>() * q / 2, pi<T>() * (q - 1) / 2,
+                 [&](const T &lo, const T &hi) { return hi - lo <= tol; }, d);
   return {d, 2 * (1 - d)};
 }
 
@@ -274,31 +292,10 @@ template <class T> general_state<T> shear_only_start(const pressure_model<T> &pm
 // which grows monotonically with its length; false if the iteration limit is
 // reached).
 template <class T> bool sliding_point(const pressure_model<T> &pm, const T &q, T &d_inf) {
-  using std::abs;
   const T target = pi<T>() * (1 - q) / 4;
-  T lo = 0, hi = 2, flo = -target, fhi = pi<T>() / 2 - target;
-  int side = 0;
-  for (int it = 0; it < 200; ++it) {
-    T d = (lo * fhi - hi * flo) / (fhi - flo);
-    if (!(d > lo && d < hi)) d = (lo + hi) / 2;
-    const T fd = pm.tail(+1, d) - target;
-    if (fd < 0) {
-      lo = d;
-      flo = fd;
-      if (side == -1) fhi /= 2;
-      side = -1;
-    } else {
-      hi = d;
-      fhi = fd;
-      if (side == +1) flo /= 2;
-      side = +1;
-    }
-    if (hi - lo <= 4 * eps<T>() * hi || fd == 0) {
-      d_inf = fd == 0 ? d : (lo + hi) / 2;
-      return true;
-    }
-  }
-  return false;
+  return illinois_until([&](const T &d) { return pm.tail(+1, d) - target; }, T(0), T(2), -target,
+                        pi<T>() / 2 - target, [](const T &lo, const T &hi) { return hi - lo <= 4 * eps<T>() * hi; },
+                        d_inf);
 }
 
 // Start for large s (issue 13): the stick zone centred on the sliding stick
@@ -346,34 +343,6 @@ bool large_sigma_start(const pressure_model<T> &pm, const T &q, const T &s, int 
   const T e = exp(l1);
   out = general_state<T>::from_log(-(d_inf - e / 2), l1);
   return out.d2() > 0;
-}
-
-// Bracketed Illinois iteration for a root of f on [lo, hi] (f(lo), f(hi) of
-// opposite signs); false if the iteration limit is reached first.
-template <class T, class F> bool illinois(F f, T lo, T hi, T flo, T fhi, const T &tol, T &root) {
-  int side = 0;
-  for (int it = 0; it < 200; ++it) {
-    T m = (lo * fhi - hi * flo) / (fhi - flo);
-    if (!(m > lo && m < hi)) m = (lo + hi) / 2;
-    const T fm = f(m);
-    if (!(fm == fm)) return false;
-    if ((fm < 0) == (flo < 0)) {
-      lo = m;
-      flo = fm;
-      if (side == -1) fhi /= 2;
-      side = -1;
-    } else {
-      hi = m;
-      fhi = fm;
-      if (side == +1) flo /= 2;
-      side = +1;
-    }
-    if (hi - lo <= tol || fm == 0) {
-      root = fm == 0 ? m : (lo + hi) / 2;
-      return true;
-    }
-  }
-  return false;
 }
 
 // Start near sliding, same sign (issue 13). As q -> 1 at sigma != 0 the stick
