@@ -845,14 +845,18 @@ int history_reference(const Args &args, bool json) {
 }
 
 // what a failed march most likely met (the C ABI gives the status only)
-std::string history_hint(int st, const hs_history_options &ho) {
-  if (st == HS_ERR_NOT_APPLICABLE && ho.interior_patches == HS_PATCHES_ERROR)
-    return " (here: the friction limit is reached inside the stick zone, away from its ends: a third slip zone "
-           "would open, which the march does not model; --interior-patches merge merges it with the edge zone, "
-           "an approximation counted per vertex; docs/history.md)";
-  if (st == HS_ERR_NO_CONVERGENCE)
-    return " (docs/history.md, Limits: more slip zones than the march models, or the step budget)";
-  return "";
+// the library's own reason for a failed history call (hs_history_last_error), and what to try
+std::string history_hint(const hs_history *h, int st, const hs_history_options &ho) {
+  char why[512] = "";
+  hs_history_last_error(h, why, sizeof why);
+  std::string r = why[0] ? std::string(" (here: ") + why : std::string(" (");
+  if (st == HS_ERR_NOT_APPLICABLE && ho.interior_patches == HS_PATCHES_ERROR && std::strstr(why, "interior"))
+    r += std::string(why[0] ? "; " : "") +
+         "--interior-patches merge merges it with the edge zone, an approximation counted per vertex";
+  if (st == HS_ERR_NOT_APPLICABLE || st == HS_ERR_NO_CONVERGENCE)
+    r += std::string(r.size() > 2 ? "; " : "") + "docs/history.md, Limits";
+  r += ")";
+  return r == " ()" ? std::string() : r;
 }
 
 int cmd_history(int argc, char **argv) {
@@ -906,7 +910,7 @@ int cmd_history(int argc, char **argv) {
       const int st = hs_history_add_vertices(h, 1, &q, &s);
       if (st != HS_OK)
         die("history: vertex " + std::to_string(i + 1) + " (Q/fP = " + num(q) + ", sigma/fp0 = " + num(s) +
-            "): " + hs_strerror(st) + history_hint(st, ho));
+            "): " + hs_strerror(st) + history_hint(h, st, ho));
     }
   } else {
     const std::string t = args.at("--cycle");
@@ -921,7 +925,7 @@ int cmd_history(int argc, char **argv) {
     if (c.size() != 5) die("bad value for --cycle: need Qm,Qa,Sm,Sa,phase_deg (5 numbers)");
     const int n = args.count("--cycles") ? parse_int("--cycles", args.at("--cycles"), 1, 100000) : 10;
     const int st = hs_history_add_cycles(h, c[0] * qs, c[1] * qs, c[2] * ss, c[3] * ss, c[4], n);
-    if (st != HS_OK) die(std::string("history: ") + hs_strerror(st) + history_hint(st, ho));
+    if (st != HS_OK) die(std::string("history: ") + hs_strerror(st) + history_hint(h, st, ho));
     cyc = true;
     // symmetric proportional cycling (zero means, in phase or anti-phase or one amplitude
     // zero): the closed form (Ciavarella-Jager) of the library, printed beside the march

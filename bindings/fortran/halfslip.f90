@@ -279,6 +279,7 @@ module halfslip
   public :: hs_ref_value, hs_ref_eval, hs_ref_eval_stress
   public :: hs_solution_ramp, hs_solution_steady_cycle
   public :: hs_history_options_default, hs_history_new, hs_history_free, hs_history_add_vertices
+  public :: hs_history_last_error
   public :: hs_history_add_cycles, hs_history_vertex_count, hs_history_vertex_get, hs_history_eval
   public :: hs_history_method
   public :: hs_history_cycle_summary, hs_history_slip_range, hs_history_state
@@ -634,6 +635,14 @@ module halfslip
       integer(c_int), value :: cycles
       integer(c_int) :: st
     end function c_hs_history_add_cycles
+
+    function c_hs_history_last_error(h, buf, size) bind(c, name="hs_history_last_error") result(st)
+      import :: c_int, c_ptr, c_size_t, c_char
+      type(c_ptr), value :: h
+      character(kind=c_char), intent(inout) :: buf(*)
+      integer(c_size_t), value :: size
+      integer(c_int) :: st
+    end function c_hs_history_last_error
 
     function c_hs_history_method(h, m) bind(c, name="hs_history_method") result(st)
       import :: c_int, c_ptr
@@ -1228,6 +1237,27 @@ contains
     call check(c_hs_history_add_cycles(hist%ptr, Qm_over_fP, Qa_over_fP, Sm_over_fp0, Sa_over_fp0, phase_deg, &
                                        int(cycles, c_int)), 'hs_history_add_cycles', ierr)
   end subroutine hs_history_add_cycles
+
+  ! Why the last hs_history_add_vertices / hs_history_add_cycles failed ('' after a success).
+  subroutine hs_history_last_error(hist, message, ierr)
+    type(hs_history_t), intent(in) :: hist
+    character(len=:), allocatable, intent(out) :: message
+    integer, intent(out), optional :: ierr
+    character(kind=c_char) :: buf(512)
+    integer(c_int) :: st
+    integer :: n
+    buf = c_null_char
+    st = c_hs_history_last_error(hist%ptr, buf, int(size(buf), c_size_t))
+    n = 0
+    if (st == HS_OK) then
+      do while (n < size(buf))
+        if (buf(n + 1) == c_null_char) exit
+        n = n + 1
+      end do
+    end if
+    message = buf_to_f(buf, n)
+    call check(st, 'hs_history_last_error', ierr)
+  end subroutine hs_history_last_error
 
   ! How the history computes its states: HS_HISTORY_SUPERPOSITION, HS_HISTORY_STATIC or HS_HISTORY_MARCH.
   subroutine hs_history_method(hist, method, ierr)

@@ -649,6 +649,8 @@ contains
     real(c_double) :: px(4), py(4), s(3, 4), s6(3, 4), s2(3, 4), s0(3, 4), q2(2)
     logical :: recedes
     integer :: ierr, n
+    character(len=:), allocatable :: why
+    real(c_double) :: qbad(1), sbad(1)
 
     ! loading to Q = 0.6 fP, then unloading to 0.2 fP (sigma = 0): stick zone
     ! |x| < c', c'/a = sqrt(1 - (0.6 - 0.2)/2) (default max_step 1/128)
@@ -667,6 +669,15 @@ contains
     n = -1
     call hs_history_method(hist, n, ierr)
     call expect(ierr == HS_OK .and. n == HS_HISTORY_SUPERPOSITION, 'history: method along one ray')
+    ! the library's reason for a failed call (hs_history_last_error); '' after a success
+    call hs_history_last_error(hist, why, ierr)
+    call expect(ierr == HS_OK .and. len(why) == 0, 'history: no reason after a success')
+    qbad = 1
+    sbad = 0
+    call hs_history_add_vertices(hist, 1, qbad, sbad, ierr)
+    call expect_code(ierr, HS_ERR_GROSS_SLIDING, 'history: a vertex at Q = fP')
+    call hs_history_last_error(hist, why, ierr)
+    call expect(ierr == HS_OK .and. index(why, 'gross sliding') > 0, 'history: the reason names it: ' // why)
     call hs_history_vertex_get(hist, 0, v0, ierr)
     call expect_code(ierr, HS_OK, 'history: vertex 0')
     call hs_history_vertex_get(hist, 1, v1)

@@ -925,6 +925,13 @@ class History(_Handle):
 
     def _status(self, st, name):
         if st != 0:
+            why = ""
+            if self._h and name in ("hs_history_add_vertices", "hs_history_add_cycles"):
+                buf = ctypes.create_string_buffer(512)
+                if _lib.hs_history_last_error(self._h, buf, len(buf)) == 0:
+                    why = buf.value.decode("utf-8", "replace")
+            if why and (self._callback is None or self._callback.error is None):
+                raise HalfslipError(st, name, "reason: " + why)
             _raise(st, name, self._callback)
 
     def __repr__(self):

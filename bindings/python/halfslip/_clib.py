@@ -258,6 +258,7 @@ _SIGNATURES = {
     "hs_history_add_cycles": (c_int, [HistoryP, c_double, c_double, c_double, c_double, c_double, c_int]),
     "hs_history_vertex_count": (c_int, [HistoryP, POINTER(c_size_t)]),
     "hs_history_method": (c_int, [HistoryP, POINTER(c_int)]),
+    "hs_history_last_error": (c_int, [HistoryP, ctypes.c_char_p, c_size_t]),
     "hs_history_vertex_get": (c_int, [HistoryP, c_size_t, POINTER(HistoryVertex)]),
     "hs_history_eval": (c_int, [HistoryP, c_size_t, c_int, c_size_t, _DoubleP, _DoubleP]),
     "hs_history_cycle_summary": (c_int, [HistoryP, POINTER(CycleSummary)]),

@@ -812,6 +812,14 @@ class TestHistory(unittest.TestCase):
         self.assertEqual((e.status, e.function), (halfslip.ERR_GROSS_SLIDING, "hs_history_add_vertices"))
         self.assertIn("|Q| >= fP", str(e))
         self.assertEqual(h.vertex_count, 2)   # the vertices before the failing one are kept
+        self.assertIn("gross sliding", e.detail)  # the library's reason (hs_history_last_error)
+        # a zone structure the march does not model, named (bench_history's periodic case 12: part
+        # of zone 2 next to the edge would slip back; not an interior slip zone)
+        with halfslip.History() as hb:
+            e = status(hb.add_cycles, 0.0, 0.1, 0.5, 0.3, 90.0, 3)
+            self.assertEqual(e.status, halfslip.ERR_NOT_APPLICABLE)
+            self.assertIn("slip back", e.detail)
+            self.assertNotIn("interior", e.detail)
         self.assertEqual(status(h.add_vertices, [float("nan")], [0.0]).status, halfslip.ERR_NOT_FINITE)
         self.assertEqual(status(h.add_cycles, 0.5, 0.5, 0.0, 0.0, 0.0, 1).status, halfslip.ERR_GROSS_SLIDING)
         self.assertEqual(status(h.add_cycles, 0.0, 0.1, 0.0, 0.0, 0.0, 0).status, halfslip.ERR_BAD_OPTION)

@@ -557,6 +557,11 @@ HS_EXPORT int hs_history_state(const hs_history *h, size_t vertex, hs_solution *
 #define HS_HISTORY_STATIC        2
 #define HS_HISTORY_MARCH         3
 HS_EXPORT int hs_history_method(const hs_history *h, int *method);
+/* Why the last hs_history_add_vertices or hs_history_add_cycles on h failed, as
+ * text (e.g. which zone structure a method does not model: an interior slip zone,
+ * part of an edge zone slipping back); "" after a call that succeeded. Copies at
+ * most size - 1 bytes and a terminating NUL into buf (size >= 1). */
+HS_EXPORT int hs_history_last_error(const hs_history *h, char *buf, size_t size);
 
 /* Whether a proportional ramp from zero to the solution's (Q, sigma) would make a
  * slip zone recede on the way (the monotonic solution then is not the state such a
