@@ -705,4 +705,11 @@ TEST_CASE("a vertex with an interior slip zone stops the history by default (the
   CHECK(method == HS_HISTORY_MARCH);
   CHECK(vertex(hm, 1).interior_merges == 0);
   CHECK(vertex(hm, 2).interior_merges >= 1);
+  // and periodic loading: the last vertex carries it
+  hist_handle hcm;
+  REQUIRE(hs_history_new(&sc, nullptr, &o, &hcm.h) == HS_OK);
+  REQUIRE(hs_history_add_cycles(hcm.h, 0.15, 0.1, 1.5, 0.3, 180, 3) == HS_OK);
+  size_t nc = 0;
+  REQUIRE(hs_history_vertex_count(hcm.h, &nc) == HS_OK);
+  CHECK(vertex(hcm, nc - 1).interior_merges >= 1);
 }

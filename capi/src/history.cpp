@@ -77,6 +77,7 @@ struct hs_history {
   // interior slip zone before the march took it; the march may not see that patch, so from each
   // such vertex on the result counts one more approximation (hs_history_vertex.interior_merges)
   std::vector<size_t> static_patch_at;
+  size_t cycle_patch_at = size_t(-1);  // the same, found by the static solves of add_cycles (pending)
   // the cycle tag of vertex i (hs_history_vertex.cycle) in whichever method holds it
   int vertex_cycle(size_t i) const {
     if (ray_mode) return i < ray_vertices.size() ? ray_vertices[i].cycle : 0;
@@ -473,6 +474,7 @@ struct static_cycles_adapter {
     bool interior = false;
     if (!add_static(*h.st, q, s, nx, rec, &interior)) {
       if (interior && h.opts.interior_patches == HS_PATCHES_ERROR) throw static_interior{};
+      if (interior) h.cycle_patch_at = h.input.size();
       throw leave_static{};
     }
     h.st = nx;
@@ -512,6 +514,7 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
     // bad arguments first: each method below is tried and undone on any failure
     core::check_cycles<double>(qm, qa, sm, sa, phase_deg, cycles, h->opts.segments_per_cycle);
     const size_t ni0 = h->input.size();
+    h->cycle_patch_at = size_t(-1);
     // on the ray: the superposition
     if (h->ray_mode) {
       const auto ray0 = h->ray;
@@ -539,6 +542,7 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
     h->cycles = h->h->add_cycles(qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h->opts.ramp_order),
                                  h->opts.segments_per_cycle, h->opts.steady_rtol);
     h->has_cycles = true;
+    if (h->cycle_patch_at != size_t(-1)) h->static_patch_at.push_back(h->cycle_patch_at);
   }); });
 }
 
