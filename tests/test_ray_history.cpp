@@ -33,20 +33,21 @@ struct hist_handle {
   ~hist_handle() { hs_history_free(h); }
 };
 
-// geometry: 0 Hertz, else the flat-rounded punch with b_f/a = 0.5; canonical units
-void new_history(hist_handle &hh, int geometry) {
+// geometry: 0 Hertz, else the flat-rounded punch with b_f/a = 0.5; canonical units; o: options
+// (null: the defaults)
+void new_history(hist_handle &hh, int geometry, const hs_history_options *o = nullptr) {
   hs_scene sc;
   REQUIRE(hs_scene_default(&sc) == HS_OK);
   sc.a = sc.p0 = sc.f = sc.E_star = 1;
   if (geometry == 0) {
-    REQUIRE(hs_history_new(&sc, nullptr, nullptr, &hh.h) == HS_OK);
+    REQUIRE(hs_history_new(&sc, nullptr, o, &hh.h) == HS_OK);
     return;
   }
   hs_geometry g;
   REQUIRE(hs_geometry_default(&g) == HS_OK);
   g.kind = HS_GEOMETRY_FLAT_ROUNDED;
   g.flat_over_a = 0.5;
-  REQUIRE(hs_history_new(&sc, &g, nullptr, &hh.h) == HS_OK);
+  REQUIRE(hs_history_new(&sc, &g, o, &hh.h) == HS_OK);
 }
 
 void add(hist_handle &hh, const path_t &p) {
@@ -56,6 +57,14 @@ void add(hist_handle &hh, const path_t &p) {
     s.push_back(v.second);
   }
   REQUIRE(hs_history_add_vertices(hh.h, p.size(), q.data(), s.data()) == HS_OK);
+}
+
+// the default history options with interior slip patches merged (HS_PATCHES_MERGE)
+hs_history_options merging() {
+  hs_history_options o;
+  REQUIRE(hs_history_options_default(&o) == HS_OK);
+  o.interior_patches = HS_PATCHES_MERGE;
+  return o;
 }
 
 hs_history_vertex vertex(const hist_handle &hh, size_t i) {
@@ -519,15 +528,8 @@ TEST_CASE("periodic loading off the ray by static solves, against the march") {
     CHECK(nd == 0);
   }
   hist_handle oh;
-  {
-    hs_scene sc;
-    REQUIRE(hs_scene_default(&sc) == HS_OK);
-    sc.a = sc.p0 = sc.f = sc.E_star = 1;
-    hs_history_options o;
-    REQUIRE(hs_history_options_default(&o) == HS_OK);
-    o.interior_patches = HS_PATCHES_MERGE;
-    REQUIRE(hs_history_new(&sc, nullptr, &o, &oh.h) == HS_OK);
-  }
+  const hs_history_options om = merging();
+  new_history(oh, 0, &om);
   REQUIRE(hs_history_add_cycles(oh.h, 0.2, 0.2, 0.3, 0.2, 90, 1) == HS_OK);
   REQUIRE(hs_history_method(oh.h, &method) == HS_OK);
   CHECK(method == HS_HISTORY_MARCH);
@@ -595,16 +597,11 @@ TEST_CASE("periodic loading: bad arguments leave the history as it was; cycle ta
 TEST_CASE("a path left by the static solves: the march's estimate covers its measured error (BEM)") {
   auto walk = hs::reference::random_walk(36, 8);
   hist_handle hh;
-  hs_scene sc;
-  REQUIRE(hs_scene_default(&sc) == HS_OK);
-  sc.a = sc.p0 = sc.f = sc.E_star = 1;
-  hs_history_options o;
-  REQUIRE(hs_history_options_default(&o) == HS_OK);
-  o.rtol = 1e-6;  // (the march's cost; its local estimates are then about 1e-6)
   // (vertex 36 is refused by the static solves for an interior slip zone: by default the history
   // stops there; merging, the march replays the path)
-  o.interior_patches = HS_PATCHES_MERGE;
-  REQUIRE(hs_history_new(&sc, nullptr, &o, &hh.h) == HS_OK);
+  hs_history_options o = merging();
+  o.rtol = 1e-6;  // (the march's cost; its local estimates are then about 1e-6)
+  new_history(hh, 0, &o);
   add(hh, walk);
   int method = 0;
   REQUIRE(hs_history_method(hh.h, &method) == HS_OK);
@@ -692,13 +689,8 @@ TEST_CASE("a vertex with an interior slip zone stops the history by default (the
   // merging: the march takes the path, flagged as an approximation from that vertex on (the patch the
   // static solves saw counts as one: the march's own check does not see it)
   hist_handle hm;
-  hs_scene sc;
-  REQUIRE(hs_scene_default(&sc) == HS_OK);
-  sc.a = sc.p0 = sc.f = sc.E_star = 1;
-  hs_history_options o;
-  REQUIRE(hs_history_options_default(&o) == HS_OK);
-  o.interior_patches = HS_PATCHES_MERGE;
-  REQUIRE(hs_history_new(&sc, nullptr, &o, &hm.h) == HS_OK);
+  const hs_history_options o = merging();
+  new_history(hm, 0, &o);
   add(hm, path);
   int method = 0;
   REQUIRE(hs_history_method(hm.h, &method) == HS_OK);
@@ -707,7 +699,7 @@ TEST_CASE("a vertex with an interior slip zone stops the history by default (the
   CHECK(vertex(hm, 2).interior_merges >= 1);
   // and periodic loading: the last vertex carries it
   hist_handle hcm;
-  REQUIRE(hs_history_new(&sc, nullptr, &o, &hcm.h) == HS_OK);
+  new_history(hcm, 0, &o);
   REQUIRE(hs_history_add_cycles(hcm.h, 0.15, 0.1, 1.5, 0.3, 180, 3) == HS_OK);
   size_t nc = 0;
   REQUIRE(hs_history_vertex_count(hcm.h, &nc) == HS_OK);
