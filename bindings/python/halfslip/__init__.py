@@ -942,7 +942,9 @@ class History(_Handle):
     def add_vertices(self, Q_over_fP, sigma_over_fp0):
         """Append vertices (Q/fP, sigma/fp0), two numbers or two sequences of
         the same length, and march to them (hs_history_add_vertices). On error
-        the history keeps the vertices reached before the failing one."""
+        the history keeps the vertices reached before the failing one, and the
+        HalfslipError's detail gives the library's reason (hs_history_last_error:
+        e.g. an interior slip zone, or part of an edge zone slipping back)."""
         h = self._handle()
         (qa, nq, _), (sa, ns, _) = _points(Q_over_fP), _points(sigma_over_fp0)
         if nq != ns:
