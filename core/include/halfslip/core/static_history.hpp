@@ -1485,15 +1485,7 @@ template <class T> class static_history {
     layouts_.push_back(std::move(lay));
     std::vector<sh_jump<T>> jrec;
     if (!jumps.empty() || patch) {
-      auto st = std::make_shared<sh_start<T>>();
-      st->pm = pm_;
-      st->rule = rule_;
-      st->panels = panels_;
-      st->cusps = cusps_in(T(-1), T(1));
-      st->b1 = b1_;
-      st->b2 = b2_;
-      st->s1 = s1_;
-      st->s2 = s2_;
+      auto st = std::make_shared<sh_start<T>>(start_state());
       sh_jump<T> J;
       J.start = st;
       J.b1 = fb1;
@@ -2162,6 +2154,21 @@ template <class T> class static_history {
                   "interior slip zone)");
   }
 
+  // the current state as the start of a phase whose slip and energy come from its start and end
+  // states (folds, patches)
+  sh_start<T> start_state() const {
+    sh_start<T> st;
+    st.pm = pm_;
+    st.rule = rule_;
+    st.panels = panels_;
+    st.cusps = cusps_in(T(-1), T(1));
+    st.b1 = b1_;
+    st.b2 = b2_;
+    st.s1 = s1_;
+    st.s2 = s2_;
+    return st;
+  }
+
   // The state at the phase's end (lambda = 1 of the increments dq, ds) when the ends' own state
   // (b1, b2) leaves a patch open in its stick zone. The patch opened at a memory point, in a
   // region close to the limit with a zone's sign, and may have merged with that edge zone by the
@@ -2182,15 +2189,7 @@ template <class T> class static_history {
     const std::array<T, 3> pt{{T(1), b1, b2}};
     const T width = b1 + b2;
     if (!(width > 0)) return false;
-    sh_start<T> st;
-    st.pm = pm_;
-    st.rule = rule_;
-    st.panels = panels_;
-    st.cusps = cusps_in(T(-1), T(1));
-    st.b1 = b1_;
-    st.b2 = b2_;
-    st.s1 = s1_;
-    st.s2 = s2_;
+    const sh_start<T> st = start_state();
     auto accept = [&](const std::array<T, 3> &o) {
       T x1 = o[1], x2 = o[2];
       if (!solve(x1, x2, d1, d2, dq, ds)) return false;
