@@ -10,6 +10,9 @@
 //   /tmp/static_walks bem 0 400 1 20   # Hertz walks 1..20 against the BEM at N = 400 (~2 min)
 //   /tmp/static_walks bem 1 400 1 20
 //   /tmp/static_walks time 0 60        # CPU time of the walks taken whole, at rtol 1e-8 and full accuracy
+//   /tmp/static_walks count 0 60 1e-8  # the same count at an accuracy asked (static_history_accuracy::for_rtol)
+//   /tmp/static_walks count 0 60 1e-8 retry   # ... and a refused segment solved again at full accuracy, as
+//                                             # hs_history does (capi/src/history.cpp, add_static)
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -73,21 +76,40 @@ int main(int argc, char **argv) {
     const unsigned n = unsigned(std::atoi(argv[3]));
     std::map<std::string, int> why;
     size_t taken = 0;
-    int whole = 0;
+    int whole = 0, retried = 0;
     for (unsigned seed = 1; seed <= n; ++seed) {
       const path_t w = random_path(100, seed);
-      static_history<double> h(pm);
+      const double rtol = argc > 4 ? std::atof(argv[4]) : 0;
+      const bool retry = argc > 5 && std::strcmp(argv[5], "retry") == 0;
+      const auto acc = static_history_accuracy<double>::for_rtol(rtol);
+      static_history<double> h(pm, acc);
       size_t k = 0;
       try {
-        for (; k < w.size(); ++k) h.add_vertex(w[k].first, w[k].second);
+        for (; k < w.size(); ++k) {
+          if (!retry || !(rtol > 0)) {
+            h.add_vertex(w[k].first, w[k].second);
+            continue;
+          }
+          static_history<double> t(h);
+          try {
+            t.add_vertex(w[k].first, w[k].second);
+          } catch (const error &) {
+            t = h;
+            t.set_accuracy(static_history_accuracy<double>());
+            t.add_vertex(w[k].first, w[k].second);
+            t.set_accuracy(acc);
+            ++retried;
+          }
+          h = t;
+        }
         ++whole;
       } catch (const error &e) {
         ++why[e.what()];
       }
       taken += k;
     }
-    std::printf("%s: %zu of %u vertices taken, %d walks whole; stopped by:\n", g ? "flat punch" : "Hertz", taken,
-                100 * n, whole);
+    std::printf("%s: %zu of %u vertices taken, %d walks whole, %d segments taken at full accuracy after a refusal; "
+                "stopped by:\n", g ? "flat punch" : "Hertz", taken, 100 * n, whole, retried);
     for (const auto &kv : why) std::printf("  %3d  %s\n", kv.second, kv.first.c_str());
     return 0;
   }

@@ -305,19 +305,34 @@ void to_march(hs_history &h) {
 // (nothing changed) when the segment does not only advance (not_applicable).
 // interior (optional): set when the segment was refused because its state leaves the stick traction
 // past the friction limit inside the stick zone (an interior slip zone).
+// A segment that the reduced accuracy asked (acc, from hs_history_options.rtol) refuses is solved
+// again at full accuracy before it is refused: the reduced orders are chosen for accuracy, and a
+// crossing or a limit check can fail at them where full accuracy takes the segment (Hertz random
+// walk 21 of bench_history, vertex 7: "did not converge"). The next segments go on at acc.
 bool add_static(const core::static_history<double> &from, double q, double s,
                 std::shared_ptr<const core::static_history<double>> &to, hs_history::static_vertex_rec &rec,
-                bool *interior = nullptr) {
-  auto next = std::make_shared<core::static_history<double>>(from);
-  try {
-    next->add_vertex(q, s);
-  } catch (const core::error &e) {
-    if (e.code() == core::status::not_applicable || e.code() == core::status::no_convergence) {
-      if (interior) *interior = std::strstr(e.what(), "interior slip zone") != nullptr;
-      return false;
+                const core::static_history_accuracy<double> &acc, bool *interior = nullptr) {
+  auto attempt = [&](const core::static_history_accuracy<double> *full) -> std::shared_ptr<core::static_history<double>> {
+    auto next = std::make_shared<core::static_history<double>>(from);
+    if (full) next->set_accuracy(*full);
+    try {
+      next->add_vertex(q, s);
+    } catch (const core::error &e) {
+      if (e.code() == core::status::not_applicable || e.code() == core::status::no_convergence) {
+        if (interior) *interior = std::strstr(e.what(), "interior slip zone") != nullptr;
+        return nullptr;
+      }
+      throw;
     }
-    throw;
+    if (full) next->set_accuracy(acc);
+    return next;
+  };
+  auto next = attempt(nullptr);
+  if (!next && from.rtol() > 0) {
+    const core::static_history_accuracy<double> full;
+    next = attempt(&full);
   }
+  if (!next) return false;
   rec.E1 = double(next->last_segment().E1);
   rec.E2 = double(next->last_segment().E2);
   require(std::isfinite(rec.E1) && std::isfinite(rec.E2), core::status::overflow,
@@ -337,7 +352,7 @@ bool to_static(hs_history &h) {
   for (size_t i = 0; i < h.input.size(); ++i) {
     hs_history::static_vertex_rec rec;
     std::shared_ptr<const core::static_history<double>> nx;
-    if (!add_static(*cur, h.input[i].first, h.input[i].second, nx, rec)) return false;
+    if (!add_static(*cur, h.input[i].first, h.input[i].second, nx, rec, h.static_accuracy)) return false;
     rec.cycle = h.vertex_cycle(i);  // periodic loading's tags carried over
     cur = nx;
     recs.push_back(std::move(rec));
@@ -403,7 +418,7 @@ int hs_history_add_vertices(hs_history *h, size_t n, const double *q, const doub
         hs_history::static_vertex_rec rec;
         std::shared_ptr<const core::static_history<double>> nx;
         bool interior = false;
-        if (add_static(*h->st, q[i], s[i], nx, rec, &interior)) {
+        if (add_static(*h->st, q[i], s[i], nx, rec, h->static_accuracy, &interior)) {
           h->st = nx;
           h->static_vertices.push_back(std::move(rec));
           h->input.emplace_back(q[i], s[i]);
@@ -472,7 +487,7 @@ struct static_cycles_adapter {
     hs_history::static_vertex_rec rec;
     std::shared_ptr<const core::static_history<double>> nx;
     bool interior = false;
-    if (!add_static(*h.st, q, s, nx, rec, &interior)) {
+    if (!add_static(*h.st, q, s, nx, rec, h.static_accuracy, &interior)) {
       if (interior && h.opts.interior_patches == HS_PATCHES_ERROR) throw static_interior{};
       if (interior) h.cycle_patch_at = h.input.size();
       throw leave_static{};

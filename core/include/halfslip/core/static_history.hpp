@@ -510,6 +510,30 @@ template <class T> class static_history {
   }
   // the accuracy asked (0: full)
   T rtol() const { return rtol_; }
+  // The next segments are solved with acc's orders and tolerances; the state and the segments so
+  // far are kept. The theta order is the state's panel order, so it cannot change. The hints
+  // kept from recent segments (crossings, panel layouts, zone rates) and the band cache were
+  // found with the old orders and are dropped. hs_history retries a segment that a reduced
+  // accuracy refuses at full accuracy, then goes on at the reduced one.
+  void set_accuracy(const accuracy &acc) {
+    if (acc.theta != rule_->n())
+      throw error(status::bad_option, "static_history: the theta order of a state cannot change");
+    static_history fresh(pm_, acc);  // checks acc and builds its rules
+    lrule_ = fresh.lrule_;
+    rrule_ = fresh.rrule_;
+    brule_ = fresh.brule_;
+    urule_ = fresh.urule_;
+    zorder_ = fresh.zorder_;
+    sorder_ = fresh.sorder_;
+    ptol_ = fresh.ptol_;
+    rtol_ = fresh.rtol_;
+    far_min_ = fresh.far_min_;
+    mono_tol_ = fresh.mono_tol_;
+    clear_cache();
+    xrec_.clear();
+    layouts_.clear();
+    zrates_.clear();
+  }
   // the panels of the state's stick traction (its cost: each costs theta-order values)
   size_t panel_count() const { return panels_.size(); }
 
