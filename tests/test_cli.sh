@@ -327,7 +327,8 @@ v = d["vertices"]
 assert abs(v[1]["b1"] - math.sqrt(1 - 0.4 / 2)) <= 4 * 2.0 ** -52, v[1]["b1"]
 assert v[1]["steps"] == 0 and v[1]["slip_dir1"] == -1' && ok || ko "history along one ray: superposition"
 "$cli" history --path "0.6,0;0.2,0.3" --json | grep -q '"method": "static"' && ok || ko "history off the ray, advancing: static solves"
-"$cli" history --path "0.5,0;0.1,-1" --json | grep -q '"method": "march"' && ok || ko "history with a receding end: march"
+"$cli" history --path "0.5,0;0.1,-1" --json | grep -q '"method": "static"' && ok || ko "history with a receding end: static solves"
+"$cli" history --interior-patches merge --path "0,1.5;0.15,1.5;0.25,1.2" --json | grep -q '"method": "march"' && ok || ko "history the static solves refuse (an interior slip zone, merged): march"
 js=$("$cli" history --digits 30 --path "0.6,0;0.2,0" --json) && echo "$js" | python3 -c '
 import json, sys
 from decimal import Decimal, getcontext

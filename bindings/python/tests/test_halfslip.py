@@ -642,13 +642,19 @@ class TestHistory(unittest.TestCase):
             v0, v1, v2 = hm.vertices
             self.assertEqual(v2.steps, 0)
             self.assertAlmostEqual(v1.b1, c, delta=64 * 2.2e-16)
-        # a receding end (r_1 < 0, e* = 2 dQ/dsigma = 0.8 > e): the whole path is marched
+        # a receding end (r_1 < 0, e* = 2 dQ/dsigma = 0.8 > e): static solves (a receding phase)
         with halfslip.History() as hm:
             hm.add_vertices([0.5, 0.1], [0.0, -1.0])
-            self.assertEqual(hm.method, "march")
+            self.assertEqual(hm.method, "static")
             v0, v1 = hm.vertices
-            self.assertTrue(v1.steps > v0.steps > 0)
-            self.assertAlmostEqual(v0.b1, math.sqrt(0.5), delta=1e-7)
+            self.assertEqual(v1.steps, 0)
+            self.assertAlmostEqual(v0.b1, math.sqrt(0.5), delta=1e-12)
+        # an interior slip zone, merged on request: the whole path is marched
+        with halfslip.History(interior_patches="merge") as hm:
+            hm.add_vertices([0.0, 0.15, 0.25], [1.5, 1.5, 1.2])
+            self.assertEqual(hm.method, "march")
+            v0, v1, v2 = hm.vertices
+            self.assertTrue(v2.steps > v1.steps > 0)
 
     def test_state_stresses(self):
         # issue 15: the state after a vertex as a Solution. Unloading 0.6 -> 0.2 (sigma = 0): by
