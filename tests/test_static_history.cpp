@@ -32,6 +32,30 @@ hertz_solution<double> mono(double q, double s) {
   sc.s = s;
   return solve_hertz<double>(sc);
 }
+
+// The march (core/history.hpp: time steps of the stuck-interval rates, no code shared with the
+// static solves) along path at steps 1/256 (err[0]) and 1/512 (err[1]) against the static state h
+// at the path's end: ends in a, the last segment's energies relative to the sum of both; the slip
+// directions must agree
+using path_t = std::vector<std::pair<double, double>>;
+void march_errors(const std::shared_ptr<const pressure_model<double>> &pm, const path_t &path,
+                  const static_history<double> &h, double err[2][4]) {
+  const auto &sg = h.last_segment();
+  const double E = std::fabs(sg.E1) + std::fabs(sg.E2);
+  for (int r = 0; r < 2; ++r) {
+    history_options<double> o;
+    o.max_step = r == 0 ? 1.0 / 256 : 1.0 / 512;
+    history<double> m(pm, o);
+    for (const auto &v : path) m.add_vertex(v.first, v.second);
+    const auto &v = m.vertices().back();
+    CHECK(v.dir1 == h.dir1());
+    CHECK(v.dir2 == h.dir2());
+    err[r][0] = std::fabs(v.b1 - h.b1());
+    err[r][1] = std::fabs(v.b2 - h.b2());
+    err[r][2] = std::fabs(v.energy1 - sg.E1) / E;
+    err[r][3] = std::fabs(v.energy2 - sg.E2) / E;
+  }
+}
 }  // namespace
 
 TEST_CASE("static history: the first segment from zero is the monotonic solution (Hertz closed forms)") {
@@ -326,24 +350,9 @@ TEST_CASE("static history: receding phases against the march (Hertz and flat pun
     static_history<double> h(pm);
     h.add_vertex(p.q1, p.s1);
     h.add_vertex(p.q2, p.s2);
-    const auto &sg = h.last_segment();
-    CHECK(has_receding_piece(sg));
-    const double E = std::fabs(sg.E1) + std::fabs(sg.E2);
+    CHECK(has_receding_piece(h.last_segment()));
     double err[2][4];
-    for (int r = 0; r < 2; ++r) {
-      history_options<double> o;
-      o.max_step = r == 0 ? 1.0 / 256 : 1.0 / 512;
-      history<double> m(pm, o);
-      m.add_vertex(p.q1, p.s1);
-      m.add_vertex(p.q2, p.s2);
-      const auto &v = m.vertices().back();
-      CHECK(v.dir1 == h.dir1());
-      CHECK(v.dir2 == h.dir2());
-      err[r][0] = std::fabs(v.b1 - h.b1());
-      err[r][1] = std::fabs(v.b2 - h.b2());
-      err[r][2] = std::fabs(v.energy1 - sg.E1) / E;
-      err[r][3] = std::fabs(v.energy2 - sg.E2) / E;
-    }
+    march_errors(pm, {{p.q1, p.s1}, {p.q2, p.s2}}, h, err);
     for (int j = 0; j < 4; ++j) {
       CAPTURE(j);
       CHECK(err[1][j] < 5e-8);
@@ -442,28 +451,13 @@ TEST_CASE("static history: a fold (the ends jump at a near-Masing return), again
 // Against the march (core/history.hpp: time steps of the stuck-interval rates, no shared code) at
 // steps 1/256 and 1/512. Measured: the march at 1/512 within 1.3e-10 a and 3e-9 of the energy.
 TEST_CASE("static history: paths back to zero after a turn at high bulk tension, against the march (Hertz)") {
-  const std::vector<std::vector<std::pair<double, double>>> paths{{{0.3, 0}, {0.3, 1.5}, {0.6, 1.5}, {0, 0}},
-                                                                  {{0.3, 0}, {0.3, 1.0}, {0.5, 1.0}, {0, 0}}};
+  const std::vector<path_t> paths{{{0.3, 0}, {0.3, 1.5}, {0.6, 1.5}, {0, 0}}, {{0.3, 0}, {0.3, 1.0}, {0.5, 1.0}, {0, 0}}};
   for (const auto &path : paths) {
     CAPTURE(path[1].second);
     static_history<double> h(hertz_pm());
     for (const auto &v : path) h.add_vertex(v.first, v.second);
-    const auto &sg = h.last_segment();
-    const double E = std::fabs(sg.E1) + std::fabs(sg.E2);
     double err[2][4];
-    for (int r = 0; r < 2; ++r) {
-      history_options<double> o;
-      o.max_step = r == 0 ? 1.0 / 256 : 1.0 / 512;
-      history<double> m(hertz_pm(), o);
-      for (const auto &v : path) m.add_vertex(v.first, v.second);
-      const auto &v = m.vertices().back();
-      CHECK(v.dir1 == h.dir1());
-      CHECK(v.dir2 == h.dir2());
-      err[r][0] = std::fabs(v.b1 - h.b1());
-      err[r][1] = std::fabs(v.b2 - h.b2());
-      err[r][2] = std::fabs(v.energy1 - sg.E1) / E;
-      err[r][3] = std::fabs(v.energy2 - sg.E2) / E;
-    }
+    march_errors(hertz_pm(), path, h, err);
     for (int j = 0; j < 4; ++j) {
       CAPTURE(j);
       CHECK(err[1][j] < 1e-8);
