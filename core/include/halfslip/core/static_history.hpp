@@ -247,6 +247,10 @@ template <class T> struct sh_start {
     bool have[2] = {false, false};
     std::vector<std::array<T, 3>> fixed[2];  // (eta, w, f(eta))
     std::vector<T> nodes[2];                 // dh' at theta_int's nodes over cuts(lo, hi)
+    // the pieces of x's own band between two fixed cuts (its ends and cusps, no cut of x's grading
+    // between), the same for every x: (eta, w, f(eta)) at their nodes, by (l, r) (a map: a sampled
+    // pressure cuts the band into a piece per sample)
+    std::map<std::pair<T, T>, std::vector<std::array<T, 3>>> own[2];
   };
   T dhp(const T &x, const T &e1, const T &e2, int d1, int d2, dhp_memo *mm = nullptr) const {
     using std::sqrt;
@@ -259,7 +263,9 @@ template <class T> struct sh_start {
       const bool in = x > lo && x < hi;
       auto f = [&](const T &eta) {
         const T X = i == 1 ? sqrt((eta - e1) * (eta + e2)) : -sqrt((e1 - eta) * (-e2 - eta));
-        return (T(d) * pm->p(eta) - traction(eta)) / X;
+        // (one pressure evaluation a node: the traction in a slip zone is a multiple of it)
+        const T pe = pm->p(eta);
+        return (T(d) * pe - shdetail::state_traction(panels, *rule, b1, b2, s1, s2, eta, [&] { return pe; })) / X;
       };
       if (!in && mm) {  // (pv_pieces outside the band, its nodes' f kept)
         auto &F = mm->fixed[i - 1];
@@ -269,6 +275,36 @@ template <class T> struct sh_start {
         }
         T s = 0;
         for (const auto &n : F) s += n[1] * n[2] / (n[0] - x);
+        K += s;
+        continue;
+      }
+      if (in && mm) {
+        // pv_pieces term by term, with f kept on the pieces between fixed cuts (the same sums to the
+        // last bit; 5-6% of the walks' time, bench/static_walks.cpp, walks 1-20)
+        using std::log;
+        const auto c = cuts(lo, hi, &x);
+        auto fixed = [&](const T &v) {
+          return v == lo || v == hi || std::find(cusps.begin(), cusps.end(), v) != cusps.end();
+        };
+        const T fx = f(x);
+        T s = fx * log((c.back() - x) / (x - c.front()));
+        for (size_t k = 0; k + 1 < c.size(); ++k) {
+          const std::vector<T> piece{c[k], c[k + 1]};
+          if (!fixed(c[k]) || !fixed(c[k + 1])) {
+            shdetail::pv_nodes(piece, [&](const T &eta, const T &w) {
+              if (eta == x) return;
+              s += w * (f(eta) - fx) / (eta - x);
+            });
+            continue;
+          }
+          auto &v = mm->own[i - 1][std::make_pair(c[k], c[k + 1])];
+          if (v.empty())
+            shdetail::pv_nodes(piece, [&](const T &eta, const T &w) { v.push_back({{eta, w, f(eta)}}); });
+          for (const auto &n : v) {
+            if (n[0] == x) continue;
+            s += n[1] * (n[2] - fx) / (n[0] - x);
+          }
+        }
         K += s;
         continue;
       }
@@ -773,16 +809,31 @@ template <class T> class static_history {
     // pressure cuts the bands into a piece per sample and a linear search cost the square of
     // their number (the map's values stay where they are as it grows)
     std::map<std::tuple<int, int, T, T>, std::vector<std::vector<bnode>>> pieces;
+    // the pieces at a new end that is not a cusp of the state, the last few taken, by (i, d, l, r,
+    // code): a root search over one end holds the other (end_driven, the fold scans), and a
+    // Jacobian by differences moves one end at a time, so a band's piece at its new end recurs
+    // (a quarter of the nodes made in the flat-punch walks 1-20 of bench/static_walks.cpp)
+    struct inner_piece {
+      int i = 0, d = 0, code = 0;
+      T l{0}, r{0};
+      std::vector<bnode> v;
+    };
+    std::array<inner_piece, 8> inner;
+    std::size_t n_inner = 0, next_inner = 0;
     std::vector<T> sig;
     bcache() = default;
     bcache(const bcache &) {}
     bcache(bcache &&) = default;
     bcache &operator=(const bcache &) {
-      pieces.clear();
-      sig.clear();
+      clear();
       return *this;
     }
     bcache &operator=(bcache &&) = default;
+    void clear() {
+      pieces.clear();
+      n_inner = next_inner = 0;
+      sig.clear();
+    }
   };
   void state_sig(std::vector<T> &s) const {
     s.clear();
@@ -814,19 +865,32 @@ template <class T> class static_history {
   }
   void check_cache() const {
     if (!bc_.sig.empty() && sig_matches()) return;
-    bc_.pieces.clear();
+    bc_.clear();
     state_sig(bc_.sig);
   }
-  void clear_cache() const {
-    bc_.pieces.clear();
-    bc_.sig.clear();
-  }
+  void clear_cache() const { bc_.clear(); }
   const std::vector<bnode> &cached_nodes(int i, int d, const T &l, const T &r, int code) const {
     auto &lev = bc_.pieces[std::make_tuple(i, d, l, r)];
     if (lev.empty()) lev.resize(nslots);
     auto &v = lev[code_slot(code)];
     if (v.empty()) make_nodes(i, d, l, r, code, v);
     return v;
+  }
+  // (the reference is valid until the next call)
+  const std::vector<bnode> &inner_nodes(int i, int d, const T &l, const T &r, int code) const {
+    auto &c = bc_.inner;
+    for (std::size_t k = 0; k < bc_.n_inner; ++k)
+      if (c[k].i == i && c[k].d == d && c[k].code == code && c[k].l == l && c[k].r == r) return c[k].v;
+    auto &e = c[bc_.next_inner];
+    bc_.next_inner = (bc_.next_inner + 1) % c.size();
+    bc_.n_inner = std::max(bc_.n_inner, bc_.next_inner == 0 ? c.size() : bc_.next_inner);
+    e.i = i;
+    e.d = d;
+    e.code = code;
+    e.l = l;
+    e.r = r;
+    make_nodes(i, d, l, r, code, e.v);
+    return e.v;
   }
 
   // the pieces of band i (between the cusps of the state) where g is not zero
@@ -876,7 +940,6 @@ template <class T> class static_history {
     check_cache();
     const T inner = i == 1 ? b1 : -b2;
     const T c = (b1 - b2) / 2;
-    std::vector<bnode> scratch;
     bool inner_cusp = inner == b1_ || inner == -b2_;
     for (const T &b : pbreaks_) inner_cusp = inner_cusp || inner == b;
     for (const auto &P : panels_) inner_cusp = inner_cusp || (P.cusp_l && P.l == inner);
@@ -898,10 +961,9 @@ template <class T> class static_history {
       for_codes(K, want_k ? -2 : -1, [&](int code) {
         const std::vector<bnode> *nd;
         // (a piece at the new end is kept only where that end is on a cusp of the state, as
-        // in the crossings; the ends of a Newton iteration are not)
+        // in the crossings; the ends of a Newton iteration are not: the last few are, inner_nodes)
         if (at_inner && !inner_cusp) {
-          make_nodes(i, d, l, r, code, scratch);
-          nd = &scratch;
+          nd = &inner_nodes(i, d, l, r, code);
         } else {
           nd = &cached_nodes(i, d, l, r, code);
         }
@@ -2590,7 +2652,8 @@ template <class T> class static_history {
     const T G0 = T(dadv) * pm_->p(xa0) - qS(xa0);  // 0 but for rounding
     auto rhs = [&](const T &tau) {
       const T x = xa(tau);
-      return (T(dadv) * pm_->p(x) - qS(x) - G0) / kappa;
+      const T px = pm_->p(x);
+      return (T(dadv) * px - qS_p(x, px) - G0) / kappa;
     };
     // the cusps of G: where xa passes a memory point or a pressure breakpoint
     std::vector<T> brk;
