@@ -127,7 +127,12 @@ int main(int argc, char **argv) {
       } catch (const error &) {
         break;
       }
-      st.push_back({h.b1(), h.b2(), double(h.dir1()), double(h.dir2()), h.last_segment().E1, h.last_segment().E2});
+      // (an interior slip zone's energy, Ep, to the zone whose side of the stick zone's centre it lies
+      // on, as the BEM counts it)
+      const auto &sg = h.last_segment();
+      const bool right = h.patch_dir() != 0 && (h.patch_l() + h.patch_r()) / 2 > (h.b1() - h.b2()) / 2;
+      st.push_back({h.b1(), h.b2(), double(h.dir1()), double(h.dir2()), sg.E1 + (right ? sg.Ep : 0.0),
+                    sg.E2 + (right ? 0.0 : sg.Ep)});
       done.push_back(p);
     }
     if (done.empty()) continue;

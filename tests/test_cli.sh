@@ -328,7 +328,17 @@ assert abs(v[1]["b1"] - math.sqrt(1 - 0.4 / 2)) <= 4 * 2.0 ** -52, v[1]["b1"]
 assert v[1]["steps"] == 0 and v[1]["slip_dir1"] == -1' && ok || ko "history along one ray: superposition"
 "$cli" history --path "0.6,0;0.2,0.3" --json | grep -q '"method": "static"' && ok || ko "history off the ray, advancing: static solves"
 "$cli" history --path "0.5,0;0.1,-1" --json | grep -q '"method": "static"' && ok || ko "history with a receding end: static solves"
-"$cli" history --interior-patches merge --path "0,1.5;0.15,1.5;0.25,1.2" --json | grep -q '"method": "march"' && ok || ko "history the static solves refuse (an interior slip zone, merged): march"
+"$cli" history --path "0,1.5;0.15,1.5;0.25,1.2" --json | python3 -c '
+import json, sys
+d = json.load(sys.stdin)
+v = d["vertices"][2]
+assert d["method"] == "static" and v["patch_dir"] == 1 and abs(v["patch_l"] + 0.7393878) < 1e-6, d
+assert abs(v["patch_r"] + 0.5778934) < 1e-6 and v["energy_patch"] > 0.9 * (v["energy2"] + v["energy_patch"]), v
+assert d["vertices"][1]["patch_dir"] == 0 and d["vertices"][1]["patch_l"] is None, d' && ok || ko "history with an interior slip zone: static solves, the patch reported"
+"$cli" history --path "0,1.5;0.15,1.5;0.25,1.2" | grep -q "interior slip zone: (-0.73938779, -0.57789343) a, direction +1" && ok || ko "history table: the interior slip zone"
+# random walk 48 (reference/random_walk.hpp): the static solves refuse vertex 11 (a fold), the march
+# meets an interior slip zone there and merges it on request
+"$cli" history --interior-patches merge --path "-0.022054871333472635,0;0.036078176878091284,0;0.17507763547550786,0;0.16894801212188992,0.07411374159489148;0.15453673879434301,0.11950642516403584;0.26712308630484416,0.18952721538580361;0.21590923984054916,0.26918192221866188;0.21546317188940226,0.37639511094461003;0.34453733462337949,0.42186435559245761;0.34904128632381598,0.40758301733070301;0.39875311869061375,0.30637183947290847" --json | grep -q '"method": "march"' && ok || ko "history the static solves refuse (a fold; an interior slip zone merged): march"
 js=$("$cli" history --digits 30 --path "0.6,0;0.2,0" --json) && echo "$js" | python3 -c '
 import json, sys
 from decimal import Decimal, getcontext

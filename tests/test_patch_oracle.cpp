@@ -108,8 +108,11 @@ TEST_CASE("patch oracle: the inversion on two intervals against direct quadratur
 TEST_CASE("patch oracle: the interior slip zone of the reproducer against the BEM") {
   const auto st = vertex2();
   {
+    // (the one-interval phases of core/static_history.hpp refuse the segment; since session 16
+    // its two-interval solve takes it: tests/test_static_patch.cpp)
     hs::core::static_history<double> cp(*st);
-    CHECK_THROWS_AS(cp.add_vertex(0.25, 1.2), hs::core::error);
+    cp.add_vertex(0.25, 1.2);
+    CHECK(cp.patch_dir() == +1);
   }
   auto qS = [&](double x) { return st->traction(x); };
   const auto cusps = st->memory_points();

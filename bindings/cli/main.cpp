@@ -1012,6 +1012,10 @@ int cmd_history(int argc, char **argv) {
           v.steps);
       std::printf(", \"step\": %s, \"error_estimate\": %s, \"interior_merges\": %ld", num(v.step).c_str(),
                   num(v.error_estimate).c_str(), v.interior_merges);
+      // an interior slip zone open at the vertex (the static solves' two-interval solve)
+      std::printf(", \"patch_dir\": %d, \"patch_l\": %s, \"patch_r\": %s, \"energy_patch\": %s", v.patch_dir,
+                  v.patch_dir ? num(v.patch_l).c_str() : "null", v.patch_dir ? num(v.patch_r).c_str() : "null",
+                  num(v.energy_patch).c_str());
       if (want_surface) {
         std::printf(", \"surface_stress\": {");
         for (int b = 0; b < 2; ++b)
@@ -1036,9 +1040,10 @@ int cmd_history(int argc, char **argv) {
     if (cyc) {
       std::printf(
           ", \"cycles\": %d, \"cycles_to_steady\": %s, \"shakedown\": %s, \"energy_per_cycle1\": %s, "
-          "\"energy_per_cycle2\": %s",
+          "\"energy_per_cycle2\": %s, \"energy_per_cycle_patch\": %s",
           cs.cycles, cs.cycles_to_steady < 0 ? "null" : std::to_string(cs.cycles_to_steady).c_str(),
-          cs.shakedown ? "true" : "false", num(cs.energy_per_cycle1).c_str(), num(cs.energy_per_cycle2).c_str());
+          cs.shakedown ? "true" : "false", num(cs.energy_per_cycle1).c_str(), num(cs.energy_per_cycle2).c_str(),
+          num(cs.energy_per_cycle_patch).c_str());
       if (have_closed)
         std::printf(
             ", \"closed_form_valid\": %s, \"closed_form_energy_per_cycle1\": %s, "
@@ -1097,13 +1102,18 @@ int cmd_history(int argc, char **argv) {
                   v.steps);
       if (want_surface) std::printf(" %13.6g %13.6g", surf[i][0], surf[i][5]);
       std::printf("\n");
+      if (v.patch_dir != 0 || v.energy_patch != 0)
+        std::printf("%6s interior slip zone: (%.8f, %.8f) a, direction %+d; energy %.6g\n", "", v.patch_l / scene.a,
+                    v.patch_r / scene.a, v.patch_dir, v.energy_patch);
     }
     if (cyc) {
       std::printf("cycles: %d; steady from cycle %s%s\n", cs.cycles,
                   cs.cycles_to_steady < 0 ? "(not reached)" : std::to_string(cs.cycles_to_steady).c_str(),
                   cs.shakedown ? " (shakedown: no slip in the last cycle)" : "");
-      std::printf("energy per cycle (last cycle): zone 1 %.10g, zone 2 %.10g\n", cs.energy_per_cycle1,
+      std::printf("energy per cycle (last cycle): zone 1 %.10g, zone 2 %.10g", cs.energy_per_cycle1,
                   cs.energy_per_cycle2);
+      if (cs.energy_per_cycle_patch != 0) std::printf(", interior slip zones %.10g", cs.energy_per_cycle_patch);
+      std::printf("\n");
       if (have_closed && closed.valid)
         std::printf("closed form (Ciavarella-Jager, steady from the first reversal): zone 1 %.10g, zone 2 %.10g\n",
                     closed.energy_per_cycle1, closed.energy_per_cycle2);

@@ -210,12 +210,16 @@ module halfslip
     real(c_double)    :: step = 0                ! load step after refinement
     real(c_double)    :: error_estimate = 0      ! estimated error (halfslip.h: hs_history_vertex)
     integer(c_long)   :: interior_merges = 0     ! interior slip patches merged so far
+    integer(c_int)    :: patch_dir = 0           ! interior slip zone open at the vertex: +1, -1; 0: none
+    real(c_double)    :: patch_l = 0, patch_r = 0  ! its ends
+    real(c_double)    :: energy_patch = 0        ! dissipated in interior slip zones over the segment
   end type hs_history_vertex
 
   type, bind(c), public :: hs_cycle_summary
     integer(c_size_t) :: struct_size = 0
     integer(c_int)    :: cycles = 0, cycles_to_steady = -1, shakedown = 0
     real(c_double)    :: energy_per_cycle1 = 0, energy_per_cycle2 = 0
+    real(c_double)    :: energy_per_cycle_patch = 0  ! in interior slip zones
   end type hs_cycle_summary
 
   type, bind(c), public :: hs_steady_cycle

@@ -63,6 +63,7 @@ struct hs_history {
   struct static_vertex_rec {
     std::shared_ptr<const core::static_history<double>> snap;
     double E1 = 0, E2 = 0;  // the segment ending here, canonical units
+    double Ep = 0;          // ... in an interior slip zone (core/static_patch.hpp)
     int cycle = 0;          // periodic loading: the cycle this vertex belongs to (0: none)
   };
   std::vector<static_vertex_rec> static_vertices;
@@ -264,6 +265,13 @@ bool add_on_ray_solved(hs_history &h, double q, double s, core::ray_path<double>
 // Leaves the superposition or the static solves: the march replays the path so far.
 void to_march(hs_history &h) {
   if (!h.ray_mode && !h.static_mode) return;
+  // the march models no interior slip zone: a path on which the static solves took one is not
+  // replayed in it unless patches are merged (an approximation the caller asked for)
+  if (h.static_mode && h.st && h.st->patch_segments() > 0 && h.opts.interior_patches == HS_PATCHES_ERROR)
+    throw core::error(core::status::not_applicable,
+                      "history: the static solves cannot take this segment, and the march cannot replay the path "
+                      "before it: an interior slip zone opened on an earlier segment (interior_patches = "
+                      "HS_PATCHES_MERGE marches the path, merging the patch into the edge zone, an approximation)");
   // into a fresh march: if the replay fails, the history stays as it was
   auto m = std::make_unique<core::refined_history<double>>(h.pm, h.march_options, h.march_rtol);
   for (size_t i = 0; i < h.input.size(); ++i) {
@@ -281,7 +289,13 @@ void to_march(hs_history &h) {
     if (h.ray_mode)
       for (const auto &v : h.ray_vertices) exact.push_back({v.r.b1 / sc.a, v.r.b2 / sc.a, v.r.energy1 / escale, v.r.energy2 / escale});
     else
-      for (const auto &v : h.static_vertices) exact.push_back({v.snap->b1(), v.snap->b2(), v.E1, v.E2});
+      for (const auto &v : h.static_vertices) {
+        // (an interior slip zone's energy to the zone on whose side of the stick zone's centre it
+        // lies: the march, merging it, counts it there)
+        const auto &st = *v.snap;
+        const bool right = st.patch_dir() != 0 && st.patch_l() + st.patch_r() > st.b1() - st.b2();
+        exact.push_back({st.b1(), st.b2(), v.E1 + (right ? v.Ep : 0.0), v.E2 + (right ? 0.0 : v.Ep)});
+      }
     double emax = 0, d = 0;
     for (const auto &e : exact) emax = std::max({emax, std::fabs(e[2]), std::fabs(e[3])});
     const auto &mv = m->fine().vertices();
@@ -335,7 +349,8 @@ bool add_static(const core::static_history<double> &from, double q, double s,
   if (!next) return false;
   rec.E1 = double(next->last_segment().E1);
   rec.E2 = double(next->last_segment().E2);
-  require(std::isfinite(rec.E1) && std::isfinite(rec.E2), core::status::overflow,
+  rec.Ep = double(next->last_segment().Ep);
+  require(std::isfinite(rec.E1) && std::isfinite(rec.E2) && std::isfinite(rec.Ep), core::status::overflow,
           "history: an energy is not representable");
   rec.snap = next;
   to = std::move(next);
@@ -444,7 +459,7 @@ namespace {
 struct leave_ray {};
 struct ray_cycles_adapter {
   struct view {
-    double energy1, energy2, b1, b2;
+    double energy1, energy2, b1, b2, energyp;
   };
   hs_history &h;
   std::vector<view> vs;
@@ -455,7 +470,7 @@ struct ray_cycles_adapter {
     for (const auto &v : h.ray_vertices) vs.push_back(of(v));
   }
   view of(const ray_vertex_rec &v) const {
-    return {v.r.energy1 / escale, v.r.energy2 / escale, v.r.b1 / h.scene.a, v.r.b2 / h.scene.a};
+    return {v.r.energy1 / escale, v.r.energy2 / escale, v.r.b1 / h.scene.a, v.r.b2 / h.scene.a, 0.0};
   }
   void add_vertex(double q, double s) {
     if (!add_on_ray(h, q, s)) throw leave_ray{};
@@ -475,14 +490,14 @@ struct leave_static {};
 struct static_interior {};  // a static solve found an interior slip zone (HS_PATCHES_ERROR: stop)
 struct static_cycles_adapter {
   struct view {
-    double energy1, energy2, b1, b2;
+    double energy1, energy2, b1, b2, energyp;
   };
   hs_history &h;
   std::vector<view> vs;
   explicit static_cycles_adapter(hs_history &hh) : h(hh) {
     for (const auto &v : h.static_vertices) vs.push_back(of(v));
   }
-  static view of(const hs_history::static_vertex_rec &v) { return {v.E1, v.E2, v.snap->b1(), v.snap->b2()}; }
+  static view of(const hs_history::static_vertex_rec &v) { return {v.E1, v.E2, v.snap->b1(), v.snap->b2(), v.Ep}; }
   void add_vertex(double q, double s) {
     hs_history::static_vertex_rec rec;
     std::shared_ptr<const core::static_history<double>> nx;
@@ -575,11 +590,23 @@ int hs_history_vertex_count(const hs_history *h, size_t *n) {
   });
 }
 
-int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out) {
+int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *user) {
   return guard([&] {
-    require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
-    require(out->struct_size == sizeof *out, core::status::struct_size, "vertex struct_size");
+    require(h != nullptr && user != nullptr, core::status::null_pointer, "NULL");
+    // (a caller's struct from before the patch fields gets the fields it has)
+    const size_t size = user->struct_size;
+    require(size == sizeof *user || size == offsetof(hs_history_vertex, patch_dir), core::status::struct_size,
+            "vertex struct_size");
     require(i < h->vertex_count(), core::status::bad_option, "vertex index out of range");
+    hs_history_vertex full{};
+    full.struct_size = size;
+    hs_history_vertex *out = &full;
+    struct copy_out {
+      const hs_history_vertex &from;
+      hs_history_vertex *to;
+      size_t n;
+      ~copy_out() { std::memcpy(static_cast<void *>(to), &from, n); }
+    } copy{full, user, size};
     const auto &sc = h->scene;
     if (h->ray_mode) {  // superposition: physical units already, no steps
       const auto &v = h->ray_vertices[i];
@@ -615,6 +642,10 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *out)
       out->step = 0;
       out->error_estimate = h->march_rtol;  // the accuracy the static solves were set to (for_rtol)
       out->interior_merges = 0;
+      out->patch_dir = st.patch_dir();
+      out->patch_l = st.patch_dir() ? sc.a * st.patch_l() : 0.0;
+      out->patch_r = st.patch_dir() ? sc.a * st.patch_r() : 0.0;
+      out->energy_patch = escale * v.Ep;
       return;
     }
     const auto &v = h->h->fine().vertices()[i];
@@ -720,10 +751,21 @@ int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
   });
 }
 
-int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out) {
+int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *user) {
   return guard([&] {
-    require(h != nullptr && out != nullptr, core::status::null_pointer, "NULL");
-    require(out->struct_size == sizeof *out, core::status::struct_size, "summary struct_size");
+    require(h != nullptr && user != nullptr, core::status::null_pointer, "NULL");
+    const size_t size = user->struct_size;
+    require(size == sizeof *user || size == offsetof(hs_cycle_summary, energy_per_cycle_patch),
+            core::status::struct_size, "summary struct_size");
+    hs_cycle_summary full{};
+    full.struct_size = size;
+    hs_cycle_summary *out = &full;
+    struct copy_out {
+      const hs_cycle_summary &from;
+      hs_cycle_summary *to;
+      size_t n;
+      ~copy_out() { std::memcpy(static_cast<void *>(to), &from, n); }
+    } copy{full, user, size};
     require(h->has_cycles, core::status::not_applicable, "no periodic loading in this history");
     const auto &sc = h->scene;
     const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
@@ -732,6 +774,7 @@ int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out) {
     out->shakedown = h->cycles.shakedown ? 1 : 0;
     out->energy_per_cycle1 = escale * h->cycles.energy1;
     out->energy_per_cycle2 = escale * h->cycles.energy2;
+    out->energy_per_cycle_patch = escale * h->cycles.energyp;
   });
 }
 

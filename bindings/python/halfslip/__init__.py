@@ -825,20 +825,24 @@ Ramp.__doc__ = "Result of Solution.ramp() (hs_solution_ramp)."
 
 HistoryVertex = collections.namedtuple(
     "HistoryVertex", "Q_over_fP sigma_over_fp0 b1 b2 slip_dir1 slip_dir2 energy1 energy2 cycle steps step "
-    "error_estimate interior_merges")
+    "error_estimate interior_merges patch_dir patch_l patch_r energy_patch")
 HistoryVertex.__doc__ = """State after a vertex of a History (struct hs_history_vertex): the loads,
 the stick zone (-b2, b1), the slip direction of each edge zone (+1, -1, or 0
 where that edge does not slip at the vertex), the energy dissipated in zone 1
 (x > b1) and zone 2 over the segment that ends here, the cycle (0: path or
 ramp; k >= 1: the k-th cycle of add_cycles), the load steps marched so far, the
-load step after refinement, the march's error estimate (rtol) and the number of
-interior slip patches merged with an edge zone so far (an approximation)."""
+load step after refinement, the march's error estimate (rtol), the number of
+interior slip patches merged with an edge zone so far (an approximation), and an
+interior slip zone open at the vertex (patch_dir +1 or -1, 0: none; its ends
+patch_l, patch_r) with the energy dissipated in interior slip zones over the
+segment (energy_patch, not part of energy1, energy2)."""
 
 CycleSummary = collections.namedtuple(
-    "CycleSummary", "cycles cycles_to_steady shakedown energy_per_cycle1 energy_per_cycle2")
+    "CycleSummary", "cycles cycles_to_steady shakedown energy_per_cycle1 energy_per_cycle2 energy_per_cycle_patch")
 CycleSummary.__doc__ = """Periodic loading of a History (struct hs_cycle_summary): cycles computed,
 the first cycle that the next repeats (-1: not reached), whether the last
-cycle dissipates nothing, and the energy of each zone over the last cycle."""
+cycle dissipates nothing, and the energy of each zone over the last cycle
+(energy_per_cycle_patch: in interior slip zones)."""
 
 
 class History(_Handle):
@@ -1039,7 +1043,7 @@ class History(_Handle):
         c.struct_size = ctypes.sizeof(c)
         self._status(_lib.hs_history_cycle_summary(self._handle(), byref(c)), "hs_history_cycle_summary")
         return CycleSummary(c.cycles, c.cycles_to_steady, bool(c.shakedown), c.energy_per_cycle1,
-                            c.energy_per_cycle2)
+                            c.energy_per_cycle2, c.energy_per_cycle_patch)
 
     def slip_range(self, x):
         """Slip range max h - min h over the vertices of the last cycle, at x."""

@@ -168,6 +168,10 @@ class HistoryVertex(ctypes.Structure):
         ("step", c_double),
         ("error_estimate", c_double),
         ("interior_merges", ctypes.c_long),
+        ("patch_dir", c_int),  # after 0.4.0: an interior slip zone open at the vertex
+        ("patch_l", c_double),
+        ("patch_r", c_double),
+        ("energy_patch", c_double),
     ]
 
 
@@ -180,6 +184,7 @@ class CycleSummary(ctypes.Structure):
         ("shakedown", c_int),
         ("energy_per_cycle1", c_double),
         ("energy_per_cycle2", c_double),
+        ("energy_per_cycle_patch", c_double),  # after 0.4.0
     ]
 
 

@@ -70,6 +70,7 @@ template <class T> struct history_vertex {
   T b1{1}, b2{1};
   int dir1 = 0, dir2 = 0;      // slip direction of each edge zone at the vertex (0: stuck)
   T energy1{0}, energy2{0};    // dissipated over the segment that ends here
+  T energyp{0};                // ... in interior slip zones (the static solves' patches; 0 in a march)
   // the part of energy_i that the edge side of zone i spends slipping back against the
   // zone's direction (>= 0; step_energy): where it is not small the exact solution has a
   // stick band or a reverse slip zone near the contact edge, which the march does not
@@ -1662,6 +1663,7 @@ template <class T> struct cycle_result {
   int cycles_to_steady = -1;                        // first cycle that the next repeats; -1: not reached
   bool shakedown = false;                           // the last cycle dissipates nothing
   T energy1{0}, energy2{0};                         // over the last cycle
+  T energyp{0};                                     // ... in interior slip zones
   size_t last_cycle_first = 0, last_cycle_end = 0;  // vertex range [first - 1, end) of the last cycle
 };
 
@@ -1721,10 +1723,10 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
     for (int k = 1; k <= segments; ++k) ths.push_back(2 * pi_ * T(k) / T(segments));
   }
   cycle_result<T> res;
-  T pE1 = -1, pE2 = -1, pb1 = -1, pb2 = -1;
+  T pE1 = -1, pE2 = -1, pEp = -1, pb1 = -1, pb2 = -1;
   for (int c = 1; c <= cycles; ++c) {
     const size_t first = h.vertices().size();
-    T E1 = 0, E2 = 0;
+    T E1 = 0, E2 = 0, Ep = 0;
     for (const T &th : ths) {
       T q, s;
       at(th, q, s);
@@ -1732,26 +1734,30 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
       h.tag_last_vertex(c);
       E1 += h.vertices().back().energy1;
       E2 += h.vertices().back().energy2;
+      Ep += h.vertices().back().energyp;
     }
     const auto &v = h.vertices().back();
     res.cycles = c;
     res.energy1 = E1;
     res.energy2 = E2;
+    res.energyp = Ep;
     res.last_cycle_first = first;
     res.last_cycle_end = h.vertices().size();
     if (c > 1 && res.cycles_to_steady < 0) {
-      const T scale = max(max(abs(E1), abs(E2)), max(abs(pE1), abs(pE2)));
+      const T scale = max(max(max(abs(E1), abs(E2)), max(abs(pE1), abs(pE2))), max(abs(Ep), abs(pEp)));
       const bool same = abs(E1 - pE1) <= steady_rtol * scale + 64 * eps<T>() * scale &&
                         abs(E2 - pE2) <= steady_rtol * scale + 64 * eps<T>() * scale &&
+                        abs(Ep - pEp) <= steady_rtol * scale + 64 * eps<T>() * scale &&
                         abs(v.b1 - pb1) <= steady_rtol && abs(v.b2 - pb2) <= steady_rtol;
       if (same) res.cycles_to_steady = c - 1;
     }
     pE1 = E1;
     pE2 = E2;
+    pEp = Ep;
     pb1 = v.b1;
     pb2 = v.b2;
   }
-  res.shakedown = !(res.energy1 > 0) && !(res.energy2 > 0);
+  res.shakedown = !(res.energy1 > 0) && !(res.energy2 > 0) && !(res.energyp > 0);
   return res;
 }
 

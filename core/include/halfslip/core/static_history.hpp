@@ -56,352 +56,12 @@
 #include "history_rates.hpp"
 #include "numerics.hpp"
 #include "pressure.hpp"
+#include "static_patch.hpp"
+#include "static_state.hpp"
 #include "status.hpp"
 
 namespace hs { namespace core {
 
-namespace shdetail {
-
-// Gauss-Legendre rule in theta on (0, pi) with barycentric weights for interpolation.
-template <class T> struct trule {
-  std::vector<T> t, w, bw, sh, ch;  // nodes on (-1, 1), weights, barycentric weights, sin, cos(theta/2)
-  std::vector<T> wp1, wp2;          // w_j P_{n-1}(t_j) (2n - 1)/2 and w_j P_{n-2}(t_j) (2n - 3)/2
-
-  explicit trule(int n) {
-    using std::cos;
-    using std::sin;
-    using std::sqrt;
-    const auto r = gauss_legendre<T>(n);
-    t = r->x;
-    w = r->w;
-    const T pi_ = pi<T>();
-    for (int j = 0; j < n; ++j) {
-      bw.push_back(T((j % 2) ? -1 : 1) * sqrt((1 - t[j]) * (1 + t[j]) * w[j]));
-      const T th = pi_ * (1 + t[j]) / 2;
-      sh.push_back(sin(th / 2));
-      ch.push_back(cos(th / 2));
-      // (the coefficients of P_{n-1}, P_{n-2} of the values at the nodes: resolved())
-      T p0 = 1, p1 = t[j];
-      for (int k = 2; k < n; ++k) {
-        const T p2 = (T(2 * k - 1) * t[j] * p1 - T(k - 1) * p0) / T(k);
-        p0 = p1;
-        p1 = p2;
-      }
-      wp1.push_back(w[j] * p1 * T(2 * (n - 1) + 1) / 2);
-      wp2.push_back(w[j] * p0 * T(2 * (n - 2) + 1) / 2);
-    }
-  }
-  int n() const { return int(t.size()); }
-  // interpolate values v at theta-parameter t0 in [-1, 1]
-  T interp(const std::vector<T> &v, const T &t0) const {
-    T num = 0, den = 0;
-    for (size_t j = 0; j < t.size(); ++j) {
-      const T d = t0 - t[j];
-      if (d == 0) return v[j];
-      const T c = bw[j] / d;
-      num += c * v[j];
-      den += c;
-    }
-    return num / den;
-  }
-};
-
-// the theta-parameter in [-1, 1] of x in [l, r]
-template <class T> T tpar(const T &l, const T &r, const T &x) {
-  using std::atan2;
-  using std::sqrt;
-  const T a = x - l, b = r - x;
-  const T th = 2 * atan2(sqrt(a > 0 ? a : T(0)), sqrt(b > 0 ? b : T(0)));
-  return 2 * th / pi<T>() - 1;
-}
-
-}  // namespace shdetail
-
-// one panel of the state's stick traction
-template <class T> struct sh_panel {
-  T l, r;
-  bool analytic = false;  // q = c p(x) exactly (a zone that stuck whole)
-  T c{0};
-  std::vector<T> v;     // values at the rule's nodes (analytic == false)
-  bool cusp_l = false;  // l is a memory point (a square-root cusp of q)
-};
-
-namespace shdetail {
-// The traction of a state at x: s_i p in a slip zone, else its stick panels (sorted,
-// contiguous over the stick zone; an analytic panel is a multiple of p). pf() gives p(x), called
-// only where it is needed (one pressure evaluation a band node, where the caller has it).
-template <class T, class PF>
-T state_traction(const std::vector<sh_panel<T>> &panels, const trule<T> &rule, const T &b1, const T &b2, int s1,
-                 int s2, const T &x, const PF &pf) {
-  if (x > b1) return T(s1) * pf();
-  if (x < -b2) return T(s2) * pf();
-  size_t lo = 0, hi = panels.size();
-  while (hi - lo > 1) {
-    const size_t m = (lo + hi) / 2;
-    if (panels[m].l <= x) lo = m;
-    else hi = m;
-  }
-  const auto &P = panels[lo];
-  if (P.analytic) return P.c * pf();
-  return rule.interp(P.v, tpar(P.l, P.r, x));
-}
-
-// The nodes and weights of the rule on the pieces [cuts_k, cuts_k+1]: 32-point Gauss-Legendre in
-// theta on each, x = l + L sin^2(theta/2), which takes square-root behaviour at the cuts;
-// g(eta, w) for each node in turn
-template <class T, class G> void pv_nodes(const std::vector<T> &cuts, G &&g) {
-  using std::cos;
-  using std::sin;
-  const T pi_ = pi<T>();
-  const auto gr = gauss_legendre<T>(32);
-  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
-    const T l = cuts[k], L = cuts[k + 1] - l;
-    if (!(L > 0)) continue;
-    for (size_t j = 0; j < gr->x.size(); ++j) {
-      const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
-      const T xl = L * sh * sh, xr = L * ch * ch;
-      g(xl <= xr ? l + xl : cuts[k + 1] - xr, pi_ / 2 * gr->w[j] * L * sh * ch);
-    }
-  }
-}
-
-// PV int over the pieces [cuts_k, cuts_k+1] of f(eta) / (eta - x), x inside [cuts.front(),
-// cuts.back()] (one of the cuts) or outside it: pv_nodes' rule; the singular part
-// f(x) ln((hi - x)/(x - lo)) in closed form
-template <class T, class F> T pv_pieces(const std::vector<T> &cuts, const F &f, const T &x, bool inside) {
-  using std::log;
-  T fx = 0, s = 0;
-  if (inside) {
-    fx = f(x);
-    s = fx * log((cuts.back() - x) / (x - cuts.front()));
-  }
-  pv_nodes(cuts, [&](const T &eta, const T &w) {
-    // (a node on x itself, in a piece of a few ulps next to it: its term is w f'(x), w ~ L)
-    if (inside && eta == x) return;
-    s += w * (f(eta) - fx) / (eta - x);
-  });
-  return s;
-}
-
-}  // namespace shdetail
-
-// The start of an advancing phase, kept where the ends jump at a fold: the slip of a static
-// state (ends b1, b2, directions d1, d2, at the same load) relative to this start, outside its
-// stick zone (docs/history.md, "Folds"). With g = d p - q_S on the bands and X = +W on band 1,
-// -W on band 2 (W = sqrt|(x - b1)(x + b2)|), the slip gradient there is
-//   dh'(x) = -(2/pi) X(x) PV int_bands g(eta) / (X(eta) (eta - x)) d eta
-// (the outer values of the stick zone's finite Hilbert inversion; checked against the Hertz
-// closed forms), and dh(x) is its integral from the stick end.
-template <class T> struct sh_start {
-  std::shared_ptr<const pressure_model<T>> pm;
-  std::shared_ptr<const shdetail::trule<T>> rule;
-  std::vector<sh_panel<T>> panels;
-  std::vector<T> cusps;  // memory points, ends and pressure breakpoints in (-1, 1)
-  T b1{1}, b2{1};
-  int s1 = 0, s2 = 0;
-
-  T traction(const T &x) const {
-    return shdetail::state_traction(panels, *rule, b1, b2, s1, s2, x, [&] { return pm->p(x); });
-  }
-  // the cuts of (lo, hi): its ends and the cusps inside, plus x if it lies inside, with cuts
-  // graded away from x at multiples of its distance to the nearer end (where the integrand
-  // varies on that scale: next to the stick end, f ~ 1/sqrt)
-  std::vector<T> cuts(const T &lo, const T &hi, const T *x) const {
-    using std::min;
-    std::vector<T> c{lo};
-    for (const T &m : cusps)
-      if (m > lo && m < hi) c.push_back(m);
-    if (x && *x > lo && *x < hi) {
-      c.push_back(*x);
-      const T D = min(*x - lo, hi - *x);
-      for (T d = 2 * D; d < hi - lo; d *= 2) {
-        if (*x + d < hi) c.push_back(*x + d);
-        if (*x - d > lo) c.push_back(*x - d);
-      }
-    }
-    c.push_back(hi);
-    std::sort(c.begin(), c.end());
-    c.erase(std::unique(c.begin(), c.end()), c.end());
-    // cuts within rounding of each other are one (the piece between them is merged into its
-    // neighbour, not dropped): a piece of an ulp or two has its nodes on its ends, where the
-    // PV's (f(eta) - f(x)) / (eta - x) is 0/0 and 1/X at the stick end infinite. A slip
-    // evaluated at a sample of a sampled pressure after a fold was NaN: the knot 0.90999999999999992
-    // and x = 0.91 (tests/test_static_history.cpp, "slip at a sample after a fold"). The PV point x
-    // and the ends are kept.
-    const T tol = 64 * eps<T>();
-    std::vector<T> m{c.front()};
-    for (size_t k = 1; k < c.size(); ++k) {
-      const bool keep = k + 1 == c.size() || (x && c[k] == *x);
-      if (c[k] - m.back() > tol) m.push_back(c[k]);
-      else if (keep && m.size() > 1 && !(x && m.back() == *x)) m.back() = c[k];
-      else if (keep && k + 1 == c.size()) m.push_back(c[k]);  // (lo and hi, or x and hi, that close)
-    }
-    return m;
-  }
-  // dh'(x) of the state (b1, b2, d1, d2), x outside its stick zone
-  // Work shared by the dh' evaluations of one end state (e1, e2, d1, d2): the integrand at the
-  // nodes of a band that x lies outside (they do not depend on x), and dh' at the theta nodes of
-  // each band (one_way and energy integrate it on the same nodes). One per end state: a phase's
-  // one_way checks and energies cost a fifth to a quarter less (bench/static_walks.cpp, walks 1-20).
-  struct dhp_memo {
-    bool have[2] = {false, false};
-    std::vector<std::array<T, 3>> fixed[2];  // (eta, w, f(eta))
-    std::vector<T> nodes[2];                 // dh' at theta_int's nodes over cuts(lo, hi)
-    // the pieces of x's own band between two fixed cuts (its ends and cusps, no cut of x's grading
-    // between), the same for every x: (eta, w, f(eta)) at their nodes, by (l, r) (a map: a sampled
-    // pressure cuts the band into a piece per sample)
-    std::map<std::pair<T, T>, std::vector<std::array<T, 3>>> own[2];
-  };
-  T dhp(const T &x, const T &e1, const T &e2, int d1, int d2, dhp_memo *mm = nullptr) const {
-    using std::sqrt;
-    T K = 0;
-    for (int i = 1; i <= 2; ++i) {
-      const int d = i == 1 ? d1 : d2;
-      if (d == 0) continue;
-      const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
-      if (!(hi > lo)) continue;
-      const bool in = x > lo && x < hi;
-      auto f = [&](const T &eta) {
-        const T X = i == 1 ? sqrt((eta - e1) * (eta + e2)) : -sqrt((e1 - eta) * (-e2 - eta));
-        // (one pressure evaluation a node: the traction in a slip zone is a multiple of it)
-        const T pe = pm->p(eta);
-        return (T(d) * pe - shdetail::state_traction(panels, *rule, b1, b2, s1, s2, eta, [&] { return pe; })) / X;
-      };
-      if (!in && mm) {  // (pv_pieces outside the band, its nodes' f kept)
-        auto &F = mm->fixed[i - 1];
-        if (!mm->have[i - 1]) {
-          shdetail::pv_nodes(cuts(lo, hi, nullptr), [&](const T &eta, const T &w) { F.push_back({{eta, w, f(eta)}}); });
-          mm->have[i - 1] = true;
-        }
-        T s = 0;
-        for (const auto &n : F) s += n[1] * n[2] / (n[0] - x);
-        K += s;
-        continue;
-      }
-      if (in && mm) {
-        // pv_pieces term by term, with f kept on the pieces between fixed cuts (the same sums to the
-        // last bit; 5-6% of the walks' time, bench/static_walks.cpp, walks 1-20)
-        using std::log;
-        const auto c = cuts(lo, hi, &x);
-        auto fixed = [&](const T &v) {
-          return v == lo || v == hi || std::find(cusps.begin(), cusps.end(), v) != cusps.end();
-        };
-        const T fx = f(x);
-        T s = fx * log((c.back() - x) / (x - c.front()));
-        for (size_t k = 0; k + 1 < c.size(); ++k) {
-          const std::vector<T> piece{c[k], c[k + 1]};
-          if (!fixed(c[k]) || !fixed(c[k + 1])) {
-            shdetail::pv_nodes(piece, [&](const T &eta, const T &w) {
-              if (eta == x) return;
-              s += w * (f(eta) - fx) / (eta - x);
-            });
-            continue;
-          }
-          auto &v = mm->own[i - 1][std::make_pair(c[k], c[k + 1])];
-          if (v.empty())
-            shdetail::pv_nodes(piece, [&](const T &eta, const T &w) { v.push_back({{eta, w, f(eta)}}); });
-          for (const auto &n : v) {
-            if (n[0] == x) continue;
-            s += n[1] * (n[2] - fx) / (n[0] - x);
-          }
-        }
-        K += s;
-        continue;
-      }
-      K += shdetail::pv_pieces(cuts(lo, hi, in ? &x : nullptr), f, x, in);
-    }
-    const T X = x > e1 ? sqrt((x - e1) * (x + e2)) : -sqrt((e1 - x) * (-e2 - x));
-    return -2 / pi<T>() * X * K;
-  }
-  // the integral of f over the pieces between the cuts c, by 24-point Gauss-Legendre in theta
-  // on each (x = l + L sin^2(theta/2): square-root behaviour at every cut)
-  template <class F> static T theta_int(const std::vector<T> &c, const F &f) {
-    using std::cos;
-    using std::sin;
-    const auto gr = gauss_legendre<T>(24);
-    const T pi_ = pi<T>();
-    T s = 0;
-    for (size_t k = 0; k + 1 < c.size(); ++k) {
-      const T l = c[k], L = c[k + 1] - l;
-      for (size_t j = 0; j < gr->x.size(); ++j) {
-        const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
-        s += pi_ / 2 * gr->w[j] * L * sh * ch * f(l + L * sh * sh);
-      }
-    }
-    return s;
-  }
-  // dh(x): the integral of dh' from the stick end of x's zone (0 on the stick zone)
-  T dh(const T &x, const T &e1, const T &e2, int d1, int d2) const {
-    if (x <= e1 && x >= -e2) return T(0);
-    const T lo = x > e1 ? e1 : x, hi = x > e1 ? x : -e2;
-    const T s = theta_int(cuts(lo, hi, nullptr), [&](const T &xi) { return dhp(xi, e1, e2, d1, d2); });
-    return x > e1 ? s : -s;
-  }
-  // d_i dh >= 0 at the cuts of band i, to rounding: every band point slipped in its zone's
-  // direction, the premise of taking a phase's slip and energy from its start and end states
-  // (a necessary condition, checked where the cuts are: the band's ends and the cusps inside)
-  // (sub > 1: each piece between cuts split into sub equal parts, the check at their ends too)
-  bool one_way(int i, const T &e1, const T &e2, int d1, int d2, int sub = 1, dhp_memo *mm = nullptr) const {
-    using std::abs;
-    const int d = i == 1 ? d1 : d2;
-    if (d == 0) return true;
-    const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
-    if (!(hi > lo)) return true;
-    auto c = cuts(lo, hi, nullptr);
-    if (sub > 1) {
-      std::vector<T> f{c.front()};
-      for (size_t k = 0; k + 1 < c.size(); ++k)
-        for (int m = 1; m <= sub; ++m) f.push_back(m == sub ? c[k + 1] : c[k] + (c[k + 1] - c[k]) * T(m) / T(sub));
-      c = std::move(f);
-    }
-    const size_t n = c.size() - 1;
-    std::vector<T> h(n);  // dh at the outer end of each piece, counted from the stick end
-    T run = 0, big = 0;
-    const size_t nq = gauss_legendre<T>(24)->x.size();
-    std::vector<T> *keep = mm && sub == 1 ? &mm->nodes[i - 1] : nullptr;
-    if (keep) keep->assign(n * nq, T(0));
-    for (size_t k = 0; k < n; ++k) {
-      const size_t j = i == 1 ? k : n - 1 - k;  // band 2 runs from -e2 leftwards
-      size_t q = j * nq;
-      const T part = theta_int({c[j], c[j + 1]}, [&](const T &xi) {
-        const T v = dhp(xi, e1, e2, d1, d2, mm);
-        if (keep) (*keep)[q++] = v;
-        return v;
-      });
-      run += i == 1 ? part : -part;
-      h[k] = run;
-      big = std::max(big, abs(run));
-    }
-    for (const T &v : h)
-      if (T(d) * v < -(T(1e-9) * big + T(1e-15))) return false;
-    return true;
-  }
-  // the energy dissipated in zone i by the slip dh of the state: d_i int_band p dh dx =
-  // d_i int_band Pbar dh' (Pbar: the pressure's integral from the point to the edge)
-  T energy(int i, const T &e1, const T &e2, int d1, int d2, dhp_memo *mm = nullptr) const {
-    const int d = i == 1 ? d1 : d2;
-    if (d == 0) return T(0);
-    const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
-    if (!(hi > lo)) return T(0);
-    auto pbar = [&](const T &xi) {  // int from xi to the edge of p, cut at the pressure's breakpoints
-      const T a = i == 1 ? xi : T(-1), b = i == 1 ? T(1) : xi;
-      std::vector<T> pcs{a};
-      for (const auto &bp : pm->breakpoints())
-        if (bp.x > a && bp.x < b) pcs.push_back(bp.x);
-      pcs.push_back(b);
-      std::sort(pcs.begin(), pcs.end());
-      return theta_int(pcs, [&](const T &x) { return pm->p(x); });
-    };
-    // (cusps holds the pressure's breakpoints)
-    const auto c = cuts(lo, hi, nullptr);
-    const std::vector<T> *kept = mm && mm->nodes[i - 1].size() == (c.size() - 1) * gauss_legendre<T>(24)->x.size()
-                                     ? &mm->nodes[i - 1] : nullptr;
-    size_t q = 0;
-    const T s = theta_int(c, [&](const T &xi) { return pbar(xi) * (kept ? (*kept)[q++] : dhp(xi, e1, e2, d1, d2, mm)); });
-    // zone 2: dh' integrates to dh from the end leftwards with dh = -int, so p dh = Pbar (-dh')
-    return T(d) * (i == 1 ? s : -s);
-  }
-};
 
 // an advancing phase with a fold, whose slip is that of its end state (b1, b2, d1, d2) from
 // its start state
@@ -409,6 +69,9 @@ template <class T> struct sh_jump {
   std::shared_ptr<const sh_start<T>> start;
   T b1{1}, b2{1};
   int d1 = 0, d2 = 0;
+  // a segment that ends with an interior slip zone open (static_patch.hpp): its slip is the
+  // two-interval solve's (start, b1, b2, d1, d2 as above)
+  std::shared_ptr<const sh_patch<T>> patch;
 };
 
 // a piece of a segment between crossings: the loads' parameter lambda and the ends at the
@@ -425,6 +88,7 @@ template <class T> struct sh_segment {
   T b1s{1}, b2s{1};            // the ends at lambda = 0 (after any whole-zone stick)
   std::vector<sh_piece<T>> pieces;
   T E1{0}, E2{0};
+  T Ep{0};                     // dissipated in an interior slip zone (0: none; static_patch.hpp)
   T b1e{1}, b2e{1};
   std::vector<sh_jump<T>> jumps;  // phases with a fold (their slip from their start and end states)
 };
@@ -623,6 +287,13 @@ template <class T> class static_history {
   const sh_segment<T> &segment(size_t k) const { return segs_.at(k); }  // O(segments - k)
   const sh_segment<T> &last_segment() const { return segs_.back(); }
   const pressure_model<T> &pressure() const { return *pm_; }
+  // the interior slip zone open at the current state (static_patch.hpp): its direction (0: none)
+  // and ends
+  int patch_dir() const { return sp_; }
+  T patch_l() const { return pl_; }
+  T patch_r() const { return pr_; }
+  // segments so far that ended with an interior slip zone open
+  std::size_t patch_segments() const { return npatch_; }
 
   // the memory points inside the stick zone (cusps of the traction) and its ends
   std::vector<T> memory_points() const {
@@ -635,6 +306,8 @@ template <class T> class static_history {
 
   // traction of the current state at x in [-1, 1]
   T traction(const T &x) const { return qS(x); }
+  // the current state as the start of a phase (static_state.hpp): its traction, cusps and ends
+  sh_start<T> start() const { return start_state(); }
 
   // slip accumulated at x over all segments
   T slip(const T &x) const {
@@ -665,7 +338,17 @@ template <class T> class static_history {
     }
     // work on a copy: the state changes only if the segment succeeds
     static_history nx(*this);
-    nx.advance(dq, ds);
+    nx.interior_ = false;
+    try {
+      nx.advance(dq, ds);
+      nx.sp_ = 0;  // (a patch open at the start of the segment stuck: within the limit at its end)
+    } catch (const error &e) {
+      // the stick traction past the limit inside the stick zone: the segment with an interior
+      // slip zone open at its end, by the two-interval static solve
+      if (e.code() != status::not_applicable || !nx.interior_) throw;
+      nx = *this;
+      if (!nx.patch_segment(dq, ds)) throw;
+    }
     nx.q_ = qn;  // the vertex exactly (q_ + (qn - q_) may round away from qn)
     nx.s_ = sn;
     nx.clear_cache();  // (the committed state is shared read-only: no cache travels with it)
@@ -740,16 +423,7 @@ template <class T> class static_history {
 
   // the grading level K of a piece of length L whose graded end lies D from the singularity
   // (0: not graded)
-  static int grade_level(const T &D, const T &L) {
-    using std::max;
-    using std::sqrt;
-    if (!(D < L)) return 0;
-    const T a0 = max(T(2) * sqrt(max(D, T(0)) / L), T(64) * eps<T>());
-    const T pi_ = pi<T>();
-    int K = 1;
-    while (K < kcore - 1 && pi_ * T(std::ldexp(1.0, -K)) > a0) ++K;
-    return K;
-  }
+  static int grade_level(const T &D, const T &L) { return shdetail::grade_level(D, L); }
   template <class F> static void for_codes(int K, int ucode, F &&f) {
     if (K == 0) {
       f(ucode);
@@ -1233,15 +907,13 @@ template <class T> class static_history {
 
   // The advancing phase from lam0 (the current state) to lam1 of the segment (dq, ds): the ends
   // are static solves from the current state. Appends its pieces and energies to sg and moves
-  // the state to lam1; returns false (state and sg unchanged) with *stop filled if an end
-  // stops advancing before lam1 (stop == nullptr: that is an error).
-  bool advancing_phase(const T &lam0, const T &lam1, const T &dq, const T &ds, sh_segment<T> &sg,
-                       stop_info *stop, const std::array<int, 2> &open) {
-    using std::abs;
-    const T span = lam1 - lam0;
-    const T DQ = dq * span, DS = ds * span;  // the phase's load increments
+  // The zones' directions on an advancing phase of increments (DQ, DS) from the state: a slipping
+  // zone keeps its own; a closed one opens with the sign of its r_i (open: a direction known
+  // already, a receding zone that closed and reopens at once)
+  void zone_dirs(const T &DQ, const T &DS, const std::array<int, 2> &open, int &d1, int &d2) const {
     const T e0 = (b1_ + b2_) / 2;
-    int d1 = s1_, d2 = s2_;
+    d1 = s1_;
+    d2 = s2_;
     if (d1 == 0) d1 = open[0] != 0 ? open[0] : sgn(hist_rate_end(1, DQ, DS, e0));
     if (d2 == 0) d2 = open[1] != 0 ? open[1] : sgn(hist_rate_end(2, DQ, DS, e0));
     // (r_i = 0 exactly at an edge, e* = 1: the sign r_i takes as the other end advances)
@@ -1249,6 +921,16 @@ template <class T> class static_history {
     if (d2 == 0 && d1 != 0) d2 = -sgn(DS);
     if (d1 == 0 || d2 == 0)
       throw error(status::not_applicable, "static_history: an edge stays stuck along the segment (r_i = 0)");
+  }
+  // the state to lam1; returns false (state and sg unchanged) with *stop filled if an end
+  // stops advancing before lam1 (stop == nullptr: that is an error).
+  bool advancing_phase(const T &lam0, const T &lam1, const T &dq, const T &ds, sh_segment<T> &sg,
+                       stop_info *stop, const std::array<int, 2> &open) {
+    using std::abs;
+    const T span = lam1 - lam0;
+    const T DQ = dq * span, DS = ds * span;  // the phase's load increments
+    int d1, d2;
+    zone_dirs(DQ, DS, open, d1, d2);
     auto stops = [&](const T &g1, const T &g2) -> int {
       const T e = (g1 + g2) / 2;
       if (!(T(d1) * hist_rate_end(1, DQ, DS, e) > 0)) return 1;
@@ -2207,15 +1889,28 @@ template <class T> class static_history {
   }
   // the traction trac(x) on panels over (-b2, b1), cut at the state's cusps there (hint: a
   // layout to start from where its cuts are these to 1e-9; lay: this one's)
+  // (patch: an interior slip zone (pl, pr) of the new state, whose ends are memory points and
+  // inside which the state's own memory points are erased, the pressure's breakpoints kept)
   template <class Fn>
   std::vector<sh_panel<T>> build_panels(const T &b1, const T &b2, const Fn &trac, const panel_layout *hint = nullptr,
-                                        panel_layout *lay = nullptr) const {
+                                        panel_layout *lay = nullptr, const std::array<T, 2> *patch = nullptr) const {
     using std::abs;
     // cusps within rounding of an end or of each other are one point (a Masing return puts
     // an end on an earlier end position, to rounding): no panels narrower than that
     const T tiny = T(1e3) * eps<T>() * (b1 + b2);
+    std::vector<T> cs = cusps_in(-b2, b1);
+    if (patch) {
+      std::vector<T> kept;
+      for (const T &c : cs)
+        if (!(c > (*patch)[0] && c < (*patch)[1]) || std::find(pbreaks_.begin(), pbreaks_.end(), c) != pbreaks_.end())
+          kept.push_back(c);
+      kept.push_back((*patch)[0]);
+      kept.push_back((*patch)[1]);
+      std::sort(kept.begin(), kept.end());
+      cs = std::move(kept);
+    }
     std::vector<T> cuts{-b2};
-    for (const T &c : cusps_in(-b2, b1))
+    for (const T &c : cs)
       if (c - cuts.back() > tiny && b1 - c > tiny) cuts.push_back(c);
     cuts.push_back(b1);
     if (hint && hint->cuts.size() == cuts.size()) {
@@ -2333,10 +2028,12 @@ template <class T> class static_history {
     return true;
   }
   void check_limit(const std::vector<sh_panel<T>> &np) const {
-    if (!limit_ok_panels(np))
+    if (!limit_ok_panels(np)) {
+      interior_ = true;  // (add_vertex then tries the segment with a patch)
       throw error(status::not_applicable,
                   "static_history: the stick traction passes the friction limit inside the stick zone (an "
                   "interior slip zone)");
+    }
   }
 
   // the current state as the start of a phase whose slip and energy come from its start and end
@@ -2817,6 +2514,185 @@ template <class T> class static_history {
     return lam_end;
   }
 
+  // ---- a segment that ends with an interior slip zone open --------------------------
+  // (docs/history.md, "Interior slip zones in hs_history"). The one-interval phases refused the
+  // segment at check_limit. If every end only advanced, every point of the final stick set
+  // stuck throughout and every point that slipped did so one way, the end state is the
+  // two-interval static solve from this state (sh_patch), whatever the path within the segment;
+  // it is then the unique solution of the one-step problem (the argument of merged_state), and a
+  // root that passes the checks below is taken:
+  //   the ends advanced (b_i at most the start's; an open patch of the same direction grew);
+  //   the stick traction within the limit on both stick intervals;
+  //   every zone slipped one way (sh_patch::one_way);
+  //   the same solve at a third and two thirds of the segment nested between start and end (a
+  //   patch not yet open there: the one-interval solve within the limit).
+  // The patch is sought from several starts (the spurious zero-width root attracts Newton from
+  // a patch inside the true one): an open patch grown a little; the region where the one-interval
+  // state passes the limit, and that region widened; and where an edge zone reverses at the
+  // edge, the inner part of the old zone going on slipping with a little of the stick zone beyond
+  // its end (the reproducer of docs/history.md). False (this object unchanged in its state) if
+  // no start gives a root that passes.
+  bool patch_segment(const T &dq, const T &ds) {
+    using std::abs;
+    using std::max;
+    using std::min;
+    const int rec = decide(dq, ds, 0);
+    if (rec != 0) return false;
+    int d1, d2;
+    zone_dirs(dq, ds, {{0, 0}}, d1, d2);
+    auto st = std::make_shared<const sh_start<T>>(start_state());
+    const T W = b1_ + b2_;
+    if (!(W > 0)) return false;
+    const T tol = T(1e-9) * W + mono_tol_;
+    // the one-interval state at the vertex
+    T g1 = b1_, g2 = b2_;
+    {
+      const T e = (b1_ + b2_) / 2;
+      if (b1_ >= 1) g1 = 1 - max(T(1e-6), abs(hist_rate_end(1, dq, ds, e)) / 2);
+      if (b2_ >= 1) g2 = 1 - max(T(1e-6), abs(hist_rate_end(2, dq, ds, e)) / 2);
+      T h1 = g1, h2 = g2;
+      if (solve(h1, h2, d1, d2, dq, ds) && h1 <= b1_ + tol && h2 <= b2_ + tol && h1 + h2 > 0) g1 = h1, g2 = h2;
+    }
+    struct cand {
+      int dp;
+      T pl, pr;
+    };
+    std::vector<cand> cands;
+    if (sp_ != 0) {
+      const T w = pr_ - pl_;
+      cands.push_back({sp_, pl_ - w / 64, pr_ + w / 64});
+      cands.push_back({sp_, pl_ - w / 4, pr_ + w / 4});
+    }
+    {  // where the one-interval state passes the limit
+      panel_layout lay;
+      const auto np = new_panels(g1, g2, d1, d2, nullptr, lay);
+      const auto &R = *rule_;
+      std::vector<std::array<T, 2>> ex;  // (x, signed excess), in order
+      T big = 0, xm = 0;
+      int sm = 0;
+      for (const auto &P : np)
+        for (int j = 0; j < R.n(); ++j) {
+          const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
+          const T x = xl <= xr ? P.l + xl : P.r - xr;
+          const T v = P.analytic ? P.c * pm_->p(x) : P.v[j];
+          const T e = abs(v) - pm_->p(x);
+          ex.push_back({{x, v > 0 ? e : -e}});
+          if (e > big) big = e, xm = x, sm = v > 0 ? 1 : -1;
+        }
+      if (big > 0) {
+        size_t k = 0;
+        while (ex[k][0] != xm) ++k;
+        size_t lo = k, hi = k;
+        while (lo > 0 && T(sm) * ex[lo - 1][1] > 0) --lo;
+        while (hi + 1 < ex.size() && T(sm) * ex[hi + 1][1] > 0) ++hi;
+        const T xl = lo > 0 ? (ex[lo - 1][0] + ex[lo][0]) / 2 : -g2, xr = hi + 1 < ex.size() ? (ex[hi][0] + ex[hi + 1][0]) / 2 : g1;
+        const T w = max(xr - xl, T(1e-4) * W);
+        for (const T f : {T(0), T(0.5), T(1), T(-0.25)}) cands.push_back({sm, xl - f * w, xr + f * w});
+      }
+    }
+    // an edge zone reversed at the edge whose inner part goes on slipping
+    for (int i = 1; i <= 2; ++i) {
+      const int so = i == 1 ? s1_ : s2_, di = i == 1 ? d1 : d2;
+      if (so == 0 || di != -so) continue;
+      const T o = i == 1 ? b1_ : -b2_, Lz = i == 1 ? 1 - b1_ : 1 - b2_;
+      if (!(Lz > 0)) continue;
+      for (const T f : {T(0.4), T(0.7), T(0.2)}) {
+        if (i == 1) cands.push_back({so, o - W / 100, o + f * Lz});
+        else cands.push_back({so, o - f * Lz, o + W / 100});
+      }
+    }
+    for (const auto &c : cands) {
+      if (!(c.pr > c.pl)) continue;
+      sh_patch_ends<T> e0{g1, g2, c.pl, c.pr};
+      // (the edge ends kept outside the patch)
+      if (!(e0.pl > -e0.b2)) e0.b2 = min(T(1), -e0.pl + (1 + e0.pl) / 2);
+      if (!(e0.pr < e0.b1)) e0.b1 = min(T(1), e0.pr + (1 - e0.pr) / 2);
+      if (!(e0.pl > -e0.b2) || !(e0.pr < e0.b1)) continue;
+      auto P = std::make_shared<sh_patch<T>>(st, dq, ds, d1, d2, c.dp, rule_->n());
+      if (!P->solve(e0)) continue;
+      const auto e = P->solved();
+      if (!(e.b1 <= b1_ + tol && e.b2 <= b2_ + tol)) continue;
+      if (sp_ == c.dp && !(e.pl <= pl_ + tol && e.pr >= pr_ - tol)) continue;
+      const std::array<T, 2> pz{{e.pl, e.pr}};
+      auto np = build_panels(e.b1, e.b2, [&](const T &x) { return P->traction(x); }, nullptr, nullptr, &pz);
+      for (auto &Q : np)
+        if (Q.l >= e.pl && Q.r <= e.pr) {
+          Q.analytic = true;
+          Q.c = T(c.dp);
+          Q.v.clear();
+        }
+      if (!limit_ok_panels(np)) continue;
+      if (!P->one_way(1) || !P->one_way(2) || !P->one_way(3)) continue;
+      if (!nested_fractions(st, dq, ds, d1, d2, c.dp, e, tol)) continue;
+      // take it
+      sh_segment<T> sg;
+      sg.q0 = q_;
+      sg.s0 = s_;
+      sg.dq = dq;
+      sg.ds = ds;
+      sg.d1 = d1;
+      sg.d2 = d2;
+      sg.b1s = b1_;
+      sg.b2s = b2_;
+      sg.b1e = e.b1;
+      sg.b2e = e.b2;
+      sg.E1 = P->energy(1);
+      sg.E2 = P->energy(2);
+      sg.Ep = P->energy(3);
+      sh_jump<T> J;
+      J.start = st;
+      J.b1 = e.b1;
+      J.b2 = e.b2;
+      J.d1 = d1;
+      J.d2 = d2;
+      J.patch = P;
+      sg.jumps.push_back(std::move(J));
+      panels_ = std::move(np);
+      b1_ = e.b1;
+      b2_ = e.b2;
+      s1_ = d1;
+      s2_ = d2;
+      pl_ = e.pl;
+      pr_ = e.pr;
+      sp_ = c.dp;
+      ++npatch_;
+      q_ += dq;
+      s_ += ds;
+      segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
+      return true;
+    }
+    return false;
+  }
+  // the premise along the segment: at two thirds and a third of it the state is the same solve
+  // (from the later one), with the ends between the start's and the later one's and the patch
+  // inside the later one (or not yet open: the one-interval state within the limit)
+  bool nested_fractions(const std::shared_ptr<const sh_start<T>> &st, const T &dq, const T &ds, int d1, int d2,
+                        int dp, const sh_patch_ends<T> &e, const T &tol) const {
+    sh_patch_ends<T> next = e;
+    bool open = true;
+    for (const T mu : {T(2) / 3, T(1) / 3}) {
+      if (open) {
+        sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, dp, rule_->n());
+        if (Pm.solve(next)) {
+          const auto &m = Pm.solved();
+          if (!(m.b1 <= b1_ + tol && m.b2 <= b2_ + tol && m.b1 >= next.b1 - tol && m.b2 >= next.b2 - tol &&
+                m.pl >= next.pl - tol && m.pr <= next.pr + tol)) return false;
+          next = m;
+          continue;
+        }
+        open = false;
+      }
+      T h1 = next.b1, h2 = next.b2;
+      if (!solve(h1, h2, d1, d2, mu * dq, mu * ds)) return false;
+      if (!(h1 <= b1_ + tol && h2 <= b2_ + tol && h1 >= next.b1 - tol && h2 >= next.b2 - tol)) return false;
+      panel_layout lay;
+      if (!limit_ok_panels(new_panels(h1, h2, d1, d2, nullptr, lay))) return false;
+      next.b1 = h1;
+      next.b2 = h2;
+    }
+    return true;
+  }
+
   // ---- slip --------------------------------------------------------------------
   T seg_slip(const sh_segment<T> &sg, const T &x) const {
     using std::cos;
@@ -2827,7 +2703,7 @@ template <class T> class static_history {
     const auto &R = *lrule_;
     const T pi_ = pi<T>();
     T h = 0;
-    for (const auto &J : sg.jumps) h += J.start->dh(x, J.b1, J.b2, J.d1, J.d2);
+    for (const auto &J : sg.jumps) h += J.patch ? J.patch->dh(x) : J.start->dh(x, J.b1, J.b2, J.d1, J.d2);
     for (const auto &pc : sg.pieces) {
       for (int z = -1; z <= 1; z += 2) {
         const int dz = z > 0 ? pc.d1 : pc.d2;
@@ -2889,6 +2765,12 @@ template <class T> class static_history {
   sh_segment_list<T> segs_;  // shared with copies (snapshots)
   T q_{0}, s_{0}, b1_{1}, b2_{1};
   int s1_ = 0, s2_ = 0;
+  // an interior slip zone (pl_, pr_) open at the current state, direction sp_ (0: none); its
+  // traction is sp_ p on analytic panels between two memory points
+  T pl_{0}, pr_{0};
+  int sp_ = 0;
+  std::size_t npatch_ = 0;
+  mutable bool interior_ = false;  // the last refusal was check_limit's (an interior slip zone)
 };
 
 }}  // namespace hs::core

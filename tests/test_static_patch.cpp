@@ -1,0 +1,150 @@
+// Issue 14: segments that end with an interior slip zone open, taken by the two-interval static
+// solve (core/include/halfslip/core/static_patch.hpp) inside core::static_history, and the path
+// after them (docs/history.md, "Interior slip zones in hs_history"). Independent checks: the
+// reference oracle of the two-interval solve (reference/patch_oracle.hpp, its own quadrature and
+// Newton, no code shared with core/) and the BEM (reference/bem_history.hpp), which marches small
+// load increments with stick/slip decided node by node.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "halfslip/core/static_history.hpp"
+#include "halfslip/reference/bem_history.hpp"
+#include "halfslip/reference/patch_oracle.hpp"
+
+namespace {
+constexpr double pi = 3.141592653589793238462643383279502884;
+double hertz(double x) { return std::sqrt(std::max(0.0, (1 - x) * (1 + x))); }
+using path_t = std::vector<std::pair<double, double>>;
+
+std::shared_ptr<hs::core::static_history<double>> walk(const path_t &path) {
+  auto sh = std::make_shared<hs::core::static_history<double>>(std::make_shared<hs::core::hertz_pressure<double>>());
+  for (const auto &v : path) sh->add_vertex(v.first, v.second);
+  return sh;
+}
+// the reproducer of docs/history.md: (0, 1.5) -> (0.15, 1.5) -> (0.25, 1.2); zone 2 reverses at the
+// edge while the inner part of the old zone 2 goes on slipping +1, with 2.3e-3 a of the stick zone
+// beyond its old end
+const path_t reproducer{{0.0, 1.5}, {0.15, 1.5}, {0.25, 1.2}};
+}  // namespace
+
+// The library's two-interval solve against the oracle's, from the same start state: ends, the new
+// stick traction, the slip change and the energies of the three zones. Measured: ends 1e-15,
+// traction 1e-15, slip 3e-11 and energies 3e-12 to 3e-11 of their size (the oracle's 8- and
+// 12-point rules; the library's 24).
+TEST_CASE("static patch: the two-interval solve against the reference oracle") {
+  const auto sh = walk({{0.0, 1.5}, {0.15, 1.5}});
+  auto st = std::make_shared<const hs::core::sh_start<double>>(sh->start());
+  hs::core::sh_patch<double> P(st, 0.1, -0.3, +1, -1, +1);
+  REQUIRE(P.solve({0.9, 0.98, -0.75, -0.575}));
+  const auto e = P.solved();
+  for (double r : P.residual(e)) CHECK(std::fabs(r) < 1e-13);
+  hs::reference::patch_oracle o([&](double x) { return sh->traction(x); }, hertz, sh->memory_points(), 0.1, -0.3, +1,
+                                -1, +1);
+  const auto eo = o.solve(hs::reference::patch_oracle::ends{0.8935, 0.9888, -0.7396, -0.5778});
+  CHECK(std::fabs(e.b1 - eo.b1) < 1e-12);
+  CHECK(std::fabs(e.b2 - eo.b2) < 1e-12);
+  CHECK(std::fabs(e.pl - eo.pl) < 1e-12);
+  CHECK(std::fabs(e.pr - eo.pr) < 1e-12);
+  for (double x : {-0.95, -0.8, -0.5, 0.0, 0.5, 0.85, 0.89, -0.74, -0.57}) {
+    CAPTURE(x);
+    CHECK(std::fabs(P.traction(x) - o.traction(eo, x)) < 1e-12);
+  }
+  const double x0 = 0.5 * (eo.pr + eo.b1);
+  for (double x : {-0.99, -0.9, 0.95, -0.7, -0.65, -0.6}) {
+    CAPTURE(x);
+    CHECK(std::fabs(P.dh(x) - o.slip_change(eo, {x}, x0)[0]) < 1e-9 * 0.05);
+  }
+  for (int z = 1; z <= 3; ++z) {
+    CAPTURE(z);
+    const double Eo = o.energy(eo, z, x0, 12);
+    CHECK(std::fabs(P.energy(z) - Eo) < 1e-9 * std::fabs(Eo));
+    CHECK(P.one_way(z));
+  }
+}
+
+// The reproducer as a history: the static solves take the segment with the patch, and then a path
+// on (the patch sticks at the turn, the old patch region then lies inside the stick zone at the
+// limit: memory points at its ends). Against the BEM at N = 800 at every vertex: the zones'
+// directions, ends within an element width, each segment's total energy within 1e-4 of the path's
+// largest, the BEM's patch (elements in its stick zone at the limit) at the library's patch, and
+// the slip at the end within 5e-5 (measured: energies 1.6e-5 of the segment's at the patch vertex,
+// 3e-6 of the largest elsewhere; slip 2.3e-5 at N = 800, 1.0e-5 at N = 1600).
+TEST_CASE("static patch: a segment with an interior slip zone and the path after it against the BEM") {
+  const path_t path{{0.0, 1.5}, {0.15, 1.5}, {0.25, 1.2}, {0.1, 1.2}, {0.3, 1.0}, {0.0, 0.0}};
+  auto sh = std::make_shared<hs::core::static_history<double>>(std::make_shared<hs::core::hertz_pressure<double>>());
+  hs::reference::bem::options bo;
+  bo.nodes = bo.steps_per_unit = 800;
+  std::vector<double> xq, qq, hh;
+  const auto r = hs::reference::bem::run(hertz, path, bo, &qq, &hh, &xq);
+  auto width = [](double b) { return pi / 800 * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (800.0 * 800.0); };
+  double big = 0;
+  for (const auto &v : r) big = std::max(big, v.energy1 + v.energy2);
+  for (size_t i = 0; i < path.size(); ++i) {
+    CAPTURE(i);
+    sh->add_vertex(path[i].first, path[i].second);
+    const auto &sg = sh->last_segment();
+    CHECK(sh->dir1() == r[i].dir1);
+    CHECK(sh->dir2() == r[i].dir2);
+    CHECK(std::fabs(sh->b1() - r[i].b1) < width(sh->b1()));
+    CHECK(std::fabs(sh->b2() - r[i].b2) < width(sh->b2()));
+    CHECK(std::fabs(sg.E1 + sg.E2 + sg.Ep - r[i].energy1 - r[i].energy2) < 1e-4 * big);
+    CHECK(std::fabs(sg.E1 - r[i].energy1) < 1e-4 * big);
+    CHECK((sh->patch_dir() != 0) == (i == 2));
+    CHECK((sg.Ep > 0) == (i == 2));
+  }
+  CHECK(sh->patch_segments() == 1);
+  double dh = 0;
+  for (size_t k = 0; k < xq.size(); ++k) dh = std::max(dh, std::fabs(hh[k] - sh->slip(xq[k])));
+  CHECK(dh < 5e-5);
+}
+
+// The patch at the vertex of the reproducer, against the BEM's: the run of elements inside the
+// stick zone at the friction limit (+p) lies at (pl, pr) to two element widths.
+TEST_CASE("static patch: the patch's ends against the BEM's") {
+  const auto sh = walk(reproducer);
+  REQUIRE(sh->patch_dir() == +1);
+  hs::reference::bem::options bo;
+  bo.nodes = bo.steps_per_unit = 800;
+  std::vector<double> xq, qq;
+  const auto r = hs::reference::bem::run(hertz, reproducer, bo, &qq, nullptr, &xq);
+  const auto &v = r.back();
+  REQUIRE(xq.size() == 800);
+  double bl = 1, br = -1;
+  for (size_t k = 0; k < xq.size(); ++k) {
+    const double t0 = pi * double(k) / 800, t1 = pi * double(k + 1) / 800;
+    const double l = -std::cos(t0), rr = -std::cos(t1);
+    const double m = ((t1 - t0) / 2 - (std::sin(2 * t1) - std::sin(2 * t0)) / 4) / (rr - l);  // mean p
+    if (xq[k] > -v.b2 && xq[k] < v.b1 && qq[k] >= m * (1 - 1e-9)) bl = std::min(bl, l), br = std::max(br, rr);
+  }
+  auto width = [](double b) { return pi / 800 * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (800.0 * 800.0); };
+  CHECK(std::fabs(bl - sh->patch_l()) < 2 * width(sh->patch_l()));
+  CHECK(std::fabs(br - sh->patch_r()) < 2 * width(sh->patch_r()));
+}
+
+// Along a straight segment on which every point slips one way, the end state does not depend on
+// where the segment is cut: the reproducer's last segment in two halves (the second starts with the
+// patch open and grows it) reaches the same ends and patch, and the energies add up.
+TEST_CASE("static patch: a patch grown over two segments is the patch of one") {
+  const auto one = walk(reproducer);
+  const auto two = walk({{0.0, 1.5}, {0.15, 1.5}, {0.2, 1.35}, {0.25, 1.2}});
+  REQUIRE(two->patch_dir() == +1);
+  CHECK(two->patch_segments() == 2);
+  CHECK(std::fabs(one->b1() - two->b1()) < 1e-10);
+  CHECK(std::fabs(one->b2() - two->b2()) < 1e-10);
+  CHECK(std::fabs(one->patch_l() - two->patch_l()) < 1e-10);
+  CHECK(std::fabs(one->patch_r() - two->patch_r()) < 1e-10);
+  const auto &s1 = one->last_segment();
+  const auto &a = two->segment(2), &b = two->segment(3);
+  CHECK(std::fabs(a.E1 + b.E1 - s1.E1) < 1e-9 * s1.E1);
+  CHECK(std::fabs(a.E2 + a.Ep + b.E2 + b.Ep - s1.E2 - s1.Ep) < 1e-9 * (s1.E2 + s1.Ep));
+  for (double x : {-0.99, -0.8, -0.7, -0.6, 0.0, 0.95}) {
+    CAPTURE(x);
+    CHECK(std::fabs(one->traction(x) - two->traction(x)) < 1e-9);
+    CHECK(std::fabs(one->slip(x) - two->slip(x)) < 1e-9);
+  }
+}
