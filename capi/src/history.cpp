@@ -590,23 +590,45 @@ int hs_history_vertex_count(const hs_history *h, size_t *n) {
   });
 }
 
+namespace {
+// hs_history_vertex as it was in 0.4.0 (before the patch fields): its size, with the tail padding of
+// the platform (on LLP64 the last long leaves 4 bytes after it, which offsetof(patch_dir) misses)
+struct history_vertex_v040 {
+  size_t struct_size;
+  double Q_over_fP, sigma_over_fp0;
+  double b1, b2;
+  int slip_dir1, slip_dir2;
+  double energy1, energy2;
+  int cycle;
+  long steps;
+  double step;
+  double error_estimate;
+  long interior_merges;
+};
+static_assert(offsetof(history_vertex_v040, interior_merges) == offsetof(hs_history_vertex, interior_merges),
+              "the 0.4.0 layout of hs_history_vertex");
+// hs_cycle_summary as it was in 0.4.0
+struct cycle_summary_v040 {
+  size_t struct_size;
+  int cycles, cycles_to_steady, shakedown;
+  double energy_per_cycle1, energy_per_cycle2;
+};
+static_assert(offsetof(cycle_summary_v040, energy_per_cycle2) == offsetof(hs_cycle_summary, energy_per_cycle2),
+              "the 0.4.0 layout of hs_cycle_summary");
+}  // namespace
+
 int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *user) {
   return guard([&] {
     require(h != nullptr && user != nullptr, core::status::null_pointer, "NULL");
     // (a caller's struct from before the patch fields gets the fields it has)
     const size_t size = user->struct_size;
-    require(size == sizeof *user || size == offsetof(hs_history_vertex, patch_dir), core::status::struct_size,
+    require(size == sizeof *user || size == sizeof(history_vertex_v040), core::status::struct_size,
             "vertex struct_size");
     require(i < h->vertex_count(), core::status::bad_option, "vertex index out of range");
     hs_history_vertex full{};
     full.struct_size = size;
-    hs_history_vertex *out = &full;
-    struct copy_out {
-      const hs_history_vertex &from;
-      hs_history_vertex *to;
-      size_t n;
-      ~copy_out() { std::memcpy(static_cast<void *>(to), &from, n); }
-    } copy{full, user, size};
+    // the fields into full, then the caller's part of it (on error the caller's struct is untouched)
+    [&](hs_history_vertex *out) {
     const auto &sc = h->scene;
     if (h->ray_mode) {  // superposition: physical units already, no steps
       const auto &v = h->ray_vertices[i];
@@ -664,6 +686,8 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *user
     out->interior_merges = long(v.interior_merges) +
                            long(std::count_if(h->static_patch_at.begin(), h->static_patch_at.end(),
                                               [&](size_t k) { return k <= i; }));
+    }(&full);
+    std::memcpy(static_cast<void *>(user), &full, std::min(size, sizeof full));
   });
 }
 
@@ -755,17 +779,11 @@ int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *user) {
   return guard([&] {
     require(h != nullptr && user != nullptr, core::status::null_pointer, "NULL");
     const size_t size = user->struct_size;
-    require(size == sizeof *user || size == offsetof(hs_cycle_summary, energy_per_cycle_patch),
-            core::status::struct_size, "summary struct_size");
+    require(size == sizeof *user || size == sizeof(cycle_summary_v040), core::status::struct_size,
+            "summary struct_size");
     hs_cycle_summary full{};
     full.struct_size = size;
     hs_cycle_summary *out = &full;
-    struct copy_out {
-      const hs_cycle_summary &from;
-      hs_cycle_summary *to;
-      size_t n;
-      ~copy_out() { std::memcpy(static_cast<void *>(to), &from, n); }
-    } copy{full, user, size};
     require(h->has_cycles, core::status::not_applicable, "no periodic loading in this history");
     const auto &sc = h->scene;
     const double escale = sc.f * sc.f * sc.p0 * sc.p0 * sc.a * sc.a / sc.Estar;
@@ -775,6 +793,7 @@ int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *user) {
     out->energy_per_cycle1 = escale * h->cycles.energy1;
     out->energy_per_cycle2 = escale * h->cycles.energy2;
     out->energy_per_cycle_patch = escale * h->cycles.energyp;
+    std::memcpy(static_cast<void *>(user), &full, std::min(size, sizeof full));
   });
 }
 

@@ -509,8 +509,8 @@ typedef struct hs_history_vertex {
                                (ends over a, energies over the largest; docs/history.md) */
   long interior_merges;     /* interior slip patches merged with an edge zone so far (an approximation;
                                0: none; docs/history.md) */
-  /* added after 0.4.0 (a caller's struct without them, struct_size = offsetof(hs_history_vertex, patch_dir),
-     gets the fields above): an interior slip zone open at the vertex, taken by the static solves'
+  /* added after 0.4.0 (a caller's struct from 0.4.0, struct_size = its sizeof, on LP64
+     offsetof(hs_history_vertex, patch_dir), gets the fields above): an interior slip zone open at the vertex, taken by the static solves'
      two-interval solve (docs/history.md, "Interior slip zones in hs_history") */
   int patch_dir;            /* its slip direction, +1 or -1; 0: none */
   double patch_l, patch_r;  /* its ends, units of length (0 where patch_dir is 0) */
@@ -533,8 +533,7 @@ typedef struct hs_cycle_summary {
   double energy_per_cycle1;    /* zone 1 over the last cycle */
   double energy_per_cycle2;
   double energy_per_cycle_patch; /* in interior slip zones over the last cycle (added after 0.4.0; a caller's
-                                    struct without it, struct_size = offsetof(..., energy_per_cycle_patch),
-                                    gets the fields above) */
+                                    struct from 0.4.0, struct_size = its sizeof, gets the fields above) */
 } hs_cycle_summary;
 HS_EXPORT int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out);
 /* Slip range max h - min h over the vertices of the last cycle, at n points. */

@@ -341,13 +341,16 @@ template <class T> class static_history {
     nx.interior_ = false;
     try {
       nx.advance(dq, ds);
-      nx.sp_ = 0;  // (a patch open at the start of the segment stuck: within the limit at its end)
+      // (a patch open at the start of the segment stuck: within the limit at its end)
+      nx.sp_ = 0;
+      nx.pl_ = nx.pr_ = 0;
     } catch (const error &e) {
       // the stick traction past the limit inside the stick zone: the segment with an interior
       // slip zone open at its end, by the two-interval static solve
       if (e.code() != status::not_applicable || !nx.interior_) throw;
+      const auto hint = nx.iends_;
       nx = *this;
-      if (!nx.patch_segment(dq, ds)) throw;
+      if (!nx.patch_segment(dq, ds, hint[0] >= 0 ? &hint : nullptr)) throw;
     }
     nx.q_ = qn;  // the vertex exactly (q_ + (qn - q_) may round away from qn)
     nx.s_ = sn;
@@ -1300,8 +1303,11 @@ template <class T> class static_history {
         patch = true;
       }
     }
-    // the friction limit inside the new stick zone (an interior slip zone otherwise)
+    // the friction limit inside the new stick zone (an interior slip zone otherwise; the ends and
+    // directions start the two-interval solve, patch_segment)
+    if (lam1 == 1) iends_ = {{fb1, fb2, T(d1), T(d2)}};
     check_limit(np);
+    iends_[0] = -1;
     if (layouts_.size() >= 4) layouts_.erase(layouts_.begin());
     layouts_.push_back(std::move(lay));
     std::vector<sh_jump<T>> jrec;
@@ -2015,7 +2021,11 @@ template <class T> class static_history {
   bool limit_ok_panels(const std::vector<sh_panel<T>> &np) const {
     using std::abs;
     const auto &R = *rule_;
-    for (const auto &P : np)
+    for (const auto &P : np) {
+      if (P.analytic) {  // (q = c p: an interior slip zone's panels, c = +-1)
+        if (abs(P.c) > 1 + T(1e-9)) return false;
+        continue;
+      }
       for (int j = 0; j < R.n(); ++j) {
         const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
         const T x = xl <= xr ? P.l + xl : P.r - xr;
@@ -2025,6 +2035,7 @@ template <class T> class static_history {
         // p are far below any slip zone the method could resolve)
         if (abs(P.v[j]) > p * (1 + T(1e-9)) + T(1e-10)) return false;
       }
+    }
     return true;
   }
   void check_limit(const std::vector<sh_panel<T>> &np) const {
@@ -2524,18 +2535,21 @@ template <class T> class static_history {
   //   the ends advanced (b_i at most the start's; an open patch of the same direction grew);
   //   the stick traction within the limit on both stick intervals;
   //   every zone slipped one way (sh_patch::one_way);
-  //   the same solve at a third and two thirds of the segment nested between start and end (a
-  //   patch not yet open there: the one-interval solve within the limit).
+  //   the same solve at 5/6, 4/6, ..., 1/6 of the segment, each from the later one, nested between
+  //   start and end (a patch not yet open there: the one-interval solve within the limit).
   // The patch is sought from several starts (the spurious zero-width root attracts Newton from
   // a patch inside the true one): an open patch grown a little; the region where the one-interval
   // state passes the limit, and that region widened; and where an edge zone reverses at the
   // edge, the inner part of the old zone going on slipping with a little of the stick zone beyond
   // its end (the reproducer of docs/history.md). False (this object unchanged in its state) if
   // no start gives a root that passes.
-  bool patch_segment(const T &dq, const T &ds) {
+  // (hint: the ends and directions (b1, b2, d1, d2) of the one-interval phase refused at its end,
+  // which start the solve where its directions are these)
+  bool patch_segment(const T &dq, const T &ds, const std::array<T, 4> *hint = nullptr) {
     using std::abs;
     using std::max;
     using std::min;
+    const static_history before(*this);  // (the one-interval phases of parts of the segment start here)
     const int rec = decide(dq, ds, 0);
     if (rec != 0) return false;
     int d1, d2;
@@ -2551,7 +2565,13 @@ template <class T> class static_history {
       if (b1_ >= 1) g1 = 1 - max(T(1e-6), abs(hist_rate_end(1, dq, ds, e)) / 2);
       if (b2_ >= 1) g2 = 1 - max(T(1e-6), abs(hist_rate_end(2, dq, ds, e)) / 2);
       T h1 = g1, h2 = g2;
-      if (solve(h1, h2, d1, d2, dq, ds) && h1 <= b1_ + tol && h2 <= b2_ + tol && h1 + h2 > 0) g1 = h1, g2 = h2;
+      if (hint && int((*hint)[2]) == d1 && int((*hint)[3]) == d2 && (*hint)[0] + (*hint)[1] > 0) {
+        g1 = (*hint)[0];
+        g2 = (*hint)[1];
+      } else if (solve(h1, h2, d1, d2, dq, ds) && h1 <= b1_ + tol && h2 <= b2_ + tol && h1 + h2 > 0) {
+        g1 = h1;
+        g2 = h2;
+      }
     }
     struct cand {
       int dp;
@@ -2623,7 +2643,7 @@ template <class T> class static_history {
         }
       if (!limit_ok_panels(np)) continue;
       if (!P->one_way(1) || !P->one_way(2) || !P->one_way(3)) continue;
-      if (!nested_fractions(st, dq, ds, d1, d2, c.dp, e, tol)) continue;
+      if (!nested_fractions(before, st, dq, ds, d1, d2, c.dp, e, tol)) continue;
       // take it
       sh_segment<T> sg;
       sg.q0 = q_;
@@ -2663,14 +2683,18 @@ template <class T> class static_history {
     }
     return false;
   }
-  // the premise along the segment: at two thirds and a third of it the state is the same solve
-  // (from the later one), with the ends between the start's and the later one's and the patch
-  // inside the later one (or not yet open: the one-interval state within the limit)
-  bool nested_fractions(const std::shared_ptr<const sh_start<T>> &st, const T &dq, const T &ds, int d1, int d2,
-                        int dp, const sh_patch_ends<T> &e, const T &tol) const {
+  // the premise along the segment: at 5/6, 4/6, ..., 1/6 of it the state is the same solve (from
+  // the later one: steps of a sixth, from which Newton stays on the branch; thirds lost it on Hertz
+  // walk 41, vertex 9), with the ends between the start's and the later one's and the patch inside
+  // the later one (or not yet open: the one-interval state within the limit)
+  // (the state before the segment, before: where the patch is not open yet, the one-interval phases
+  // of the part of the segment from it, with their own crossings and checks)
+  bool nested_fractions(const static_history &before, const std::shared_ptr<const sh_start<T>> &st, const T &dq,
+                        const T &ds, int d1, int d2, int dp, const sh_patch_ends<T> &e, const T &tol) const {
     sh_patch_ends<T> next = e;
     bool open = true;
-    for (const T mu : {T(2) / 3, T(1) / 3}) {
+    for (int k = 5; k >= 1; --k) {
+      const T mu = T(k) / 6;
       if (open) {
         sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, dp, rule_->n());
         if (Pm.solve(next)) {
@@ -2682,11 +2706,15 @@ template <class T> class static_history {
         }
         open = false;
       }
-      T h1 = next.b1, h2 = next.b2;
-      if (!solve(h1, h2, d1, d2, mu * dq, mu * ds)) return false;
+      static_history part(before);
+      try {
+        part.advance(mu * dq, mu * ds);
+      } catch (const error &) {
+        return false;
+      }
+      const T h1 = part.b1_, h2 = part.b2_;
+      if (part.s1_ != d1 || part.s2_ != d2) return false;
       if (!(h1 <= b1_ + tol && h2 <= b2_ + tol && h1 >= next.b1 - tol && h2 >= next.b2 - tol)) return false;
-      panel_layout lay;
-      if (!limit_ok_panels(new_panels(h1, h2, d1, d2, nullptr, lay))) return false;
       next.b1 = h1;
       next.b2 = h2;
     }
@@ -2771,6 +2799,8 @@ template <class T> class static_history {
   int sp_ = 0;
   std::size_t npatch_ = 0;
   mutable bool interior_ = false;  // the last refusal was check_limit's (an interior slip zone)
+  // the ends and directions of an advancing phase refused by check_limit at its end (b1 < 0: none)
+  std::array<T, 4> iends_{{T(-1), T(0), T(0), T(0)}};
 };
 
 }}  // namespace hs::core
