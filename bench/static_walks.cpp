@@ -10,6 +10,7 @@
 //   /tmp/static_walks bem 0 400 1 20   # Hertz walks 1..20 against the BEM at N = 400 (~2 min)
 //   /tmp/static_walks bem 1 400 1 20
 //   /tmp/static_walks time 0 60        # CPU time of the walks taken whole, at rtol 1e-8 and full accuracy
+//   /tmp/static_walks patchtime 0 60   # CPU per segment: those that end with an interior slip zone, others
 //   /tmp/static_walks count 0 60 1e-8  # the same count at an accuracy asked (static_history_accuracy::for_rtol)
 //   /tmp/static_walks count 0 60 1e-8 retry   # ... and a refused segment solved again at full accuracy, as
 //                                             # hs_history does (capi/src/history.cpp, add_static)
@@ -45,6 +46,33 @@ int main(int argc, char **argv) {
   std::shared_ptr<const pressure_model<double>> pm;
   if (g == 0) pm = std::make_shared<hertz_pressure<double>>();
   else pm = std::make_shared<flat_rounded_pressure<double>>(0.5);
+  if (std::strcmp(argv[1], "patchtime") == 0) {
+    // CPU per segment at rtol 1e-8, those that end with an interior slip zone open (Ep > 0) and
+    // the others, as far as the static solves take each walk
+    const unsigned n = unsigned(std::atoi(argv[3]));
+    std::vector<double> tp, tn;
+    for (unsigned seed = 1; seed <= n; ++seed) {
+      const path_t w = random_path(100, seed);
+      static_history<double> h(pm, static_history_accuracy<double>::for_rtol(1e-8));
+      for (const auto &p : w) {
+        const std::clock_t c0 = std::clock();
+        try {
+          h.add_vertex(p.first, p.second);
+        } catch (const error &) {
+          break;
+        }
+        const double t = double(std::clock() - c0) / CLOCKS_PER_SEC * 1e3;
+        (h.last_segment().Ep > 0 ? tp : tn).push_back(t);
+      }
+    }
+    std::sort(tp.begin(), tp.end());
+    std::sort(tn.begin(), tn.end());
+    auto at = [](const std::vector<double> &v, double f) { return v.empty() ? 0.0 : v[size_t(f * double(v.size() - 1))]; };
+    std::printf("%s: %zu segments with a patch: median %.1f ms, 90th percentile %.1f, largest %.1f; %zu others: "
+                "median %.2f ms, 90th percentile %.2f\n", g == 0 ? "Hertz" : "flat punch", tp.size(), at(tp, 0.5),
+                at(tp, 0.9), at(tp, 1.0), tn.size(), at(tn, 0.5), at(tn, 0.9));
+    return 0;
+  }
   if (timing) {
     const unsigned n = unsigned(std::atoi(argv[3]));
     for (unsigned seed = 1; seed <= n; ++seed) {

@@ -2643,7 +2643,7 @@ template <class T> class static_history {
         }
       if (!limit_ok_panels(np)) continue;
       if (!P->one_way(1) || !P->one_way(2) || !P->one_way(3)) continue;
-      if (!nested_fractions(before, st, dq, ds, d1, d2, c.dp, e, tol)) continue;
+      if (!nested_fractions(before, st, dq, ds, d1, d2, c.dp, e, P->jacobian(), tol)) continue;
       // take it
       sh_segment<T> sg;
       sg.q0 = q_;
@@ -2690,15 +2690,18 @@ template <class T> class static_history {
   // (the state before the segment, before: where the patch is not open yet, the one-interval phases
   // of the part of the segment from it, with their own crossings and checks)
   bool nested_fractions(const static_history &before, const std::shared_ptr<const sh_start<T>> &st, const T &dq,
-                        const T &ds, int d1, int d2, int dp, const sh_patch_ends<T> &e, const T &tol) const {
+                        const T &ds, int d1, int d2, int dp, const sh_patch_ends<T> &e,
+                        const Eigen::Matrix<T, 4, 4> &Jend, const T &tol) const {
     sh_patch_ends<T> next = e;
     bool open = true;
+    Eigen::Matrix<T, 4, 4> J = Jend;  // (the Jacobian of the later solve starts the next one)
     for (int k = 5; k >= 1; --k) {
       const T mu = T(k) / 6;
       if (open) {
         sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, dp, rule_->n());
-        if (Pm.solve(next)) {
+        if (Pm.solve(next, 60, &J)) {
           const auto &m = Pm.solved();
+          J = Pm.jacobian();
           if (!(m.b1 <= b1_ + tol && m.b2 <= b2_ + tol && m.b1 >= next.b1 - tol && m.b2 >= next.b2 - tol &&
                 m.pl >= next.pl - tol && m.pr <= next.pr + tol)) return false;
           next = m;

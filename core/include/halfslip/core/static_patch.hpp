@@ -94,7 +94,9 @@ template <class T> class sh_patch {
   // Newton from e on the four conditions (central differences, a line search keeping the ends in
   // order); true with e_ = e the root, false if it does not settle, leaves the order of the ends,
   // or collapses the patch below 1e-6 of the stick zone (the spurious root)
-  bool solve(ends e, int max_it = 60) {
+  // (J0: a Jacobian to start from, e.g. that of the same solve at a nearby load: kept while the
+  // residual falls fourfold a step, else made again by differences)
+  bool solve(ends e, int max_it = 60, const Eigen::Matrix<T, 4, 4> *J0 = nullptr) {
     if (frozen_) throw error(status::internal, "sh_patch: solved already");
     using boost::math::isfinite;
     using std::abs;
@@ -107,65 +109,86 @@ template <class T> class sh_patch {
       for (const T &v : r) s += v * v;
       return sqrt(s);
     };
+    Eigen::Matrix<T, 4, 4> J;
+    bool refresh = J0 == nullptr;
+    if (J0) J = *J0;
+    if (!ordered(e)) return false;
+    std::array<T, 4> r = residual(e);
     for (int it = 0; it < max_it; ++it) {
-      if (!ordered(e)) return false;
-      const auto r = residual(e);
-      if (!isfinite(norm(r))) return false;
-      Eigen::Matrix<T, 4, 1> F;
-      Eigen::Matrix<T, 4, 4> J;
-      for (int i = 0; i < 4; ++i) F(i) = r[i];
-      for (int j = 0; j < 4; ++j) {
-        // (the residuals have a kink where an end crosses a memory point of the start state: the
-        // difference stays on the end's side of it, within a quarter of its distance; a patch end
-        // 1.3e-5 from one converged linearly with h = eps^(1/3), Hertz walk 41, vertex 9)
-        const T x = j == 1 ? -e.b2 : e.at(j);
-        T hj = h;
-        for (const T &c : st_->cusps)
-          if (c != x) hj = std::min(hj, abs(x - c) / 4);
-        hj = std::max(hj, T(1e-2) * sqrt(eps<T>()));
-        ends ep = e, em = e;
-        ep.at(j) += hj;
-        em.at(j) -= hj;
-        const auto rp = residual(ep), rm = residual(em);
-        for (int i = 0; i < 4; ++i) J(i, j) = (rp[i] - rm[i]) / (2 * hj);
+      const T n0 = norm(r);
+      if (!isfinite(n0)) return false;
+      if (first < 0) first = n0;
+      const bool fresh = refresh;
+      if (fresh) {
+        for (int j = 0; j < 4; ++j) {
+          // (the residuals have a kink where an end crosses a memory point of the start state: the
+          // difference stays on the end's side of it, within a quarter of its distance; a patch end
+          // 1.3e-5 from one converged linearly with h = eps^(1/3), Hertz walk 41, vertex 9)
+          const T x = j == 1 ? -e.b2 : e.at(j);
+          T hj = h;
+          for (const T &c : st_->cusps)
+            if (c != x) hj = std::min(hj, abs(x - c) / 4);
+          hj = std::max(hj, T(1e-2) * sqrt(eps<T>()));
+          ends ep = e, em = e;
+          ep.at(j) += hj;
+          em.at(j) -= hj;
+          const auto rp = residual(ep), rm = residual(em);
+          for (int i = 0; i < 4; ++i) J(i, j) = (rp[i] - rm[i]) / (2 * hj);
+        }
       }
+      Eigen::Matrix<T, 4, 1> F;
+      for (int i = 0; i < 4; ++i) F(i) = r[i];
       const Eigen::Matrix<T, 4, 1> dx = J.fullPivLu().solve(F);
       bool fin = true;
       for (int j = 0; j < 4; ++j) fin = fin && isfinite(dx(j));
-      if (!fin) return false;
-      const T n0 = norm(r);
-      if (first < 0) first = n0;
-      T lam = 1;
+      if (!fin) {
+        if (fresh) return false;
+        refresh = true;
+        continue;
+      }
+      T lam = 1, nt = 0;
       bool moved = false;
       for (int k = 0; k < 40; ++k, lam /= 2) {
         ends t = e;
         for (int j = 0; j < 4; ++j) t.at(j) -= lam * dx(j);
         if (!ordered(t)) continue;
-        const T nt = norm(residual(t));
-        if (nt < n0 || lam < T(1) / 1024) {
+        const auto rt = residual(t);
+        nt = norm(rt);
+        if (nt < n0 || (fresh && lam < T(1) / 1024)) {
           e = t;
+          r = rt;
           moved = true;
           break;
         }
+        if (!fresh && lam < T(1) / 16) break;  // (an old Jacobian: make a new one first)
       }
-      if (!moved) return false;
+      if (!moved) {
+        if (fresh) return false;
+        refresh = true;
+        continue;
+      }
       T stp = 0;
       for (int j = 0; j < 4; ++j) stp = std::max(stp, abs(lam * dx(j)));
-      // converged: a step at rounding, or steps that stopped halving below the quadrature's floor
-      if (stp < T(512) * eps<T>() || (stp < T(1e-2) * sqrt(eps<T>()) && last >= 0 && stp > last / 2)) {
+      // converged: a step at rounding, or (with a new Jacobian) steps that stopped halving below the
+      // quadrature's floor
+      if (stp < T(512) * eps<T>() || (fresh && stp < T(1e-2) * sqrt(eps<T>()) && last >= 0 && stp > last / 2)) {
         if (!(e.pr - e.pl >= T(1e-6) * (e.b1 + e.b2))) return false;  // the spurious zero-width root
         // (small steps are not a root: slow linear convergence with the line search's last resort
         // stopped at residuals of 1e-5 on a 2.6e-4-wide patch, a review's random walk)
-        if (!(norm(residual(e)) <= T(1e6) * eps<T>() * std::max(T(1), first))) return false;
+        if (!(norm(r) <= T(1e6) * eps<T>() * std::max(T(1), first))) return false;
         e_ = e;
+        J_ = J;
         set_ends(e_);
         frozen_ = true;
         return true;
       }
+      refresh = !(nt <= n0 / 4);
       last = stp;
     }
     return false;
   }
+  // the last Jacobian of a solve that succeeded (to start a solve at a nearby load)
+  const Eigen::Matrix<T, 4, 4> &jacobian() const { return J_; }
 
   // ---- the state at the solved ends -------------------------------------------------------------
   // (the queries below need solve() to have succeeded)
@@ -424,6 +447,7 @@ template <class T> class sh_patch {
   std::array<int, 3> d_;
   std::shared_ptr<const gl_rule<T>> rule_;
   ends e_{};
+  Eigen::Matrix<T, 4, 4> J_ = Eigen::Matrix<T, 4, 4>::Zero();
   mutable ends ce_{};
   mutable bool have_ = false;
   bool frozen_ = false;  // solved: the ends fixed, the node sets read-only
