@@ -2659,14 +2659,7 @@ template <class T> class static_history {
       sg.E1 = P->energy(1);
       sg.E2 = P->energy(2);
       sg.Ep = P->energy(3);
-      sh_jump<T> J;
-      J.start = st;
-      J.b1 = e.b1;
-      J.b2 = e.b2;
-      J.d1 = d1;
-      J.d2 = d2;
-      J.patch = P;
-      sg.jumps.push_back(std::move(J));
+      sg.jumps.push_back(sh_jump<T>{st, e.b1, e.b2, d1, d2, P});
       panels_ = std::move(np);
       b1_ = e.b1;
       b2_ = e.b2;
