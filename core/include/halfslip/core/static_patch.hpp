@@ -259,10 +259,7 @@ template <class T> class sh_patch {
   bool one_way(int z, int sub = 2) const {
     using std::abs;
     const T lo = z == 1 ? e_.b1 : (z == 2 ? T(-1) : e_.pl), hi = z == 1 ? T(1) : (z == 2 ? -e_.b2 : e_.pr);
-    auto c = st_->cuts(lo, hi, nullptr);
-    std::vector<T> f{c.front()};
-    for (size_t k = 0; k + 1 < c.size(); ++k)
-      for (int m = 1; m <= sub; ++m) f.push_back(m == sub ? c[k + 1] : c[k] + (c[k + 1] - c[k]) * T(m) / T(sub));
+    const auto f = sh_start<T>::subdivided(st_->cuts(lo, hi, nullptr), sub);
     const size_t n = f.size() - 1;
     std::vector<T> h;
     T run = 0, big = 0;
@@ -287,16 +284,7 @@ template <class T> class sh_patch {
   T energy(int z) const {
     const T lo = z == 1 ? e_.b1 : (z == 2 ? T(-1) : e_.pl), hi = z == 1 ? T(1) : (z == 2 ? -e_.b2 : e_.pr);
     if (!(hi > lo)) return T(0);
-    const auto &pm = *st_->pm;
-    auto pbar = [&](const T &xi) {
-      const T a = z == 2 ? T(-1) : xi, b = z == 2 ? xi : hi;
-      std::vector<T> pcs{a};
-      for (const auto &bp : pm.breakpoints())
-        if (bp.x > a && bp.x < b) pcs.push_back(bp.x);
-      pcs.push_back(b);
-      std::sort(pcs.begin(), pcs.end());
-      return sh_start<T>::theta_int(pcs, [&](const T &x) { return pm.p(x); });
-    };
+    auto pbar = [&](const T &xi) { return z == 2 ? st_->p_integral(T(-1), xi) : st_->p_integral(xi, hi); };
     const T s = sh_start<T>::theta_int(st_->cuts(lo, hi, nullptr), [&](const T &xi) { return pbar(xi) * dhp(xi); });
     return T(d_[z - 1]) * (z == 2 ? -s : s);
   }

@@ -299,6 +299,22 @@ template <class T> struct sh_start {
     }
     return s;
   }
+  // the cuts c with each piece between them split into sub equal parts
+  static std::vector<T> subdivided(const std::vector<T> &c, int sub) {
+    std::vector<T> f{c.front()};
+    for (size_t k = 0; k + 1 < c.size(); ++k)
+      for (int m = 1; m <= sub; ++m) f.push_back(m == sub ? c[k + 1] : c[k] + (c[k + 1] - c[k]) * T(m) / T(sub));
+    return f;
+  }
+  // int_a^b p, cut at the pressure's breakpoints
+  T p_integral(const T &a, const T &b) const {
+    std::vector<T> pcs{a};
+    for (const auto &bp : pm->breakpoints())
+      if (bp.x > a && bp.x < b) pcs.push_back(bp.x);
+    pcs.push_back(b);
+    std::sort(pcs.begin(), pcs.end());
+    return theta_int(pcs, [&](const T &x) { return pm->p(x); });
+  }
   // dh(x): the integral of dh' from the stick end of x's zone (0 on the stick zone)
   T dh(const T &x, const T &e1, const T &e2, int d1, int d2) const {
     if (x <= e1 && x >= -e2) return T(0);
@@ -317,12 +333,7 @@ template <class T> struct sh_start {
     const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
     if (!(hi > lo)) return true;
     auto c = cuts(lo, hi, nullptr);
-    if (sub > 1) {
-      std::vector<T> f{c.front()};
-      for (size_t k = 0; k + 1 < c.size(); ++k)
-        for (int m = 1; m <= sub; ++m) f.push_back(m == sub ? c[k + 1] : c[k] + (c[k + 1] - c[k]) * T(m) / T(sub));
-      c = std::move(f);
-    }
+    if (sub > 1) c = subdivided(c, sub);
     const size_t n = c.size() - 1;
     std::vector<T> h(n);  // dh at the outer end of each piece, counted from the stick end
     T run = 0, big = 0;
@@ -352,15 +363,8 @@ template <class T> struct sh_start {
     if (d == 0) return T(0);
     const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
     if (!(hi > lo)) return T(0);
-    auto pbar = [&](const T &xi) {  // int from xi to the edge of p, cut at the pressure's breakpoints
-      const T a = i == 1 ? xi : T(-1), b = i == 1 ? T(1) : xi;
-      std::vector<T> pcs{a};
-      for (const auto &bp : pm->breakpoints())
-        if (bp.x > a && bp.x < b) pcs.push_back(bp.x);
-      pcs.push_back(b);
-      std::sort(pcs.begin(), pcs.end());
-      return theta_int(pcs, [&](const T &x) { return pm->p(x); });
-    };
+    // (int from xi to the edge of p)
+    auto pbar = [&](const T &xi) { return i == 1 ? p_integral(xi, T(1)) : p_integral(T(-1), xi); };
     // (cusps holds the pressure's breakpoints)
     const auto c = cuts(lo, hi, nullptr);
     const std::vector<T> *kept = mm && mm->nodes[i - 1].size() == (c.size() - 1) * gauss_legendre<T>(24)->x.size()
