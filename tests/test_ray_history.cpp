@@ -761,9 +761,10 @@ TEST_CASE("a segment refused at the accuracy asked is solved at full accuracy, n
 }
 
 // hs_history_last_error: the library's reason for a failed call. bench_history's periodic loadings
-// stop for different reasons that share HS_ERR_NOT_APPLICABLE (case 12: part of zone 2 next to the
+// stop for different reasons that share HS_ERR_NOT_APPLICABLE (case 133: part of zone 2 next to the
 // edge would slip back; case 16: an interior slip zone opens), and the CLI guessed "interior" for
-// both (41 of the 69 Hertz stops were slip back).
+// both (41 of the 69 Hertz stops were slip back in session 14; since session 17 the static solves
+// take most of them, case 12 of this test until then among them).
 TEST_CASE("hs_history_last_error names the reason of the last failed call") {
   char why[512];
   auto reason = [&](const hist_handle &hh) {
@@ -773,7 +774,7 @@ TEST_CASE("hs_history_last_error names the reason of the last failed call") {
   hist_handle a;
   new_history(a, 0);
   CHECK(reason(a).empty());
-  CHECK(hs_history_add_cycles(a.h, 0, 0.1, 0.5, 0.3, 90, 3) == HS_ERR_NOT_APPLICABLE);
+  CHECK(hs_history_add_cycles(a.h, 0, 0.6, 1.5, 1.0, 90, 3) == HS_ERR_NOT_APPLICABLE);
   CHECK(reason(a).find("slip back") != std::string::npos);
   CHECK(reason(a).find("interior") == std::string::npos);
   hist_handle b;

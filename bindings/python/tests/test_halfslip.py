@@ -831,10 +831,10 @@ class TestHistory(unittest.TestCase):
         self.assertIn("|Q| >= fP", str(e))
         self.assertEqual(h.vertex_count, 2)   # the vertices before the failing one are kept
         self.assertIn("gross sliding", e.detail)  # the library's reason (hs_history_last_error)
-        # a zone structure the march does not model, named (bench_history's periodic case 12: part
+        # a zone structure the march does not model, named (bench_history's periodic case 133: part
         # of zone 2 next to the edge would slip back; not an interior slip zone)
         with halfslip.History() as hb:
-            e = status(hb.add_cycles, 0.0, 0.1, 0.5, 0.3, 90.0, 3)
+            e = status(hb.add_cycles, 0.0, 0.6, 1.5, 1.0, 90.0, 3)
             self.assertEqual(e.status, halfslip.ERR_NOT_APPLICABLE)
             self.assertIn("slip back", e.detail)
             self.assertNotIn("interior", e.detail)

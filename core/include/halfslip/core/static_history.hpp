@@ -339,6 +339,7 @@ template <class T> class static_history {
     // work on a copy: the state changes only if the segment succeeds
     static_history nx(*this);
     nx.interior_ = false;
+    nx.backslip_ = 0;
     try {
       nx.advance(dq, ds);
       // (a patch open at the start of the segment stuck: within the limit at its end)
@@ -347,10 +348,13 @@ template <class T> class static_history {
     } catch (const error &e) {
       // the stick traction past the limit inside the stick zone: the segment with an interior
       // slip zone open at its end, by the two-interval static solve
-      if (e.code() != status::not_applicable || !nx.interior_) throw;
+      // (or part of an edge zone would slip back next to the contact edge: the same solve, with
+      // that zone's inner part going on slipping as the patch)
+      if (e.code() != status::not_applicable || (!nx.interior_ && nx.backslip_ == 0)) throw;
       const auto hint = nx.iends_;
+      const int back = nx.interior_ ? 0 : nx.backslip_;
       nx = *this;
-      if (!nx.patch_segment(dq, ds, hint[0] >= 0 ? &hint : nullptr)) throw;
+      if (!nx.patch_segment(dq, ds, hint[0] >= 0 && back == 0 ? &hint : nullptr, back)) throw;
     }
     nx.q_ = qn;  // the vertex exactly (q_ + (qn - q_) may round away from qn)
     nx.s_ = sn;
@@ -2041,6 +2045,7 @@ template <class T> class static_history {
   void check_limit(const std::vector<sh_panel<T>> &np) const {
     if (!limit_ok_panels(np)) {
       interior_ = true;  // (add_vertex then tries the segment with a patch)
+      backslip_ = 0;
       throw error(status::not_applicable,
                   "static_history: the stick traction passes the friction limit inside the stick zone (an "
                   "interior slip zone)");
@@ -2154,11 +2159,16 @@ template <class T> class static_history {
   void check_slip_sign(int d1, int d2, const T &A, const T &B, const T &c, const T &e) const {
     using std::abs;
     const T tol = T(1e3) * eps<T>() * (abs(A) + abs(B));
-    if ((d1 != 0 && c + e < 1 && T(d1) * hist_hdot(+1, A, B, c, e, T(1)) < -tol) ||
-        (d2 != 0 && c - e > -1 && T(d2) * hist_hdot(-1, A, B, c, e, T(-1)) < -tol))
+    const bool b1 = d1 != 0 && c + e < 1 && T(d1) * hist_hdot(+1, A, B, c, e, T(1)) < -tol;
+    const bool b2 = d2 != 0 && c - e > -1 && T(d2) * hist_hdot(-1, A, B, c, e, T(-1)) < -tol;
+    if (b1 || b2) {
+      // (add_vertex then tries the segment with the zone's inner part as a patch)
+      backslip_ = b1 ? 1 : 2;
+      interior_ = false;
       throw error(status::not_applicable,
                   "static_history: a slip zone would slip back next to the contact edge (a zone of the other "
                   "direction would open there)");
+    }
   }
 
   // ---- a receding end ------------------------------------------------------------
@@ -2545,7 +2555,7 @@ template <class T> class static_history {
   // no start gives a root that passes.
   // (hint: the ends and directions (b1, b2, d1, d2) of the one-interval phase refused at its end,
   // which start the solve where its directions are these)
-  bool patch_segment(const T &dq, const T &ds, const std::array<T, 4> *hint = nullptr) {
+  bool patch_segment(const T &dq, const T &ds, const std::array<T, 4> *hint = nullptr, int back = 0) {
     using std::abs;
     using std::max;
     using std::min;
@@ -2554,6 +2564,37 @@ template <class T> class static_history {
     if (rec != 0) return false;
     int d1, d2;
     zone_dirs(dq, ds, {{0, 0}}, d1, d2);
+    // Slip back next to the contact edge in zone `back` (check_slip_sign): the zone's slip rate
+    // changes sign at xb along it, and the part beyond would slip against the zone's traction. The
+    // state tried: that part sticks as a band between the zone's inner part, which goes on slipping
+    // (the patch, direction so), and a zone of the other direction at the edge (docs/history.md,
+    // "Slip back at the contact edge"). As a two-interval solve from the start state with the zone
+    // stuck whole (the same traction, q = so p, with a memory point at its old end ob), whose edge
+    // zone then reverses; the band must have stuck at the segment's start, which the checks below
+    // test (nested at every fraction: the band only shrinks).
+    int so = 0;
+    T ob = 0, xb = 0;
+    if (back != 0) {
+      so = back == 1 ? s1_ : s2_;
+      const T bi = back == 1 ? b1_ : b2_;
+      if (sp_ != 0 || so == 0 || (back == 1 ? d1 : d2) != so || !(bi < 1)) return false;
+      const int z = back == 1 ? 1 : -1;
+      const T A = dq / 2, B = ds / 4, c = (b1_ - b2_) / 2, e = (b1_ + b2_) / 2;
+      auto at = [&](const T &w) { return T(z) * (bi + w); };
+      auto rate = [&](const T &w) { return T(so) * hist_hdot(z, A, B, c, e, at(w)); };
+      const T Lz = 1 - bi;
+      if (!(rate(Lz) < 0)) return false;
+      T lo = 0, hi = Lz;
+      for (int it = 0; it < 200 && hi - lo > 4 * eps<T>() * (1 + hi); ++it) {
+        const T m = lo + (hi - lo) / 2;
+        if (rate(m) > 0) lo = m;
+        else hi = m;
+      }
+      ob = at(T(0));
+      xb = at(lo);
+      stick_whole(back);
+      (back == 1 ? d1 : d2) = -so;
+    }
     auto st = std::make_shared<const sh_start<T>>(start_state());
     const T W = b1_ + b2_;
     if (!(W > 0)) return false;
@@ -2576,12 +2617,29 @@ template <class T> class static_history {
     struct cand {
       int dp;
       T pl, pr;
+      T bb{-1};  // the ends' start at zone `back`'s edge (bb < 0: the one-interval state's)
     };
     std::vector<cand> cands;
+    if (back != 0) {
+      // the inner part of the zone, a little into the old stick zone, to xb or short of it; the
+      // zone of the other direction at the edge small against the band
+      const T ws = W / 100;
+      for (const T f : {T(1), T(0.8), T(0.5)})
+        for (const T g : {T(1e-2), T(1e-3), T(1e-4)}) {
+          const T xe = ob + f * (xb - ob), bb = 1 - g * abs(xb - T(back == 1 ? 1 : -1));
+          if (back == 1) cands.push_back({so, ob - ws, xe, bb});
+          else cands.push_back({so, xe, ob + ws, bb});
+        }
+    }
     if (sp_ != 0) {
       const T w = pr_ - pl_;
       cands.push_back({sp_, pl_ - w / 64, pr_ + w / 64});
       cands.push_back({sp_, pl_ - w / 4, pr_ + w / 4});
+      // (or part of it sticks at once, at the load's turn: one end of it further in)
+      for (const T f : {T(0.25), T(0.5), T(0.75)}) {
+        cands.push_back({sp_, pl_ + f * w, pr_ + w / 64});
+        cands.push_back({sp_, pl_ - w / 64, pr_ - f * w});
+      }
     }
     {  // where the one-interval state passes the limit
       panel_layout lay;
@@ -2624,6 +2682,7 @@ template <class T> class static_history {
     for (const auto &c : cands) {
       if (!(c.pr > c.pl)) continue;
       sh_patch_ends<T> e0{g1, g2, c.pl, c.pr};
+      if (c.bb > 0) (back == 1 ? e0.b1 : e0.b2) = c.bb;
       // (the edge ends kept outside the patch)
       if (!(e0.pl > -e0.b2)) e0.b2 = min(T(1), -e0.pl + (1 + e0.pl) / 2);
       if (!(e0.pr < e0.b1)) e0.b1 = min(T(1), e0.pr + (1 - e0.pr) / 2);
@@ -2632,7 +2691,6 @@ template <class T> class static_history {
       if (!P->solve(e0)) continue;
       const auto e = P->solved();
       if (!(e.b1 <= b1_ + tol && e.b2 <= b2_ + tol)) continue;
-      if (sp_ == c.dp && !(e.pl <= pl_ + tol && e.pr >= pr_ - tol)) continue;
       const std::array<T, 2> pz{{e.pl, e.pr}};
       auto np = build_panels(e.b1, e.b2, [&](const T &x) { return P->traction(x); }, nullptr, nullptr, &pz);
       for (auto &Q : np)
@@ -2652,8 +2710,8 @@ template <class T> class static_history {
       sg.ds = ds;
       sg.d1 = d1;
       sg.d2 = d2;
-      sg.b1s = b1_;
-      sg.b2s = b2_;
+      sg.b1s = before.b1_;
+      sg.b2s = before.b2_;
       sg.b1e = e.b1;
       sg.b2e = e.b2;
       sg.E1 = P->energy(1);
@@ -2795,6 +2853,7 @@ template <class T> class static_history {
   int sp_ = 0;
   std::size_t npatch_ = 0;
   mutable bool interior_ = false;  // the last refusal was check_limit's (an interior slip zone)
+  mutable int backslip_ = 0;  // the last refusal was check_slip_sign's, in this zone (0: not)
   // the ends and directions of an advancing phase refused by check_limit at its end (b1 < 0: none)
   std::array<T, 4> iends_{{T(-1), T(0), T(0), T(0)}};
 };
