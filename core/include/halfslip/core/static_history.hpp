@@ -350,11 +350,22 @@ template <class T> class static_history {
       // slip zone open at its end, by the two-interval static solve
       // (or part of an edge zone would slip back next to the contact edge: the same solve, with
       // that zone's inner part going on slipping as the patch)
-      if (e.code() != status::not_applicable || (!nx.interior_ && nx.backslip_ == 0)) throw;
+      // (or an open patch merges with the edge zone of its direction at the load's turn: the
+      // one-interval state of the whole segment, merge_segment)
+      if (e.code() != status::not_applicable) throw;
       const auto hint = nx.iends_;
-      const int back = nx.interior_ ? 0 : nx.backslip_;
-      nx = *this;
-      if (!nx.patch_segment(dq, ds, hint[0] >= 0 && back == 0 ? &hint : nullptr, back)) throw;
+      const bool interior = nx.interior_;
+      const int back = interior ? 0 : nx.backslip_;
+      bool ok = false;
+      if (interior || back != 0) {
+        nx = *this;
+        ok = nx.patch_segment(dq, ds, hint[0] >= 0 && back == 0 ? &hint : nullptr, back);
+      }
+      if (!ok && sp_ != 0) {
+        nx = *this;
+        ok = nx.merge_segment(dq, ds);
+      }
+      if (!ok) throw;
     }
     nx.q_ = qn;  // the vertex exactly (q_ + (qn - q_) may round away from qn)
     nx.s_ = sn;
@@ -2734,6 +2745,99 @@ template <class T> class static_history {
     }
     return false;
   }
+  // An open patch that merges at once with the edge zone of its direction on its side, at a turn
+  // of the load (bench/periodic_survey.py case 21, vertex 53: the patch (0.600, 0.910) and zone 1
+  // (0.918, 1) are one zone (0.599, 1) from the BEM's first quarter of the chord on). The one-
+  // interval phases stop at the fold over the patch (the path of the ends does not come back to the
+  // load). If every point slipped one way the end state is the one-interval static state of the
+  // whole segment from its start (the argument of merged_state); merged_state's scan inwards from
+  // the start's ends finds it, with its checks (the limit at every panel node, one-way slip); and
+  // at 5/6, ..., 1/6 of the segment the same state (ends between the start's and the later one's,
+  // within the limit, the patch merged) is checked, as for patch_segment.
+  bool merge_segment(const T &dq, const T &ds) {
+    using std::abs;
+    if (sp_ == 0) return false;
+    const T ob1 = b1_, ob2 = b2_, pl = pl_, pr = pr_;
+    if (decide(dq, ds, 0) != 0) return false;
+    int d1, d2;
+    zone_dirs(dq, ds, {{0, 0}}, d1, d2);
+    const bool right = pl + pr > b1_ - b2_;
+    if (sp_ != (right ? d1 : d2)) return false;
+    T b1 = b1_, b2 = b2_;
+    std::vector<sh_panel<T>> np;
+    panel_layout lay;
+    if (!merged_state(d1, d2, dq, ds, b1, b2, np, lay)) return false;
+    const T W = b1_ + b2_, tol = T(1e-9) * W + mono_tol_;
+    auto merged = [&](const T &h1, const T &h2) { return right ? h1 <= pl + tol : -h2 >= pr - tol; };
+    if (!merged(b1, b2)) return false;
+    // (before the merge, if it happens within the segment, the patch grows: the two-interval state
+    // from the start, nested as in nested_fractions; bench/periodic_survey.py case 25, vertex 60)
+    auto st = std::make_shared<const sh_start<T>>(start_state());
+    T n1 = b1, n2 = b2;
+    bool open = false;
+    sh_patch_ends<T> nx{};
+    Eigen::Matrix<T, 4, 4> J;
+    for (int k = 5; k >= 1; --k) {
+      const T mu = T(k) / 6;
+      if (!open) {
+        T h1 = n1, h2 = n2;
+        panel_layout l;
+        if (solve(h1, h2, d1, d2, mu * dq, mu * ds) && h1 <= b1_ + tol && h2 <= b2_ + tol && h1 >= n1 - tol &&
+            h2 >= n2 - tol && merged(h1, h2) && limit_ok_panels(new_panels(h1, h2, d1, d2, nullptr, l))) {
+          n1 = h1;
+          n2 = h2;
+          continue;
+        }
+        sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, sp_, rule_->n());
+        const T w = pr - pl;
+        if (!Pm.solve({right ? b1_ : n1, right ? n2 : b2_, pl - w / 64, pr + w / 64})) return false;
+        const auto &m = Pm.solved();
+        // (inside the merged zone, the other end between the start's and the later one's)
+        if (!(m.b1 <= b1_ + tol && m.b2 <= b2_ + tol && (right ? m.pl >= n1 - tol && m.b2 >= n2 - tol
+                                                                : m.pr <= -n2 + tol && m.b1 >= n1 - tol)))
+          return false;
+        nx = m;
+        J = Pm.jacobian();
+        open = true;
+        continue;
+      }
+      sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, sp_, rule_->n());
+      if (!Pm.solve(nx, 60, &J)) return false;
+      const auto &m = Pm.solved();
+      if (!(m.b1 <= b1_ + tol && m.b2 <= b2_ + tol && m.b1 >= nx.b1 - tol && m.b2 >= nx.b2 - tol &&
+            m.pl >= nx.pl - tol && m.pr <= nx.pr + tol))
+        return false;
+      nx = m;
+      J = Pm.jacobian();
+    }
+    typename sh_start<T>::dhp_memo mm;
+    sh_segment<T> sg;
+    sg.q0 = q_;
+    sg.s0 = s_;
+    sg.dq = dq;
+    sg.ds = ds;
+    sg.d1 = d1;
+    sg.d2 = d2;
+    sg.b1s = ob1;
+    sg.b2s = ob2;
+    sg.b1e = b1;
+    sg.b2e = b2;
+    sg.E1 = st->energy(1, b1, b2, d1, d2, &mm);
+    sg.E2 = st->energy(2, b1, b2, d1, d2, &mm);
+    sg.jumps.push_back(sh_jump<T>{st, b1, b2, d1, d2, nullptr});
+    panels_ = std::move(np);
+    b1_ = b1;
+    b2_ = b2;
+    s1_ = d1;
+    s2_ = d2;
+    sp_ = 0;
+    pl_ = pr_ = 0;
+    q_ += dq;
+    s_ += ds;
+    segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
+    return true;
+  }
+
   // the premise along the segment: at 5/6, 4/6, ..., 1/6 of it the state is the same solve (from
   // the later one: steps of a sixth, from which Newton stays on the branch; thirds lost it on Hertz
   // walk 41, vertex 9), with the ends between the start's and the later one's and the patch inside
