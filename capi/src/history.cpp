@@ -79,6 +79,11 @@ struct hs_history {
   // such vertex on the result counts one more approximation (hs_history_vertex.interior_merges)
   std::vector<size_t> static_patch_at;
   size_t cycle_patch_at = size_t(-1);  // the same, found by the static solves of add_cycles (pending)
+  // the static solves' reason for refusing the last segment they were given, and its vertex (1-based;
+  // kept for the message if the march then fails too)
+  std::string static_refusal;
+  size_t static_refusal_at = 0;
+  std::string last_error_note;  // appended to the next error's message in last_error
   // the cycle tag of vertex i (hs_history_vertex.cycle) in whichever method holds it
   int vertex_cycle(size_t i) const {
     if (ray_mode) return i < ray_vertices.size() ? ray_vertices[i].cycle : 0;
@@ -325,7 +330,8 @@ void to_march(hs_history &h) {
 // walk 21 of bench_history, vertex 7: "did not converge"). The next segments go on at acc.
 bool add_static(const core::static_history<double> &from, double q, double s,
                 std::shared_ptr<const core::static_history<double>> &to, hs_history::static_vertex_rec &rec,
-                const core::static_history_accuracy<double> &acc, bool *interior = nullptr) {
+                const core::static_history_accuracy<double> &acc, bool *interior = nullptr,
+                std::string *why = nullptr) {
   auto attempt = [&](const core::static_history_accuracy<double> *full) -> std::shared_ptr<core::static_history<double>> {
     auto next = std::make_shared<core::static_history<double>>(from);
     if (full) next->set_accuracy(*full);
@@ -334,6 +340,7 @@ bool add_static(const core::static_history<double> &from, double q, double s,
     } catch (const core::error &e) {
       if (e.code() == core::status::not_applicable || e.code() == core::status::no_convergence) {
         if (interior) *interior = std::strstr(e.what(), "interior slip zone") != nullptr;
+        if (why) *why = e.what();
         return nullptr;
       }
       throw;
@@ -393,6 +400,23 @@ constexpr const char *static_interior_message =
     "passes the friction limit inside the stick zone): more zones than the methods model (interior_patches = "
     "HS_PATCHES_MERGE marches it, merging the patch into the edge zone, an approximation)";
 
+// The march after the static solves refused a segment: if it fails too, its error says also why
+// the static solves stopped, and where (they may have gone further: the march models no interior
+// slip zone and no slip back at the edge)
+template <class F> void with_static_refusal(hs_history &h, F &&body) {
+  const std::string why = std::move(h.static_refusal);
+  const size_t at = h.static_refusal_at;
+  h.static_refusal.clear();
+  try {
+    body();
+  } catch (const core::error &) {
+    // (core::error carries a static message: the note goes to hs_history_last_error's text)
+    if (!why.empty())
+      h.last_error_note = "; the static solves had stopped at vertex " + std::to_string(at) + " of the path: " + why;
+    throw;
+  }
+}
+
 // body() with its error's message kept in h->last_error (cleared on success)
 template <class F> void keeping_error(hs_history *h, F &&body) {
   require(h != nullptr, core::status::null_pointer, "NULL history");
@@ -401,6 +425,8 @@ template <class F> void keeping_error(hs_history *h, F &&body) {
     h->last_error.clear();
   } catch (const std::exception &e) {
     h->last_error = e.what();
+    h->last_error += h->last_error_note;
+    h->last_error_note.clear();
     throw;
   }
 }
@@ -429,22 +455,26 @@ int hs_history_add_vertices(hs_history *h, size_t n, const double *q, const doub
               "history: a path vertex is not finite");
       require(std::fabs(q[i]) < 1, core::status::gross_sliding, "history: |Q| >= fP at a path vertex: gross sliding");
       bool seen = false;  // the static solves saw an interior slip zone on this segment
+      h->static_refusal.clear();
       if ((h->ray_mode || h->static_mode) && to_static(*h)) {
         hs_history::static_vertex_rec rec;
         std::shared_ptr<const core::static_history<double>> nx;
         bool interior = false;
-        if (add_static(*h->st, q[i], s[i], nx, rec, h->static_accuracy, &interior)) {
+        if (add_static(*h->st, q[i], s[i], nx, rec, h->static_accuracy, &interior, &h->static_refusal)) {
           h->st = nx;
           h->static_vertices.push_back(std::move(rec));
           h->input.emplace_back(q[i], s[i]);
           continue;
         }
+        h->static_refusal_at = h->input.size() + 1;
         if (interior && h->opts.interior_patches == HS_PATCHES_ERROR)
           throw core::error(core::status::not_applicable, static_interior_message);
         seen = interior;
       }
-      to_march(*h);
-      h->h->add_vertex(q[i], s[i]);
+      with_static_refusal(*h, [&] {
+        to_march(*h);
+        h->h->add_vertex(q[i], s[i]);
+      });
       if (seen) h->static_patch_at.push_back(h->input.size());
       h->input.emplace_back(q[i], s[i]);
     }
@@ -502,7 +532,8 @@ struct static_cycles_adapter {
     hs_history::static_vertex_rec rec;
     std::shared_ptr<const core::static_history<double>> nx;
     bool interior = false;
-    if (!add_static(*h.st, q, s, nx, rec, h.static_accuracy, &interior)) {
+    if (!add_static(*h.st, q, s, nx, rec, h.static_accuracy, &interior, &h.static_refusal)) {
+      h.static_refusal_at = h.input.size() + 1;
       if (interior && h.opts.interior_patches == HS_PATCHES_ERROR) throw static_interior{};
       if (interior) h.cycle_patch_at = h.input.size();
       throw leave_static{};
@@ -545,6 +576,7 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
     core::check_cycles<double>(qm, qa, sm, sa, phase_deg, cycles, h->opts.segments_per_cycle);
     const size_t ni0 = h->input.size();
     h->cycle_patch_at = size_t(-1);
+    h->static_refusal.clear();
     // on the ray: the superposition
     if (h->ray_mode) {
       const auto ray0 = h->ray;
@@ -568,9 +600,11 @@ int hs_history_add_cycles(hs_history *h, double qm, double qa, double sm, double
       if (cycles_by<static_cycles_adapter>(*h, restore, qm, qa, sm, sa, phase_deg, cycles)) return;
     }
     // else the march replays the whole path
-    to_march(*h);
-    h->cycles = h->h->add_cycles(qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h->opts.ramp_order),
-                                 h->opts.segments_per_cycle, h->opts.steady_rtol);
+    with_static_refusal(*h, [&] {
+      to_march(*h);
+      h->cycles = h->h->add_cycles(qm, qa, sm, sa, phase_deg, cycles, core::ramp_order(h->opts.ramp_order),
+                                   h->opts.segments_per_cycle, h->opts.steady_rtol);
+    });
     h->has_cycles = true;
     if (h->cycle_patch_at != size_t(-1)) h->static_patch_at.push_back(h->cycle_patch_at);
   }); });
