@@ -35,13 +35,22 @@ def periodic_cases():
 
 
 def kind(msg):
-    """The reason a run stopped, from the library's own message (hs_history_last_error)."""
+    """The reason a run stopped, from the library's own message (hs_history_last_error); where the
+    march failed after the static solves had stopped (further on, as a rule), the static solves'
+    reason, which the message gives after "the static solves had stopped"."""
+    cut = msg.find("the static solves had stopped")
+    if cut >= 0:
+        msg = msg[cut:]
+    if "fold" in msg:
+        return "a fold the static solves cannot follow"
     if "interior slip zone" in msg:
         return "interior slip zone"
     if "slip back" in msg:
         return "edge zone slips back"
     if "whole stick zone" in msg:
         return "whole stick zone at the limit"
+    if cut >= 0:  # (the static solves' own words, after the vertex)
+        return "other: " + re.sub(r"\s+", " ", msg.split(": ", 1)[-1])[:90]
     return "other: " + re.sub(r"\s+", " ", msg)[-80:]
 
 

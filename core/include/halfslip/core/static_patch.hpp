@@ -273,7 +273,7 @@ template <class T> class sh_patch {
     // (the patch: dh returns to 0 at pr, the last value is that residual, not a slip)
     for (size_t k = 0; k < h.size(); ++k) {
       if (z == 3 && k + 1 == h.size()) continue;
-      if (d * h[k] < -(T(1e-9) * big + T(1e-15))) return false;
+      if (!(d * h[k] >= -(T(1e-9) * big + T(1e-15)))) return false;  // (NaN: not one way)
     }
     return true;
   }
@@ -313,7 +313,7 @@ template <class T> class sh_patch {
     return T(z == 3 ? -1 : 1) * sqrt(abs(R));
   }
   T g_over_y(int z, const T &x) const { return g(z, x) / y_at(z, x); }
-  // PV int over piece P of (g/Y)(t) / (t - x), x inside it: shdetail::pv_pieces's rule on the
+  // PV int over piece P of (g/Y)(t) / (t - x), x inside it: shdetail::pv_nodes's rule on the
   // cuts of P about x, with the distances of each node to P's own ends exact (as make_nodes): a
   // node next to a root of R at P's end, in a piece of a few 1e-12 about an x that close to it,
   // rounds onto the root, and Y from x - root was 0 (an infinite energy for a patch end 4.5e-7

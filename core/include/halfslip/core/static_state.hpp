@@ -118,7 +118,10 @@ T state_traction(const std::vector<sh_panel<T>> &panels, const trule<T> &rule, c
 // The nodes and weights of the rule on the pieces [cuts_k, cuts_k+1]: 32-point Gauss-Legendre in
 // theta on each, x = l + L sin^2(theta/2), which takes square-root behaviour at the cuts;
 // g(eta, w) for each node in turn
-template <class T, class G> void pv_nodes(const std::vector<T> &cuts, G &&g) {
+// pv_nodes with each node's exact distance to the nearer end of its piece: g(eta, w, end, dist).
+// (A node next to a root of the integrand's square root at a piece's end, in a piece of a few 1e-12,
+// rounds onto it: eta - root is then 0, and the integrand infinite; the distance is not.)
+template <class T, class G> void pv_nodes_d(const std::vector<T> &cuts, G &&g) {
   using std::cos;
   using std::sin;
   const T pi_ = pi<T>();
@@ -129,27 +132,14 @@ template <class T, class G> void pv_nodes(const std::vector<T> &cuts, G &&g) {
     for (size_t j = 0; j < gr->x.size(); ++j) {
       const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
       const T xl = L * sh * sh, xr = L * ch * ch;
-      g(xl <= xr ? l + xl : cuts[k + 1] - xr, pi_ / 2 * gr->w[j] * L * sh * ch);
+      const T w = pi_ / 2 * gr->w[j] * L * sh * ch;
+      if (xl <= xr) g(l + xl, w, l, xl);
+      else g(cuts[k + 1] - xr, w, cuts[k + 1], xr);
     }
   }
 }
-
-// PV int over the pieces [cuts_k, cuts_k+1] of f(eta) / (eta - x), x inside [cuts.front(),
-// cuts.back()] (one of the cuts) or outside it: pv_nodes' rule; the singular part
-// f(x) ln((hi - x)/(x - lo)) in closed form
-template <class T, class F> T pv_pieces(const std::vector<T> &cuts, const F &f, const T &x, bool inside) {
-  using std::log;
-  T fx = 0, s = 0;
-  if (inside) {
-    fx = f(x);
-    s = fx * log((cuts.back() - x) / (x - cuts.front()));
-  }
-  pv_nodes(cuts, [&](const T &eta, const T &w) {
-    // (a node on x itself, in a piece of a few ulps next to it: its term is w f'(x), w ~ L)
-    if (inside && eta == x) return;
-    s += w * (f(eta) - fx) / (eta - x);
-  });
-  return s;
+template <class T, class G> void pv_nodes(const std::vector<T> &cuts, G &&g) {
+  pv_nodes_d(cuts, [&](const T &eta, const T &w, const T &, const T &) { g(eta, w); });
 }
 
 }  // namespace shdetail
@@ -230,16 +220,24 @@ template <class T> struct sh_start {
       const T lo = i == 1 ? e1 : T(-1), hi = i == 1 ? T(1) : -e2;
       if (!(hi > lo)) continue;
       const bool in = x > lo && x < hi;
-      auto f = [&](const T &eta) {
-        const T X = i == 1 ? sqrt((eta - e1) * (eta + e2)) : -sqrt((e1 - eta) * (-e2 - eta));
+      // (at a node, with its exact distance dist to the piece's end `end`: the band's root, the stick
+      // end, may be that end; periodic (0.1, 0, 0, 0.3, 45), chord 106: a fold's end 1.3e-10 from a
+      // memory point, a node on the root, and zone 2's energy infinite)
+      auto fd = [&](const T &eta, const T &end, const T &dist) {
+        const T r1 = i == 1 ? (end == e1 ? dist : eta - e1) : e1 - eta;
+        const T r2 = i == 1 ? eta + e2 : (end == -e2 ? dist : -e2 - eta);
+        const T X = i == 1 ? sqrt(r1 * r2) : -sqrt(r1 * r2);
         // (one pressure evaluation a node: the traction in a slip zone is a multiple of it)
         const T pe = pm->p(eta);
         return (T(d) * pe - shdetail::state_traction(panels, *rule, b1, b2, s1, s2, eta, [&] { return pe; })) / X;
       };
-      if (!in && mm) {  // (pv_pieces outside the band, its nodes' f kept)
+      auto f = [&](const T &eta) { return fd(eta, T(2), T(0)); };
+      if (!in && mm) {  // (the nodes outside the band, their f kept)
         auto &F = mm->fixed[i - 1];
         if (!mm->have[i - 1]) {
-          shdetail::pv_nodes(cuts(lo, hi, nullptr), [&](const T &eta, const T &w) { F.push_back({{eta, w, f(eta)}}); });
+          shdetail::pv_nodes_d(cuts(lo, hi, nullptr), [&](const T &eta, const T &w, const T &end, const T &dist) {
+            F.push_back({{eta, w, fd(eta, end, dist)}});
+          });
           mm->have[i - 1] = true;
         }
         T s = 0;
@@ -248,7 +246,7 @@ template <class T> struct sh_start {
         continue;
       }
       if (in && mm) {
-        // pv_pieces term by term, with f kept on the pieces between fixed cuts (the same sums to the
+        // the PV term by term, with f kept on the pieces between fixed cuts (the same sums to the
         // last bit; 5-6% of the walks' time, bench/static_walks.cpp, walks 1-20)
         using std::log;
         const auto c = cuts(lo, hi, &x);
@@ -260,15 +258,17 @@ template <class T> struct sh_start {
         for (size_t k = 0; k + 1 < c.size(); ++k) {
           const std::vector<T> piece{c[k], c[k + 1]};
           if (!fixed(c[k]) || !fixed(c[k + 1])) {
-            shdetail::pv_nodes(piece, [&](const T &eta, const T &w) {
+            shdetail::pv_nodes_d(piece, [&](const T &eta, const T &w, const T &end, const T &dist) {
               if (eta == x) return;
-              s += w * (f(eta) - fx) / (eta - x);
+              s += w * (fd(eta, end, dist) - fx) / (eta - x);
             });
             continue;
           }
           auto &v = mm->own[i - 1][std::make_pair(c[k], c[k + 1])];
           if (v.empty())
-            shdetail::pv_nodes(piece, [&](const T &eta, const T &w) { v.push_back({{eta, w, f(eta)}}); });
+            shdetail::pv_nodes_d(piece, [&](const T &eta, const T &w, const T &end, const T &dist) {
+              v.push_back({{eta, w, fd(eta, end, dist)}});
+            });
           for (const auto &n : v) {
             if (n[0] == x) continue;
             s += n[1] * (n[2] - fx) / (n[0] - x);
@@ -277,7 +277,21 @@ template <class T> struct sh_start {
         K += s;
         continue;
       }
-      K += shdetail::pv_pieces(cuts(lo, hi, in ? &x : nullptr), f, x, in);
+      {  // (the PV over the cuts: f(x) ln((hi - x)/(x - lo)) in closed form, the rest by the nodes)
+        using std::log;
+        const auto c = cuts(lo, hi, in ? &x : nullptr);
+        T fx = 0, s = 0;
+        if (in) {
+          fx = f(x);
+          s = fx * log((c.back() - x) / (x - c.front()));
+        }
+        shdetail::pv_nodes_d(c, [&](const T &eta, const T &w, const T &end, const T &dist) {
+          // (a node on x itself, in a piece of a few ulps next to it: its term is w f'(x), w ~ L)
+          if (in && eta == x) return;
+          s += w * (fd(eta, end, dist) - fx) / (eta - x);
+        });
+        K += s;
+      }
     }
     const T X = x > e1 ? sqrt((x - e1) * (x + e2)) : -sqrt((e1 - x) * (-e2 - x));
     return -2 / pi<T>() * X * K;
