@@ -30,6 +30,40 @@ std::shared_ptr<hs::core::static_history<double>> walk(const path_t &path) {
 // edge while the inner part of the old zone 2 goes on slipping +1, with 2.3e-3 a of the stick zone
 // beyond its old end
 const path_t reproducer{{0.0, 1.5}, {0.15, 1.5}, {0.25, 1.2}};
+// the same state: ends, patch, and the traction and slip at the points xs, to 1e-10 and 1e-9
+void same_state(const hs::core::static_history<double> &one, const hs::core::static_history<double> &two,
+                const std::vector<double> &xs) {
+  CHECK(std::fabs(one.b1() - two.b1()) < 1e-10);
+  CHECK(std::fabs(one.b2() - two.b2()) < 1e-10);
+  CHECK(std::fabs(one.patch_l() - two.patch_l()) < 1e-10);
+  CHECK(std::fabs(one.patch_r() - two.patch_r()) < 1e-10);
+  for (double x : xs) {
+    CAPTURE(x);
+    CHECK(std::fabs(one.traction(x) - two.traction(x)) < 1e-9);
+    CHECK(std::fabs(one.slip(x) - two.slip(x)) < 1e-9);
+  }
+}
+// the BEM's patch at the end of path (N = 800): the run of its elements inside its stick zone at the
+// friction limit with the sign of the library's patch lies at the library's patch to two element widths
+void patch_against_bem(const path_t &path, const hs::core::static_history<double> &sh) {
+  REQUIRE(sh.patch_dir() != 0);
+  hs::reference::bem::options bo;
+  bo.nodes = bo.steps_per_unit = 800;
+  std::vector<double> xq, qq;
+  const auto r = hs::reference::bem::run(hertz, path, bo, &qq, nullptr, &xq);
+  REQUIRE(xq.size() == 800);
+  double bl = 1, br = -1;
+  for (size_t k = 0; k < xq.size(); ++k) {
+    const double t0 = pi * double(k) / 800, t1 = pi * double(k + 1) / 800;
+    const double l = -std::cos(t0), rr = -std::cos(t1);
+    const double m = ((t1 - t0) / 2 - (std::sin(2 * t1) - std::sin(2 * t0)) / 4) / (rr - l);  // mean p
+    if (xq[k] > -r.back().b2 && xq[k] < r.back().b1 && sh.patch_dir() * qq[k] >= m * (1 - 1e-9))
+      bl = std::min(bl, l), br = std::max(br, rr);
+  }
+  auto width = [](double b) { return pi / 800 * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (800.0 * 800.0); };
+  CHECK(std::fabs(bl - sh.patch_l()) < 2 * width(sh.patch_l()));
+  CHECK(std::fabs(br - sh.patch_r()) < 2 * width(sh.patch_r()));
+}
 }  // namespace
 
 // The library's two-interval solve against the oracle's, from the same start state: ends, the new
@@ -108,22 +142,7 @@ TEST_CASE("static patch: a segment with an interior slip zone and the path after
 TEST_CASE("static patch: the patch's ends against the BEM's") {
   const auto sh = walk(reproducer);
   REQUIRE(sh->patch_dir() == +1);
-  hs::reference::bem::options bo;
-  bo.nodes = bo.steps_per_unit = 800;
-  std::vector<double> xq, qq;
-  const auto r = hs::reference::bem::run(hertz, reproducer, bo, &qq, nullptr, &xq);
-  const auto &v = r.back();
-  REQUIRE(xq.size() == 800);
-  double bl = 1, br = -1;
-  for (size_t k = 0; k < xq.size(); ++k) {
-    const double t0 = pi * double(k) / 800, t1 = pi * double(k + 1) / 800;
-    const double l = -std::cos(t0), rr = -std::cos(t1);
-    const double m = ((t1 - t0) / 2 - (std::sin(2 * t1) - std::sin(2 * t0)) / 4) / (rr - l);  // mean p
-    if (xq[k] > -v.b2 && xq[k] < v.b1 && qq[k] >= m * (1 - 1e-9)) bl = std::min(bl, l), br = std::max(br, rr);
-  }
-  auto width = [](double b) { return pi / 800 * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (800.0 * 800.0); };
-  CHECK(std::fabs(bl - sh->patch_l()) < 2 * width(sh->patch_l()));
-  CHECK(std::fabs(br - sh->patch_r()) < 2 * width(sh->patch_r()));
+  patch_against_bem(reproducer, *sh);
 }
 
 // Along a straight segment on which every point slips one way, the end state does not depend on
@@ -134,36 +153,14 @@ TEST_CASE("static patch: a patch grown over two segments is the patch of one") {
   const auto two = walk({{0.0, 1.5}, {0.15, 1.5}, {0.2, 1.35}, {0.25, 1.2}});
   REQUIRE(two->patch_dir() == +1);
   CHECK(two->patch_segments() == 2);
-  CHECK(std::fabs(one->b1() - two->b1()) < 1e-10);
-  CHECK(std::fabs(one->b2() - two->b2()) < 1e-10);
-  CHECK(std::fabs(one->patch_l() - two->patch_l()) < 1e-10);
-  CHECK(std::fabs(one->patch_r() - two->patch_r()) < 1e-10);
+  same_state(*one, *two, {-0.99, -0.8, -0.7, -0.6, 0.0, 0.95});
   const auto &s1 = one->last_segment();
   const auto &a = two->segment(2), &b = two->segment(3);
   CHECK(std::fabs(a.E1 + b.E1 - s1.E1) < 1e-9 * s1.E1);
   CHECK(std::fabs(a.E2 + a.Ep + b.E2 + b.Ep - s1.E2 - s1.Ep) < 1e-9 * (s1.E2 + s1.Ep));
-  for (double x : {-0.99, -0.8, -0.7, -0.6, 0.0, 0.95}) {
-    CAPTURE(x);
-    CHECK(std::fabs(one->traction(x) - two->traction(x)) < 1e-9);
-    CHECK(std::fabs(one->slip(x) - two->slip(x)) < 1e-9);
-  }
 }
 
 namespace {
-// the run of BEM elements inside its stick zone (-b2, b1) at the friction limit with sign d (the
-// BEM's patch; N elements on the cosine mesh): its outer element ends (bl > br: none)
-void bem_patch(const std::vector<double> &xq, const std::vector<double> &qq, double b1, double b2, int d, double &bl,
-               double &br) {
-  const size_t n = xq.size();
-  bl = 1;
-  br = -1;
-  for (size_t k = 0; k < n; ++k) {
-    const double t0 = pi * double(k) / double(n), t1 = pi * double(k + 1) / double(n);
-    const double l = -std::cos(t0), rr = -std::cos(t1);
-    const double m = ((t1 - t0) / 2 - (std::sin(2 * t1) - std::sin(2 * t0)) / 4) / (rr - l);  // mean p
-    if (xq[k] > -b2 && xq[k] < b1 && d * qq[k] >= m * (1 - 1e-9)) bl = std::min(bl, l), br = std::max(br, rr);
-  }
-}
 // a path against the BEM at N elements: at every vertex the zones' directions, the ends within an
 // element width, each zone's energy over the segment (the patch's counted with the zone on its side
 // of the stick zone's centre, as the BEM counts it) within etol of the path's largest
@@ -221,15 +218,7 @@ TEST_CASE("static patch: slip back at the contact edge against the BEM") {
   CHECK(sh->b2() > 0.9998);
   const auto sh40 = walk(path);
   CHECK(sh40->patch_segments() == 2);
-  hs::reference::bem::options bo;
-  bo.nodes = bo.steps_per_unit = 800;
-  std::vector<double> xq, qq;
-  const auto r = hs::reference::bem::run(hertz, case30(7), bo, &qq, nullptr, &xq);
-  double bl, br;
-  bem_patch(xq, qq, r.back().b1, r.back().b2, +1, bl, br);
-  auto width = [](double b) { return pi / 800 * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (800.0 * 800.0); };
-  CHECK(std::fabs(bl - sh->patch_l()) < 2 * width(sh->patch_l()));
-  CHECK(std::fabs(br - sh->patch_r()) < 2 * width(sh->patch_r()));
+  patch_against_bem(case30(7), *sh);
 }
 
 // The slip-back segment cut in two: the second half starts with the patch and the band open and
@@ -240,21 +229,13 @@ TEST_CASE("static patch: a slip-back segment in two halves is the segment of one
   two.insert(two.begin() + 8, {(a.first + b.first) / 2, (a.second + b.second) / 2});
   const auto one = walk(case30(7)), tw = walk(two);
   REQUIRE(tw->patch_dir() == +1);
-  CHECK(std::fabs(one->b1() - tw->b1()) < 1e-10);
-  CHECK(std::fabs(one->b2() - tw->b2()) < 1e-10);
-  CHECK(std::fabs(one->patch_l() - tw->patch_l()) < 1e-10);
-  CHECK(std::fabs(one->patch_r() - tw->patch_r()) < 1e-10);
+  same_state(*one, *tw, {-0.9999, -0.99, -0.9, -0.85, 0.0, 0.95});
   const auto &s1 = one->last_segment();
   const auto &p = tw->segment(8), &q = tw->segment(9);
   // (1e-9 of the segment's energy: zone 2's and the patch's, 2e-6, are 4 % of it)
   const double tot = s1.E1 + s1.E2 + s1.Ep;
   CHECK(std::fabs(p.E1 + q.E1 - s1.E1) < 1e-9 * tot);
   CHECK(std::fabs(p.E2 + p.Ep + q.E2 + q.Ep - s1.E2 - s1.Ep) < 1e-9 * tot);
-  for (double x : {-0.9999, -0.99, -0.9, -0.85, 0.0, 0.95}) {
-    CAPTURE(x);
-    CHECK(std::fabs(one->traction(x) - tw->traction(x)) < 1e-9);
-    CHECK(std::fabs(one->slip(x) - tw->slip(x)) < 1e-9);
-  }
 }
 
 // An open patch of which part sticks at once at a turn of the load: case 25 (Q/fP = 0.1 sin t,
@@ -271,16 +252,8 @@ TEST_CASE("static patch: part of an open patch sticks at once") {
   against_bem(path, 800, 2.5e-4);
   const auto sh = walk(path);
   REQUIRE(sh->patch_dir() == +1);
-  hs::reference::bem::options bo;
-  bo.nodes = bo.steps_per_unit = 800;
-  std::vector<double> xq, qq;
-  const auto r = hs::reference::bem::run(hertz, path, bo, &qq, nullptr, &xq);
-  double bl, br;
-  bem_patch(xq, qq, r.back().b1, r.back().b2, +1, bl, br);
-  auto width = [](double b) { return pi / 800 * std::sqrt(std::max(1 - b * b, 0.0)) + 2.0 / (800.0 * 800.0); };
   CHECK(sh->patch_l() > -0.6);
-  CHECK(std::fabs(bl - sh->patch_l()) < 2 * width(sh->patch_l()));
-  CHECK(std::fabs(br - sh->patch_r()) < 2 * width(sh->patch_r()));
+  patch_against_bem(path, *sh);
 }
 
 namespace {

@@ -2743,33 +2743,9 @@ template <class T> class static_history {
       const bool shed = before.sp_ == c.dp && !(e.pl <= before.pl_ + tol && e.pr >= before.pr_ - tol);
       if (!nested_fractions(before, st, dq, ds, d1, d2, c.dp, e, P->jacobian(), tol, shed)) continue;
       // take it
-      sh_segment<T> sg;
-      sg.q0 = q_;
-      sg.s0 = s_;
-      sg.dq = dq;
-      sg.ds = ds;
-      sg.d1 = d1;
-      sg.d2 = d2;
-      sg.b1s = before.b1_;
-      sg.b2s = before.b2_;
-      sg.b1e = e.b1;
-      sg.b2e = e.b2;
-      sg.E1 = E1;
-      sg.E2 = E2;
-      sg.Ep = Ep;
-      sg.jumps.push_back(sh_jump<T>{st, e.b1, e.b2, d1, d2, P});
-      panels_ = std::move(np);
-      b1_ = e.b1;
-      b2_ = e.b2;
-      s1_ = d1;
-      s2_ = d2;
-      pl_ = e.pl;
-      pr_ = e.pr;
-      sp_ = c.dp;
+      take_jump(dq, ds, before.b1_, before.b2_, sh_jump<T>{st, e.b1, e.b2, d1, d2, P}, {{E1, E2, Ep}}, std::move(np),
+                c.dp, e.pl, e.pr);
       ++npatch_;
-      q_ += dq;
-      s_ += ds;
-      segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
       return true;
     }
     return false;
@@ -2848,33 +2824,43 @@ template <class T> class static_history {
       J = Pm->jacobian();
     }
     typename sh_start<T>::dhp_memo mm;
+    const T E1 = st->energy(1, b1, b2, d1, d2, &mm), E2 = st->energy(2, b1, b2, d1, d2, &mm);
+    using boost::math::isfinite;
+    if (!isfinite(E1) || !isfinite(E2)) return false;
+    take_jump(dq, ds, ob1, ob2, sh_jump<T>{st, b1, b2, d1, d2, nullptr}, {{E1, E2, T(0)}}, std::move(np), 0, T(0), T(0));
+    return true;
+  }
+  // A segment solved in one step from its start (patch_segment, merge_segment): its record (start
+  // ends b1s, b2s; the jump J to the end state, with its ends and directions; energies E1, E2, Ep)
+  // and the state after it (the end state's panels np; the patch open then, sp 0: none)
+  void take_jump(const T &dq, const T &ds, const T &b1s, const T &b2s, sh_jump<T> J, const std::array<T, 3> &E,
+                 std::vector<sh_panel<T>> np, int sp, const T &pl, const T &pr) {
     sh_segment<T> sg;
     sg.q0 = q_;
     sg.s0 = s_;
     sg.dq = dq;
     sg.ds = ds;
-    sg.d1 = d1;
-    sg.d2 = d2;
-    sg.b1s = ob1;
-    sg.b2s = ob2;
-    sg.b1e = b1;
-    sg.b2e = b2;
-    sg.E1 = st->energy(1, b1, b2, d1, d2, &mm);
-    sg.E2 = st->energy(2, b1, b2, d1, d2, &mm);
-    using boost::math::isfinite;
-    if (!isfinite(sg.E1) || !isfinite(sg.E2)) return false;
-    sg.jumps.push_back(sh_jump<T>{st, b1, b2, d1, d2, nullptr});
+    sg.d1 = J.d1;
+    sg.d2 = J.d2;
+    sg.b1s = b1s;
+    sg.b2s = b2s;
+    sg.b1e = J.b1;
+    sg.b2e = J.b2;
+    sg.E1 = E[0];
+    sg.E2 = E[1];
+    sg.Ep = E[2];
     panels_ = std::move(np);
-    b1_ = b1;
-    b2_ = b2;
-    s1_ = d1;
-    s2_ = d2;
-    sp_ = 0;
-    pl_ = pr_ = 0;
+    b1_ = J.b1;
+    b2_ = J.b2;
+    s1_ = J.d1;
+    s2_ = J.d2;
+    sp_ = sp;
+    pl_ = pl;
+    pr_ = pr;
+    sg.jumps.push_back(std::move(J));
     q_ += dq;
     s_ += ds;
     segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
-    return true;
   }
 
   // the premise along the segment: at 5/6, 4/6, ..., 1/6 of it the state is the same solve (from

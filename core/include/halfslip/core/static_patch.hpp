@@ -320,32 +320,19 @@ template <class T> class sh_patch {
   // from a memory point, bench/periodic_survey.py case 30)
   T pv_own(const piece &P, const T &x) const {
     using std::abs;
-    using std::cos;
     using std::log;
-    using std::sin;
     using std::sqrt;
     const auto c = st_->cuts(P.l, P.r, &x);
     const T fx = g_over_y(P.zone, x);
     T s = fx * log((c.back() - x) / (x - c.front()));
     const T roots[4] = {ce_.b1, -ce_.b2, ce_.pl, ce_.pr};
-    const T pi_ = pi<T>(), sg = T(P.zone == 3 ? -1 : 1);
-    const auto gr = gauss_legendre<T>(32);
-    for (size_t k = 0; k + 1 < c.size(); ++k) {
-      const T l = c[k], L = c[k + 1] - l;
-      if (!(L > 0)) continue;
-      for (size_t j = 0; j < gr->x.size(); ++j) {
-        const T th = pi_ * (1 + gr->x[j]) / 2, sh = sin(th / 2), ch = cos(th / 2);
-        const T xl = L * sh * sh, xr = L * ch * ch;
-        const bool left = xl <= xr;
-        const T eta = left ? l + xl : c[k + 1] - xr;
-        if (eta == x) continue;  // (a node on x itself, in a piece of a few ulps next to it)
-        T R = 1;
-        for (const T &rt : roots)
-          R *= (left && k == 0 && rt == P.l) ? xl : ((!left && k + 2 == c.size() && rt == P.r) ? xr : abs(eta - rt));
-        const T f = g(P.zone, eta) / (sg * sqrt(R));
-        s += pi_ / 2 * gr->w[j] * L * sh * ch * (f - fx) / (eta - x);
-      }
-    }
+    const T sg = T(P.zone == 3 ? -1 : 1);
+    shdetail::pv_nodes_d(c, [&](const T &eta, const T &w, const T &end, const T &dist) {
+      if (eta == x) return;  // (a node on x itself, in a piece of a few ulps next to it)
+      T R = 1;
+      for (const T &rt : roots) R *= rt == end ? dist : abs(eta - rt);
+      s += w * (g(P.zone, eta) / (sg * sqrt(R)) - fx) / (eta - x);
+    });
     return s;
   }
 
