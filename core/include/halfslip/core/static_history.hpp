@@ -338,8 +338,7 @@ template <class T> class static_history {
     }
     // work on a copy: the state changes only if the segment succeeds
     static_history nx(*this);
-    nx.interior_ = false;
-    nx.backslip_ = 0;
+    nx.refused_ = 0;
     try {
       nx.advance(dq, ds);
       // (a patch open at the start of the segment stuck: within the limit at its end)
@@ -354,8 +353,8 @@ template <class T> class static_history {
       // one-interval state of the whole segment, merge_segment)
       if (e.code() != status::not_applicable) throw;
       const auto hint = nx.iends_;
-      const bool interior = nx.interior_;
-      const int back = interior ? 0 : nx.backslip_;
+      const bool interior = nx.refused_ < 0;
+      const int back = interior ? 0 : nx.refused_;
       bool ok = false;
       if (interior || back != 0) {
         nx = *this;
@@ -2077,8 +2076,7 @@ template <class T> class static_history {
   }
   void check_limit(const std::vector<sh_panel<T>> &np) const {
     if (!limit_ok_panels(np)) {
-      interior_ = true;  // (add_vertex then tries the segment with a patch)
-      backslip_ = 0;
+      refused_ = -1;  // (add_vertex then tries the segment with a patch)
       throw error(status::not_applicable,
                   "static_history: the stick traction passes the friction limit inside the stick zone (an "
                   "interior slip zone)");
@@ -2196,8 +2194,7 @@ template <class T> class static_history {
     const bool b2 = d2 != 0 && c - e > -1 && T(d2) * hist_hdot(-1, A, B, c, e, T(-1)) < -tol;
     if (b1 || b2) {
       // (add_vertex then tries the segment with the zone's inner part as a patch)
-      backslip_ = b1 ? 1 : 2;
-      interior_ = false;
+      refused_ = b1 ? 1 : 2;
       throw error(status::not_applicable,
                   "static_history: a slip zone would slip back next to the contact edge (a zone of the other "
                   "direction would open there)");
@@ -2778,6 +2775,12 @@ template <class T> class static_history {
     // (before the merge, if it happens within the segment, the patch grows: the two-interval state
     // from the start, nested as in nested_fractions; bench/periodic_survey.py case 25, vertex 60)
     auto st = std::make_shared<const sh_start<T>>(start_state());
+    // (the two-interval state's start: the start's patch grown by 1/64, its zone's end the start's,
+    // the other end o1 or o2, a later state's)
+    auto from_start = [&](const T &o1, const T &o2) {
+      const T w = pr - pl;
+      return sh_patch_ends<T>{right ? b1_ : o1, right ? o2 : b2_, pl - w / 64, pr + w / 64};
+    };
     T n1 = b1, n2 = b2;
     bool open = false;
     sh_patch_ends<T> nx{};
@@ -2794,8 +2797,7 @@ template <class T> class static_history {
           continue;
         }
         sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, sp_, rule_->n());
-        const T w = pr - pl;
-        if (!Pm.solve({right ? b1_ : n1, right ? n2 : b2_, pl - w / 64, pr + w / 64})) return false;
+        if (!Pm.solve(from_start(n1, n2))) return false;
         const auto &m = Pm.solved();
         // (inside the merged zone, the other end between the start's and the later one's, the
         // start's patch inside it: none of it stuck)
@@ -2808,20 +2810,16 @@ template <class T> class static_history {
         open = true;
         continue;
       }
-      // (from the later state; at 1/64 Newton may not reach the state next to the start's from
-      // there: then from the start's patch, grown by 1/64, with a new Jacobian)
-      auto Pm = std::make_unique<sh_patch<T>>(st, mu * dq, mu * ds, d1, d2, sp_, rule_->n());
-      if (!Pm->solve(nx, 60, &J)) {
-        const T w = pr - pl;
-        Pm = std::make_unique<sh_patch<T>>(st, mu * dq, mu * ds, d1, d2, sp_, rule_->n());
-        if (!Pm->solve({right ? b1_ : nx.b1, right ? nx.b2 : b2_, pl - w / 64, pr + w / 64})) return false;
-      }
-      const auto &m = Pm->solved();
+      // (from the later state; where Newton does not reach this one from there, from the start's
+      // patch with a new Jacobian; a failed solve leaves the object to solve again)
+      sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, sp_, rule_->n());
+      if (!Pm.solve(nx, 60, &J) && !Pm.solve(from_start(nx.b1, nx.b2))) return false;
+      const auto &m = Pm.solved();
       if (!(m.b1 <= b1_ + tol && m.b2 <= b2_ + tol && m.b1 >= nx.b1 - tol && m.b2 >= nx.b2 - tol &&
             m.pl >= nx.pl - tol && m.pr <= nx.pr + tol))
         return false;
       nx = m;
-      J = Pm->jacobian();
+      J = Pm.jacobian();
     }
     typename sh_start<T>::dhp_memo mm;
     const T E1 = st->energy(1, b1, b2, d1, d2, &mm), E2 = st->energy(2, b1, b2, d1, d2, &mm);
@@ -2883,26 +2881,24 @@ template <class T> class static_history {
     for (int k = 5; k >= (shed ? 0 : 1); --k) {
       const T mu = k > 0 ? T(k) / 6 : T(1) / 64;
       if (open) {
-        auto Pm = std::make_unique<sh_patch<T>>(st, mu * dq, mu * ds, d1, d2, dp, rule_->n());
-        bool ok = Pm->solve(next, 60, &J);
+        // (a failed solve leaves the object to solve again from another start)
+        sh_patch<T> Pm(st, mu * dq, mu * ds, d1, d2, dp, rule_->n());
+        bool ok = Pm.solve(next, 60, &J);
         if (!ok && mprev > mnext) {
           // (from the later state Newton may not reach this one, at 1/64 next to the start: then
           // from the line through the two later states, with a new Jacobian)
           const T t = (mu - mnext) / (mnext - mprev);
-          sh_patch_ends<T> g{next.b1 + t * (next.b1 - prev.b1), next.b2 + t * (next.b2 - prev.b2),
-                             next.pl + t * (next.pl - prev.pl), next.pr + t * (next.pr - prev.pr)};
-          Pm = std::make_unique<sh_patch<T>>(st, mu * dq, mu * ds, d1, d2, dp, rule_->n());
-          ok = Pm->solve(g);
+          ok = Pm.solve({next.b1 + t * (next.b1 - prev.b1), next.b2 + t * (next.b2 - prev.b2),
+                         next.pl + t * (next.pl - prev.pl), next.pr + t * (next.pr - prev.pr)});
         }
         if (!ok && !shed && before.sp_ == dp) {
           // (or from the start's open patch, grown by 1/64, with a new Jacobian)
           const T w = before.pr_ - before.pl_;
-          Pm = std::make_unique<sh_patch<T>>(st, mu * dq, mu * ds, d1, d2, dp, rule_->n());
-          ok = Pm->solve({next.b1, next.b2, before.pl_ - w / 64, before.pr_ + w / 64});
+          ok = Pm.solve({next.b1, next.b2, before.pl_ - w / 64, before.pr_ + w / 64});
         }
         if (ok) {
-          const auto &m = Pm->solved();
-          J = Pm->jacobian();
+          const auto &m = Pm.solved();
+          J = Pm.jacobian();
           if (!(m.b1 <= b1_ + tol && m.b2 <= b2_ + tol && m.b1 >= next.b1 - tol && m.b2 >= next.b2 - tol &&
                 m.pl >= next.pl - tol && m.pr <= next.pr + tol)) return false;
           prev = next;
@@ -3008,8 +3004,9 @@ template <class T> class static_history {
   T pl_{0}, pr_{0};
   int sp_ = 0;
   std::size_t npatch_ = 0;
-  mutable bool interior_ = false;  // the last refusal was check_limit's (an interior slip zone)
-  mutable int backslip_ = 0;  // the last refusal was check_slip_sign's, in this zone (0: not)
+  // why the last phase was refused: -1 check_limit's (an interior slip zone), 1 or 2
+  // check_slip_sign's in that zone (slip back at the edge), 0 neither
+  mutable int refused_ = 0;
   // the ends and directions of an advancing phase refused by check_limit at its end (b1 < 0: none)
   std::array<T, 4> iends_{{T(-1), T(0), T(0), T(0)}};
 };

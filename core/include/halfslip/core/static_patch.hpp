@@ -313,27 +313,22 @@ template <class T> class sh_patch {
     return T(z == 3 ? -1 : 1) * sqrt(abs(R));
   }
   T g_over_y(int z, const T &x) const { return g(z, x) / y_at(z, x); }
-  // PV int over piece P of (g/Y)(t) / (t - x), x inside it: shdetail::pv_nodes's rule on the
-  // cuts of P about x, with the distances of each node to P's own ends exact (as make_nodes): a
-  // node next to a root of R at P's end, in a piece of a few 1e-12 about an x that close to it,
-  // rounds onto the root, and Y from x - root was 0 (an infinite energy for a patch end 4.5e-7
-  // from a memory point, bench/periodic_survey.py case 30)
+  // PV int over piece P of (g/Y)(t) / (t - x), x inside it, on the cuts of P about x, with Y from
+  // each node's exact distance to P's own ends (as make_nodes): a node next to a root of R at P's
+  // end, in a piece of a few 1e-12 about an x that close to it, rounds onto the root, and Y from
+  // x - root was 0 (an infinite energy for a patch end 4.5e-7 from a memory point,
+  // bench/periodic_survey.py case 30)
   T pv_own(const piece &P, const T &x) const {
     using std::abs;
-    using std::log;
     using std::sqrt;
-    const auto c = st_->cuts(P.l, P.r, &x);
-    const T fx = g_over_y(P.zone, x);
-    T s = fx * log((c.back() - x) / (x - c.front()));
     const T roots[4] = {ce_.b1, -ce_.b2, ce_.pl, ce_.pr};
     const T sg = T(P.zone == 3 ? -1 : 1);
-    shdetail::pv_nodes_d(c, [&](const T &eta, const T &w, const T &end, const T &dist) {
-      if (eta == x) return;  // (a node on x itself, in a piece of a few ulps next to it)
+    auto f = [&](const T &eta, const T &end, const T &dist) {
       T R = 1;
       for (const T &rt : roots) R *= rt == end ? dist : abs(eta - rt);
-      s += w * (g(P.zone, eta) / (sg * sqrt(R)) - fx) / (eta - x);
-    });
-    return s;
+      return g(P.zone, eta) / (sg * sqrt(R));
+    };
+    return shdetail::pv_pieces(st_->cuts(P.l, P.r, &x), f, x, true);
   }
 
   // the pieces of G at the ends e, and each piece end's grading for a root of R close outside it

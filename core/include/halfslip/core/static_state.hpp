@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <utility>
@@ -117,10 +118,10 @@ T state_traction(const std::vector<sh_panel<T>> &panels, const trule<T> &rule, c
 
 // The nodes and weights of the rule on the pieces [cuts_k, cuts_k+1]: 32-point Gauss-Legendre in
 // theta on each, x = l + L sin^2(theta/2), which takes square-root behaviour at the cuts;
-// g(eta, w) for each node in turn
-// pv_nodes with each node's exact distance to the nearer end of its piece: g(eta, w, end, dist).
-// (A node next to a root of the integrand's square root at a piece's end, in a piece of a few 1e-12,
-// rounds onto it: eta - root is then 0, and the integrand infinite; the distance is not.)
+// g(eta, w, end, dist) for each node in turn, with the node's exact distance dist to the nearer
+// end of its piece. (A node next to a root of the integrand's square root at a piece's end, in a
+// piece of a few 1e-12, rounds onto it: eta - root is then 0 and the integrand infinite; the
+// distance is not.)
 template <class T, class G> void pv_nodes_d(const std::vector<T> &cuts, G &&g) {
   using std::cos;
   using std::sin;
@@ -138,8 +139,28 @@ template <class T, class G> void pv_nodes_d(const std::vector<T> &cuts, G &&g) {
     }
   }
 }
+// the same, g(eta, w)
 template <class T, class G> void pv_nodes(const std::vector<T> &cuts, G &&g) {
   pv_nodes_d(cuts, [&](const T &eta, const T &w, const T &, const T &) { g(eta, w); });
+}
+
+// PV int over the pieces [cuts_k, cuts_k+1] of f(eta) / (eta - x), x inside [cuts.front(),
+// cuts.back()] (one of the cuts) or outside it: pv_nodes_d's rule, f(eta, end, dist) given each
+// node's exact distance to its piece's end (f(x, NaN, 0) at x itself: no end known); the singular
+// part f(x) ln((hi - x)/(x - lo)) in closed form
+template <class T, class F> T pv_pieces(const std::vector<T> &cuts, const F &f, const T &x, bool inside) {
+  using std::log;
+  T fx = 0, s = 0;
+  if (inside) {
+    fx = f(x, std::numeric_limits<T>::quiet_NaN(), T(0));
+    s = fx * log((cuts.back() - x) / (x - cuts.front()));
+  }
+  pv_nodes_d(cuts, [&](const T &eta, const T &w, const T &end, const T &dist) {
+    // (a node on x itself, in a piece of a few ulps next to it: its term is w f'(x), w ~ L)
+    if (inside && eta == x) return;
+    s += w * (f(eta, end, dist) - fx) / (eta - x);
+  });
+  return s;
 }
 
 }  // namespace shdetail
@@ -231,7 +252,7 @@ template <class T> struct sh_start {
         const T pe = pm->p(eta);
         return (T(d) * pe - shdetail::state_traction(panels, *rule, b1, b2, s1, s2, eta, [&] { return pe; })) / X;
       };
-      auto f = [&](const T &eta) { return fd(eta, T(2), T(0)); };
+      auto f = [&](const T &eta) { return fd(eta, std::numeric_limits<T>::quiet_NaN(), T(0)); };
       if (!in && mm) {  // (the nodes outside the band, their f kept)
         auto &F = mm->fixed[i - 1];
         if (!mm->have[i - 1]) {
@@ -277,21 +298,7 @@ template <class T> struct sh_start {
         K += s;
         continue;
       }
-      {  // (the PV over the cuts: f(x) ln((hi - x)/(x - lo)) in closed form, the rest by the nodes)
-        using std::log;
-        const auto c = cuts(lo, hi, in ? &x : nullptr);
-        T fx = 0, s = 0;
-        if (in) {
-          fx = f(x);
-          s = fx * log((c.back() - x) / (x - c.front()));
-        }
-        shdetail::pv_nodes_d(c, [&](const T &eta, const T &w, const T &end, const T &dist) {
-          // (a node on x itself, in a piece of a few ulps next to it: its term is w f'(x), w ~ L)
-          if (in && eta == x) return;
-          s += w * (fd(eta, end, dist) - fx) / (eta - x);
-        });
-        K += s;
-      }
+      K += shdetail::pv_pieces(cuts(lo, hi, in ? &x : nullptr), fd, x, in);
     }
     const T X = x > e1 ? sqrt((x - e1) * (x + e2)) : -sqrt((e1 - x) * (-e2 - x));
     return -2 / pi<T>() * X * K;
