@@ -206,8 +206,8 @@ path_t case30(int k) {
 // session 17 they stopped. Chord 38 is the mirror image, with a patch end 4.5e-7 from the memory
 // point of the old stick end, where the patch's energy was -inf (a Gauss node of a piece of 6e-12
 // rounded onto the root of Y; sh_patch::pv_own). Against the BEM at N = 800 on the 42 vertices:
-// directions, ends within an element width, energies within 2.5e-4 of the largest (measured 1.7e-4
-// at N = 800 and 4.1e-5 at N = 1600: the BEM's own error), and the BEM's patch at vertex 8 at the
+// directions, ends within an element width, energies within 2.5e-4 of the largest (measured 1.8e-4
+// at N = 800 and 4.3e-5 at N = 1600, the BEM's own error; bench/periodic_vertices_bem.cpp), and the BEM's patch at vertex 8 at the
 // library's to two element widths.
 TEST_CASE("static patch: slip back at the contact edge against the BEM") {
   const auto path = case30(40);
@@ -278,7 +278,8 @@ path_t periodic(double qm, double qa, double sm, double sa, double ph_deg, size_
 // within a chord after the patch has grown on it (case 25, sigma_a = 1: the BEM's patch (0.483,
 // 0.741) half way along chord 58 has merged by three quarters). The one-interval phases stopped at the
 // fold over the patch ("does not come back to its load"). Against the BEM at N = 800 on every vertex
-// up to there (measured: energies within 2.2e-5 and 1.8e-5 of the largest, ends within 2.7e-3 a).
+// up to there (measured: energies within 2.0e-5 and 1.8e-5 of the largest, ends within 1.7e-3 a;
+// bench/periodic_vertices_bem.cpp 0 0.1 1.5 SA 90 800 N).
 TEST_CASE("static patch: a patch that merges with an edge zone, against the BEM") {
   for (const double sa : {0.3, 1.0}) {
     CAPTURE(sa);
@@ -300,7 +301,8 @@ TEST_CASE("static patch: a patch that merges with an edge zone, against the BEM"
 // it, and the segment was refused ("a fold whose path does not come back to its load"). The BEM
 // jumps there too (b1 from 0.8204 to 0.7235 in the last quarter of the chord). Against the BEM at N
 // = 800 on every vertex to there: energies within 5e-4 of the largest (measured 3.5e-4 at N = 800 and
-// 7.5e-5 at N = 1600, the BEM's own error, as large on the first chords as at the fold).
+// 7.5e-5 at N = 1600, the BEM's own error, as large on the first chords as at the fold;
+// bench/periodic_vertices_bem.cpp 0.15 0.3 0 0.3 90 N 86).
 TEST_CASE("static history: a fold whose path comes back steeply, against the BEM") {
   const auto path = periodic(0.15, 0.3, 0.0, 0.3, 90.0, 86);
   against_bem(path, 800, 5e-4);
