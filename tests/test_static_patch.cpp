@@ -310,3 +310,45 @@ TEST_CASE("static history: a fold whose path comes back steeply, against the BEM
   CHECK(sh->b1() < 0.73);
   CHECK(sh->b1() > 0.72);
 }
+
+// A segment that no single solve takes, taken in halves (static_history::add_vertex, "Segments taken
+// in parts" in docs/history.md): case 160 of bench/periodic_survey.py (Q/fP = 0.15 + 0.6 sin t,
+// sigma/fp0 = 1.5 + cos t), chord 47 (vertex 48), where until session 18 the static solves stopped
+// ("an interior slip zone"). Each half is a segment of its own with every check of one, so the
+// vertex is the path with the chord's midpoint as a vertex: the same state, traction and slip to
+// rounding (the slip sums the halves' pieces on the chord's lambda), the energies the sums of the
+// halves'; one segment record for the vertex. Against the BEM at N = 800 at that vertex: directions,
+// ends within an element width, energies within 1e-4 of the path's largest (measured 1.8e-5;
+// bench/periodic_vertices_bem.cpp 0.15 0.6 1.5 1 90 800 49).
+TEST_CASE("static history: a segment taken in halves, against the BEM") {
+  const auto path = periodic(0.15, 0.6, 1.5, 1.0, 90.0, 49);
+  const auto sh = walk(path);
+  REQUIRE(sh->split_segments() == 1);
+  CHECK(walk(path_t(path.begin(), path.end() - 1))->split_segments() == 0);
+  CHECK(sh->segment_count() == path.size());
+  auto two = path;
+  const auto a = two[47], b = two[48];
+  two.insert(two.begin() + 48, {a.first + (b.first - a.first) / 2, a.second + (b.second - a.second) / 2});
+  const auto tw = walk(two);
+  CHECK(tw->split_segments() == 0);
+  same_state(*sh, *tw, {-0.99, -0.9, -0.6, -0.3, 0.0, 0.3, 0.55, 0.65, 0.9, 0.99});
+  const auto &s = sh->last_segment(), &p = tw->segment(48), &q = tw->segment(49);
+  const double tot = s.E1 + s.E2 + s.Ep;
+  CHECK(std::fabs(p.E1 + q.E1 - s.E1) < 1e-12 * tot);
+  CHECK(std::fabs(p.E2 + q.E2 - s.E2) < 1e-12 * tot);
+  CHECK(std::fabs(p.Ep + q.Ep - s.Ep) < 1e-12 * tot);
+  hs::reference::bem::options bo;
+  bo.nodes = bo.steps_per_unit = 800;
+  const auto r = hs::reference::bem::run(hertz, path, bo);
+  double big = 0;
+  for (const auto &v : r) big = std::max({big, v.energy1, v.energy2});
+  const auto &v = r.back();
+  auto width = [&](double x) { return pi / 800 * std::sqrt(std::max(1 - x * x, 0.0)) + 2.0 / (800.0 * 800.0); };
+  CHECK(sh->dir1() == v.dir1);
+  CHECK(sh->dir2() == v.dir2);
+  CHECK(std::fabs(sh->b1() - v.b1) < width(sh->b1()));
+  CHECK(std::fabs(sh->b2() - v.b2) < width(sh->b2()));
+  const bool right = sh->patch_dir() != 0 && sh->patch_l() + sh->patch_r() > sh->b1() - sh->b2();
+  CHECK(std::fabs(s.E1 + (right ? s.Ep : 0.0) - v.energy1) < 1e-4 * big);
+  CHECK(std::fabs(s.E2 + (right ? 0.0 : s.Ep) - v.energy2) < 1e-4 * big);
+}

@@ -132,6 +132,16 @@ template <class T> class sh_segment_list {
     if (!head_) throw error(status::internal, "static_history: no segment yet");
     return *head_->seg;
   }
+  std::shared_ptr<const sh_segment<T>> back_ptr() const {
+    if (!head_) throw error(status::internal, "static_history: no segment yet");
+    return head_->seg;
+  }
+  // drop the newest segment (the list before it is shared, not copied)
+  void pop_back() {
+    if (!head_) throw error(status::internal, "static_history: no segment yet");
+    head_ = head_->prev;
+    --n_;
+  }
   // the k-th segment from the oldest (0-based), by a walk from the newest: O(size - k)
   const sh_segment<T> &at(std::size_t k) const {
     if (k >= n_) throw error(status::internal, "static_history: segment index out of range");
@@ -318,11 +328,108 @@ template <class T> class static_history {
 
   // Move to (qn, sn) along a straight segment; throws not_applicable (state unchanged)
   // if the segment is not advancing-only.
+  // A segment that no single solve takes is taken in halves, quarters, eighths (bisection, each
+  // part by the same solves and checks): an event inside it (a patch that opens, sheds part of
+  // itself or merges, an end that stops) then falls in a part whose solves take it. Each part is
+  // exact as a segment of its own, so the whole is (docs/history.md, "Segments taken in parts");
+  // the vertex gets one segment record, the parts' pieces and jumps on the segment's lambda.
+  // Only at full accuracy (see below).
   void add_vertex(const T &qn, const T &sn) {
     using boost::math::isfinite;
     using std::abs;
     if (!isfinite(qn) || !isfinite(sn)) throw error(status::not_finite, "static_history: a path vertex is not finite");
     if (!(abs(qn) < 1)) throw error(status::gross_sliding, "static_history: |Q| >= fP at a path vertex: gross sliding");
+    if (qn == q_ && sn == s_) {
+      step_to(qn, sn);
+      return;
+    }
+    try {
+      step_to(qn, sn);
+      return;
+    } catch (const error &e) {
+      // (at an accuracy asked, rtol > 0, the refusal stands: hs_history solves the segment again
+      // at full accuracy, which is then taken in parts if need be; parts at the reduced orders
+      // summed their errors past rtol, Hertz random walk 21, vertex 6: 6.8e-8 at rtol 1e-8)
+      if (e.code() != status::not_applicable || rtol_ > 0) throw;
+      // (the parts on a copy: the state changes only if every part is taken)
+      static_history nx(*this);
+      const std::size_t n0 = segs_.size(), p0 = npatch_;
+      if (!nx.take_parts(q_, s_, qn, sn, 1)) throw;
+      nx.merge_parts(n0, q_, s_, qn - q_, sn - s_);
+      nx.npatch_ = p0 + (nx.npatch_ > p0 ? 1 : 0);
+      nx.q_ = qn;
+      nx.s_ = sn;
+      ++nx.nsplit_;
+      *this = std::move(nx);
+    }
+  }
+  // segments taken in parts so far (see add_vertex)
+  std::size_t split_segments() const { return nsplit_; }
+
+ private:
+  // the straight segment from (qa, sa) (the current state) to (qb, sb) in two halves, each taken
+  // whole or (to depth 3: eighths) in halves again; false (this object partly moved) if a part fails
+  bool take_parts(const T &qa, const T &sa, const T &qb, const T &sb, int depth) {
+    const T qm = qa + (qb - qa) / 2, sm = sa + (sb - sa) / 2;
+    const T pts[2][2] = {{qm, sm}, {qb, sb}};
+    T q0 = qa, s0 = sa;
+    for (const auto &pt : pts) {
+      try {
+        step_to(pt[0], pt[1]);
+      } catch (const error &e) {
+        if (e.code() != status::not_applicable || depth >= 3) return false;
+        if (!take_parts(q0, s0, pt[0], pt[1], depth + 1)) return false;
+      }
+      q0 = pt[0];
+      s0 = pt[1];
+    }
+    return true;
+  }
+  // the segment records from the n0-th on (the parts of one segment from (q0, s0) by (dq, ds)) as
+  // one record: each part's pieces on the whole segment's lambda (a part is lambda in [la, lb]:
+  // lambda = la + (lb - la) lambda_part, d lambda scaled alike; the slip rates are linear in the
+  // load increments, so a part's increments over its lambda are the whole's over (la, lb)), jumps
+  // and energies joined
+  void merge_parts(std::size_t n0, const T &q0, const T &s0, const T &dq, const T &ds) {
+    using std::abs;
+    std::vector<std::shared_ptr<const sh_segment<T>>> parts;
+    while (segs_.size() > n0) {
+      parts.push_back(segs_.back_ptr());
+      segs_.pop_back();
+    }
+    std::reverse(parts.begin(), parts.end());
+    sh_segment<T> sg;
+    sg.q0 = q0;
+    sg.s0 = s0;
+    sg.dq = dq;
+    sg.ds = ds;
+    sg.d1 = parts.front()->d1;
+    sg.d2 = parts.front()->d2;
+    sg.b1s = parts.front()->b1s;
+    sg.b2s = parts.front()->b2s;
+    sg.b1e = parts.back()->b1e;
+    sg.b2e = parts.back()->b2e;
+    // (the parts' lambda from their loads: along the larger increment)
+    const bool byq = abs(dq) >= abs(ds);
+    auto lam_at = [&](const T &q, const T &s) { return byq ? (q - q0) / dq : (s - s0) / ds; };
+    for (const auto &P : parts) {
+      sg.E1 += P->E1;
+      sg.E2 += P->E2;
+      sg.Ep += P->Ep;
+      for (const auto &J : P->jumps) sg.jumps.push_back(J);
+      const T la = lam_at(P->q0, P->s0), lb = lam_at(P->q0 + P->dq, P->s0 + P->ds), w = lb - la;
+      for (auto pc : P->pieces) {
+        for (auto &l : pc.lam) l = la + w * l;
+        for (auto &d : pc.dlam) d *= w;
+        sg.pieces.push_back(std::move(pc));
+      }
+    }
+    segs_.push_back(std::make_shared<const sh_segment<T>>(std::move(sg)));
+  }
+
+  // (one straight segment by the solves, no parts)
+  void step_to(const T &qn, const T &sn) {
+    using std::abs;
     const T dq = qn - q_, ds = sn - s_;
     if (dq == 0 && ds == 0) {
       sh_segment<T> sg;
@@ -3004,6 +3111,7 @@ template <class T> class static_history {
   T pl_{0}, pr_{0};
   int sp_ = 0;
   std::size_t npatch_ = 0;
+  std::size_t nsplit_ = 0;  // segments taken in parts (add_vertex)
   // why the last phase was refused: -1 check_limit's (an interior slip zone), 1 or 2
   // check_slip_sign's in that zone (slip back at the edge), 0 neither
   mutable int refused_ = 0;
