@@ -352,3 +352,28 @@ TEST_CASE("static history: a segment taken in halves, against the BEM") {
   CHECK(std::fabs(s.E1 + (right ? s.Ep : 0.0) - v.energy1) < 1e-4 * big);
   CHECK(std::fabs(s.E2 + (right ? 0.0 : s.Ep) - v.energy2) < 1e-4 * big);
 }
+
+// A patch whose inner end lies just beyond a memory point: case 3 of bench/periodic_survey.py (Q/fP =
+// 0.1 sin t, sigma/fp0 = 0.3 sin(t + 90 deg)), chord 38 (vertex 39). Zone 2 reverses at the edge and
+// the inner part of the old zone goes on slipping -1 as a patch whose inner end lies 7.1e-7 beyond the
+// old stick end (a memory point; the BEM at N = 1600 in eighths of the chord: the patch (-0.9134,
+// -0.9110) growing outwards to (-0.9150, -0.9110), the element next to the old end stuck). The
+// residuals change steeply within 1e-6 of the point (the patch's outer end moves 3e3 times as fast as
+// the inner), and Newton from the inner end W/100 beyond it, the only start until session 18, did not
+// reach the root; from 1e-5 W it does. Against the BEM at N = 800 on the 40 vertices: energies within
+// 6e-4 of the largest (measured 5.2e-4 at N = 800, at vertex 38, and 1.1e-4 at N = 1600: the BEM's own
+// error; below 1e-4 at both at vertex 39; bench/periodic_vertices_bem.cpp 0 0.1 0 0.3 90 N 40), and
+// the BEM's patch at the library's to two element widths.
+TEST_CASE("static patch: a patch end just beyond a memory point, against the BEM") {
+  const auto path = periodic(0.0, 0.1, 0.0, 0.3, 90.0, 40);
+  const auto before = walk(path_t(path.begin(), path.end() - 1));
+  const double m = -before->b2();  // the old stick end of zone 2
+  const auto sh = walk(path);
+  REQUIRE(sh->patch_dir() == -1);
+  CHECK(sh->dir2() == +1);
+  CHECK(sh->patch_r() > m);
+  CHECK(sh->patch_r() - m < 1e-5);
+  CHECK(sh->patch_l() < -0.915);
+  against_bem(path, 800, 6e-4);
+  patch_against_bem(path, *sh);
+}
