@@ -80,6 +80,10 @@ template <class T> struct sh_jump {
 template <class T> struct sh_piece {
   std::vector<T> lam, b1, b2, dlam;
   int d1 = 0, d2 = 0;  // the zones' directions on the piece (0: no zone)
+  // the lambda rule of the nodes (kept with the piece: set_accuracy changes the history's rule,
+  // and the slip of earlier segments is read with their own; a review found 16-node pieces of a
+  // vertex retried at full accuracy read with the 12 nodes of rtol 1e-8, slip off by 1.8e-2 of 9.6e-2)
+  std::shared_ptr<const shdetail::trule<T>> rule;
 };
 // a segment: its loads and the ends along it, for the slip and the energies
 template <class T> struct sh_segment {
@@ -354,7 +358,9 @@ template <class T> class static_history {
       // (the parts on a copy: the state changes only if every part is taken)
       static_history nx(*this);
       const std::size_t n0 = segs_.size(), p0 = npatch_;
-      if (!nx.take_parts(q_, s_, qn, sn, 1)) throw;
+      const bool ok = nx.take_parts(q_, s_, qn, sn, 1, true);
+      nx.inner_part_ = false;
+      if (!ok) throw;
       nx.merge_parts(n0, q_, s_, qn - q_, sn - s_);
       nx.npatch_ = p0 + (nx.npatch_ > p0 ? 1 : 0);
       nx.q_ = qn;
@@ -368,20 +374,25 @@ template <class T> class static_history {
 
  private:
   // the straight segment from (qa, sa) (the current state) to (qb, sb) in two halves, each taken
-  // whole or (to depth 3: eighths) in halves again; false (this object partly moved) if a part fails
-  bool take_parts(const T &qa, const T &sa, const T &qb, const T &sb, int depth) {
+  // whole or (to depth 3: eighths) in halves again; false (this object partly moved) if a part fails.
+  // at_turn: (qa, sa) is the segment's own start, a vertex of the path; every other part starts
+  // where the load goes on in the same direction (inner_part_, see step_to and patch_segment)
+  bool take_parts(const T &qa, const T &sa, const T &qb, const T &sb, int depth, bool at_turn) {
     const T qm = qa + (qb - qa) / 2, sm = sa + (sb - sa) / 2;
     const T pts[2][2] = {{qm, sm}, {qb, sb}};
     T q0 = qa, s0 = sa;
+    bool turn = at_turn;
     for (const auto &pt : pts) {
       try {
+        inner_part_ = !turn;
         step_to(pt[0], pt[1]);
       } catch (const error &e) {
         if (e.code() != status::not_applicable || depth >= 3) return false;
-        if (!take_parts(q0, s0, pt[0], pt[1], depth + 1)) return false;
+        if (!take_parts(q0, s0, pt[0], pt[1], depth + 1, turn)) return false;
       }
       q0 = pt[0];
       s0 = pt[1];
+      turn = false;
     }
     return true;
   }
@@ -403,8 +414,8 @@ template <class T> class static_history {
     sg.s0 = s0;
     sg.dq = dq;
     sg.ds = ds;
-    sg.d1 = parts.front()->d1;
-    sg.d2 = parts.front()->d2;
+    sg.d1 = parts.back()->d1;  // (the directions at the end, as every record)
+    sg.d2 = parts.back()->d2;
     sg.b1s = parts.front()->b1s;
     sg.b2s = parts.front()->b2s;
     sg.b1e = parts.back()->b1e;
@@ -448,7 +459,11 @@ template <class T> class static_history {
     nx.refused_ = 0;
     try {
       nx.advance(dq, ds);
-      // (a patch open at the start of the segment stuck: within the limit at its end)
+      // (a patch open at the start of the segment stuck: within the limit at its end. At the start
+      // of a part within a segment the load goes on in the same direction: a slipping patch cannot
+      // stop there at once, it recedes, which the one-step solves do not follow)
+      if (sp_ != 0 && inner_part_)
+        throw error(status::not_applicable, "static_history: an interior slip zone would stop at once within a segment");
       nx.sp_ = 0;
       nx.pl_ = nx.pr_ = 0;
     } catch (const error &e) {
@@ -1269,6 +1284,7 @@ template <class T> class static_history {
       sh_piece<T> pc;
       pc.d1 = d1;
       pc.d2 = d2;
+      pc.rule = lrule_;
       pc.lam.resize(nl);
       pc.b1.resize(nl);
       pc.b2.resize(nl);
@@ -2607,6 +2623,7 @@ template <class T> class static_history {
       sh_piece<T> pc;
       pc.d1 = d1;
       pc.d2 = d2;
+      pc.rule = lrule_;
       for (int j = 0; j < n; ++j) {
         const T t = Q.a + Lp * R.sh[j] * R.sh[j];
         const T tq = shdetail::tpar(Q.a, Q.a + Q.L, t);
@@ -2849,6 +2866,9 @@ template <class T> class static_history {
       const T E1 = P->energy(1), E2 = P->energy(2), Ep = P->energy(3);
       if (!isfinite(E1) || !isfinite(E2) || !isfinite(Ep)) continue;
       const bool shed = before.sp_ == c.dp && !(e.pl <= before.pl_ + tol && e.pr >= before.pr_ - tol);
+      // (within a segment, at the start of a part, the open patch goes on: it may only grow; part of
+      // it sticking at once, or the whole of it while another opens, needs a turn of the load)
+      if (inner_part_ && before.sp_ != 0 && (before.sp_ != c.dp || shed)) continue;
       if (!nested_fractions(before, st, dq, ds, d1, d2, c.dp, e, P->jacobian(), tol, shed)) continue;
       // take it
       take_jump(dq, ds, before.b1_, before.b2_, sh_jump<T>{st, e.b1, e.b2, d1, d2, P}, {{E1, E2, Ep}}, std::move(np),
@@ -3045,11 +3065,11 @@ template <class T> class static_history {
     if (sg.dq == 0 && sg.ds == 0) return T(0);
     const T A = sg.dq / 2, B = sg.ds / 4;
     const auto gr = gauss_legendre<T>(sorder_);
-    const auto &R = *lrule_;
     const T pi_ = pi<T>();
     T h = 0;
     for (const auto &J : sg.jumps) h += J.patch ? J.patch->dh(x) : J.start->dh(x, J.b1, J.b2, J.d1, J.d2);
     for (const auto &pc : sg.pieces) {
+      const auto &R = pc.rule ? *pc.rule : *lrule_;
       for (int z = -1; z <= 1; z += 2) {
         const int dz = z > 0 ? pc.d1 : pc.d2;
         if (dz == 0) continue;
@@ -3116,6 +3136,7 @@ template <class T> class static_history {
   int sp_ = 0;
   std::size_t npatch_ = 0;
   std::size_t nsplit_ = 0;  // segments taken in parts (add_vertex)
+  bool inner_part_ = false;  // solving a part of a segment that does not start at a vertex (take_parts)
   // why the last phase was refused: -1 check_limit's (an interior slip zone), 1 or 2
   // check_slip_sign's in that zone (slip back at the edge), 0 neither
   mutable int refused_ = 0;
