@@ -17,10 +17,18 @@ hs_install_missing
 cd "$HS_ROOT"
 short_tiers="50;80;120"
 jobs="$(nproc)"
-common=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DHALFSLIP_BUILD_BENCH=OFF "-DHALFSLIP_REF_TIERS=$short_tiers")
+# -O1 -g1 (line tables, enough for the sanitizers' stack traces): one tier of the reference backend
+# compiles in 29 s with ASan against 68 s at -O2 -g (gcc 12, 2026-12-07).
+opt="-O1 -g1 -DNDEBUG"
+common=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$opt" "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$opt"
+        "-DCMAKE_Fortran_FLAGS_RELWITHDEBINFO=$opt" -DHALFSLIP_BUILD_BENCH=OFF "-DHALFSLIP_REF_TIERS=$short_tiers")
+# gcc's UBSan checks "alignment" and "null" on every pointer use of the inlined MPFR and Eigen
+# templates: with them a tier compiles in 112 s, without them in 33 s. A null dereference is still
+# caught (by ASan, as a SEGV), and the fuzz build (clang, stage 4) keeps every UBSan check.
+gcc_ubsan=(-DHALFSLIP_SANITIZE_EXCLUDE=alignment,null)
 
-echo "== reliability 1/4: ASan + UBSan, whole test suite"
-cmake -S . -B build-asan "${common[@]}" -DHALFSLIP_SANITIZE=address,undefined >/dev/null
+echo "== reliability 1/4: ASan + UBSan, whole test suite (cases marked HS_LONG skipped: tests/testing.hpp)"
+cmake -S . -B build-asan "${common[@]}" "${gcc_ubsan[@]}" -DHALFSLIP_SANITIZE=address,undefined >/dev/null
 cmake --build build-asan -j "$jobs" >/dev/null
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
    ctest --output-on-failure -j "$jobs" -E exported_symbols)

@@ -770,7 +770,7 @@ TEST_CASE("zone energies and slips by fixed rules: Hertz, adaptive reference, lo
 // - h against hhat_adaptive (double), away from the stick edge and large
 //   sigma: 1e-12 |h|, the adaptive reference's eps^(2/3) termination (as the
 //   test of the fixed rules above).
-TEST_CASE("issue 16: expansions of B_x against the fixed-rule and adaptive paths") {
+TEST_CASE("issue 16: expansions of B_x against the fixed-rule and adaptive paths" * HS_LONG) {
   core::flat_rounded_pressure<double> f5(0.5);
   core::flat_rounded_pressure<LD> f5l(0.5L);
   core::power_law_pressure<double> p15(1.5), p3(3);

@@ -164,7 +164,7 @@ TEST_CASE("history state: unloading 0.6 -> 0.2 against Ciavarella-Jager, S(0.6) 
   }
 }
 
-TEST_CASE("history state: cached panels = quadrature from scratch split at every step end") {
+TEST_CASE("history state: cached panels = quadrature from scratch split at every step end" * HS_LONG) {
   // The panels are cut at the memory points only (history::memory_points);
   // the quadrature from scratch (cauchy_numeric, graded panels built around
   // each point, q evaluated afresh at every node) splits at the ends of every

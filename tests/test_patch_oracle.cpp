@@ -7,6 +7,7 @@
 // and the reproducer of the session-14 interior stop against the independent BEM
 // (reference/bem_history.hpp).
 #include <doctest/doctest.h>
+#include "testing.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -105,7 +106,7 @@ TEST_CASE("patch oracle: the inversion on two intervals against direct quadratur
 // independent discretisation marching small increments) agrees to its accuracy: ends within an
 // element width (0.08 and 0.1 of one), energies within 2e-3 (its own change from N = 400 is 3e-2 on
 // zone 2; at N = 3200 it is within 2e-4), traction at nine points within 5e-6 f p0 (N = 400: 5e-5).
-TEST_CASE("patch oracle: the interior slip zone of the reproducer against the BEM") {
+TEST_CASE("patch oracle: the interior slip zone of the reproducer against the BEM" * HS_LONG) {
   const auto st = vertex2();
   {
     // (the one-interval phases of core/static_history.hpp refuse the segment; since session 16

@@ -78,7 +78,7 @@ hs_history_vertex vertex(const hist_handle &hh, size_t i) {
 
 }  // namespace
 
-TEST_CASE("ray histories: superposition against the march (Hertz both regimes, flat punch)") {
+TEST_CASE("ray histories: superposition against the march (Hertz both regimes, flat punch)" * HS_LONG) {
   // tol: the march's accuracy in units of a (zones; traction and slip 10x, energies
   // 20x relative to the largest). Passing a closed loop (Masing) the march is good to
   // ~1e-6 only (docs/history.md: the end sweeps a region at the friction limit).
@@ -420,7 +420,7 @@ TEST_CASE("ray histories: certified digits from the reference backend (hs_ref_hi
   CHECK(hs_ref_history_new(&sc, 0, &r) == HS_ERR_BAD_OPTION);
 }
 
-TEST_CASE("ray histories: periodic loading on a ray through the origin by superposition") {
+TEST_CASE("ray histories: periodic loading on a ray through the origin by superposition" * HS_LONG) {
   // in phase, zero means: +-(0.5, 0.4). The steady cycle in closed form (Ciavarella-Jager:
   // 4 E_i per cycle, slip range 2 h(x), hs_solution_steady_cycle) and the march
   hist_handle hh;
@@ -498,7 +498,7 @@ march_cycles march_of(int geometry, const double (&c)[5], int cycles, const std:
 }
 }  // namespace
 
-TEST_CASE("periodic loading off the ray by static solves, against the march") {
+TEST_CASE("periodic loading off the ray by static solves, against the march" * HS_LONG) {
   // Before session 12 hs_history_add_cycles marched every periodic loading off the ray; the
   // same path given vertex by vertex was taken by the static solves. Now the cycles are too,
   // while every segment is one they take (method STATIC, steps 0), else the march replays.

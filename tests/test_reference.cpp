@@ -61,7 +61,7 @@ ref::text_scene text(double q, double s) {
 
 }  // namespace
 
-TEST_CASE("double fast path against the reference at 40 digits, 200 random scenes per regime") {
+TEST_CASE("double fast path against the reference at 40 digits, 200 random scenes per regime" * HS_LONG) {
   hs_test::rng r(2024);
   for (int regime = 1; regime <= 2; ++regime) {
     double worst_b = 0, worst_d = 0, worst_B = 0, worst_h = 0, worst_E = 0;
@@ -135,7 +135,7 @@ TEST_CASE("reference against the raw-integral oracle at 80 digits: side conditio
   }
 }
 
-TEST_CASE("certification is honest: claimed digits agree with a run at twice the precision") {
+TEST_CASE("certification is honest: claimed digits agree with a run at twice the precision" * HS_LONG) {
   hs_test::rng r(99);
   int checked = 0;
   for (int i = 0; i < 12; ++i) {
@@ -306,7 +306,7 @@ double rel_err_eps(double v, const std::string &r) {
 
 }  // namespace
 
-TEST_CASE("general pressures: double solve_general against the reference at 40 digits") {
+TEST_CASE("general pressures: double solve_general against the reference at 40 digits" * HS_LONG) {
   // Loads covering both regimes: shear only, small slip zones, near sliding
   // (Q/fP = 0.99), small and large sigma/fp0, and a negative sigma (mirror).
   // The reference is the work run of a 40-digit request (the 50-digit tier;
@@ -573,7 +573,7 @@ TEST_CASE("reference C ABI: a flat-punch solution evaluates like the double one"
 // |h| / |ln e| (b grows like ln(1/e)); the rules' own error is below 1e-17.
 // Bound: 32 eps of |h| (rounding of ~50 terms of the Gauss sums, each a few
 // roundings) and of E.
-TEST_CASE("issue 16: opposite-sign slip and energies by fixed Gauss rules against the reference at 40 digits") {
+TEST_CASE("issue 16: opposite-sign slip and energies by fixed Gauss rules against the reference at 40 digits" * HS_LONG) {
   struct scene {
     double q, s;
   };
@@ -704,7 +704,7 @@ TEST_CASE("issue 16: opposite-sign solve with the stored start against the refer
 // |dB| <= 2 R K_error + 32 eps |B| (the state's half-ulp rounding moves K by
 // ~eps |K|); |dh| <= 2 dl R K_error + 32 eps |h|. Measured (fractions of the
 // bound) in the MESSAGE.
-TEST_CASE("issue 16: general-path B_x and slip from the expansions against the reference at 40 digits") {
+TEST_CASE("issue 16: general-path B_x and slip from the expansions against the reference at 40 digits" * HS_LONG) {
   struct scene {
     geom g;
     const char *q, *s;

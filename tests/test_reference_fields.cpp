@@ -4,6 +4,7 @@
 // 60 digits, the C ABI against the double library, honest certification, and
 // bad input.
 #include <doctest/doctest.h>
+#include "testing.hpp"
 
 #include <boost/multiprecision/mpfr.hpp>
 #include <algorithm>
@@ -194,14 +195,14 @@ void against_double(int geometry, const std::vector<double> &xs, const std::vect
 }
 }  // namespace
 
-TEST_CASE("reference fields: Hertz opposite sign against the double library") {
+TEST_CASE("reference fields: Hertz opposite sign against the double library" * HS_LONG) {
   // stick zone, both slip zones, the edge layer, the surface on and off the contact, depth
   against_double(HS_GEOMETRY_HERTZ, {-0.9, -0.3, 0.0, 0.4, 0.97},
                  {{{0.3, 0.5}}, {{-0.6, 0.05}}, {{0.999, 1e-6}}, {{-0.95, 1e-3}}, {{1.3, 0}}, {{0.2, 0}}, {{0, 2}}},
                  {1, 2});
 }
 
-TEST_CASE("reference fields: the flat punch against the double library (surface, stick and slip)") {
+TEST_CASE("reference fields: the flat punch against the double library (surface, stick and slip)" * HS_LONG) {
   // The flat punch's first evaluation builds its stick-zone series per tier (~12 s CPU at tiers
   // 50 + 80, measured); after that, surface points on the contact are quick while each point off
   // the surface costs ~2 s per component (kink grading). Here: q in both slip zones and the stick

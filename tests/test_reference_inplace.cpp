@@ -10,6 +10,7 @@
 //    root must agree with the one of the old path (every step evaluated) to the
 //    tier's precision, in fewer iterations.
 #include <doctest/doctest.h>
+#include "testing.hpp"
 
 #include <boost/multiprecision/mpfr.hpp>
 #include <ios>
@@ -67,7 +68,7 @@ const scene scenes[] = {{true, "0.5", "0.5", "0.5"},
 
 }  // namespace
 
-TEST_CASE("reference fast paths (stack limbs, in-place sums, sin_cos) are bitwise the plain code") {
+TEST_CASE("reference fast paths (stack limbs, in-place sums, sin_cos) are bitwise the plain code" * HS_LONG) {
   for (const scene &c : scenes) {
     const auto pp = model<plain60>(c);
     const auto pf = model<fast60>(c);

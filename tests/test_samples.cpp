@@ -136,7 +136,7 @@ TEST_CASE("knot path: the sampling error of a power-law pressure falls like n^-3
   CHECK(ehk <= ETOL);
 }
 
-TEST_CASE("knot path and panel path agree on the same samples (rough, asymmetric, not reaching the edges)") {
+TEST_CASE("knot path and panel path agree on the same samples (rough, asymmetric, not reaching the edges)" * HS_LONG) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> U(-1, 1);
   const std::size_t n = 300;  // above knot_tree_min interior samples; the panel path costs O(n^2)

@@ -9,6 +9,7 @@
 // sweep is independent of the one that fitted the asymptotic constants
 // (other seed, other geometry parameters).
 #include <doctest/doctest.h>
+#include "testing.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -738,7 +739,7 @@ void check_claims(const hs_solution *sol, const hs_summary &s, const truth &t, c
 
 }  // namespace
 
-TEST_CASE("issue 13: reduced estimate sweep: DEFAULT and AUTO within their estimates on every scene category") {
+TEST_CASE("issue 13: reduced estimate sweep: DEFAULT and AUTO within their estimates on every scene category" * HS_LONG) {
   // Full sweep: scripts/estimate_sweep.sh (docs/validation.md, "Estimate sweep").
   // Models: DEFAULT and AUTO, each at rtol 0 and 1e-10. Truths: Hertz and the callback
   // (Hertz pressure): the reference at 25 digits with energies; flat punch and power law:

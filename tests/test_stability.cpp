@@ -4,6 +4,7 @@
 // that shares no code path with the solver under test: the MPFR reference
 // (Hertz) or the sliding-stick-point balance (general pressures).
 #include <doctest/doctest.h>
+#include "testing.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -547,7 +548,7 @@ hs_summary default_summary(const near_case &c, double q) {
 }
 }  // namespace
 
-TEST_CASE("issue 13: near sliding, same sign: scenes of the sweep that failed, against long double") {
+TEST_CASE("issue 13: near sliding, same sign: scenes of the sweep that failed, against long double" * HS_LONG) {
   // Before: HS_ERR_NO_CONVERGENCE from DEFAULT on each (near-sliding sweep above). Causes:
   //  - the power law n = 1.5: the Jacobian near the cusp (test above);
   //  - the flat punch: the near-sliding start made at order 16, where F2 (~1e-11 signal) is

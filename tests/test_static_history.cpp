@@ -3,6 +3,7 @@
 // the independent static-solve oracle (reference/reversal_oracle.hpp, tanh-sinh + Newton,
 // no shared code), and the march (core/history.hpp) at fine steps.
 #include <doctest/doctest.h>
+#include "testing.hpp"
 
 #include <algorithm>
 #include <array>
@@ -636,7 +637,7 @@ TEST_CASE("static history: a patch merged with an edge zone by the vertex (again
 // Random non-proportional walks of 100 vertices (bench_history's, |Q/fP| <= 0.5, sigma/fp0 in
 // [0, 1.2]), which the static solves now take whole (before: 7 and 2 vertices; folds at which the
 // other end moves out on the way back, symmetric returns), against the BEM, Hertz and the flat punch.
-TEST_CASE("static history: random walks against the BEM (Hertz and flat punch)") {
+TEST_CASE("static history: random walks against the BEM (Hertz and flat punch)" * HS_LONG) {
   auto walk = [](unsigned seed, int n) { return hs::reference::random_walk(n, seed); };
   SUBCASE("Hertz, seed 1") { check_against_bem(hertz_pm(), walk(1, 100)); }
   // vertex 11 of seed 16: end 1 reopens at the edge and passes its old end at 0.9967 a, a crossing

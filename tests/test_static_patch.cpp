@@ -5,6 +5,7 @@
 // Newton, no code shared with core/) and the BEM (reference/bem_history.hpp), which marches small
 // load increments with stick/slip decided node by node.
 #include <doctest/doctest.h>
+#include "testing.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -108,7 +109,7 @@ TEST_CASE("static patch: the two-interval solve against the reference oracle") {
 // largest, the BEM's patch (elements in its stick zone at the limit) at the library's patch, and
 // the slip at the end within 5e-5 (measured: energies 1.6e-5 of the segment's at the patch vertex,
 // 3e-6 of the largest elsewhere; slip 2.3e-5 at N = 800, 1.0e-5 at N = 1600).
-TEST_CASE("static patch: a segment with an interior slip zone and the path after it against the BEM") {
+TEST_CASE("static patch: a segment with an interior slip zone and the path after it against the BEM" * HS_LONG) {
   const path_t path{{0.0, 1.5}, {0.15, 1.5}, {0.25, 1.2}, {0.1, 1.2}, {0.3, 1.0}, {0.0, 0.0}};
   auto sh = std::make_shared<hs::core::static_history<double>>(std::make_shared<hs::core::hertz_pressure<double>>());
   hs::reference::bem::options bo;
@@ -209,7 +210,7 @@ path_t case30(int k) {
 // directions, ends within an element width, energies within 2.5e-4 of the largest (measured 1.8e-4
 // at N = 800 and 4.3e-5 at N = 1600, the BEM's own error; bench/periodic_vertices_bem.cpp), and the BEM's patch at vertex 8 at the
 // library's to two element widths.
-TEST_CASE("static patch: slip back at the contact edge against the BEM") {
+TEST_CASE("static patch: slip back at the contact edge against the BEM" * HS_LONG) {
   const auto path = case30(40);
   against_bem(path, 800, 2.5e-4);
   const auto sh = walk(case30(7));
@@ -243,7 +244,7 @@ TEST_CASE("static patch: a slip-back segment in two halves is the segment of one
 // chord the BEM keeps (-0.5925, -0.4766) at the limit from its first quarter on, the rest of the old
 // patch stuck. The static solves take it (until session 17 they asked the new patch to contain the
 // old one); against the BEM at N = 800: the zones, energies, and the patch.
-TEST_CASE("static patch: part of an open patch sticks at once") {
+TEST_CASE("static patch: part of an open patch sticks at once" * HS_LONG) {
   path_t path{{0.0, 2.5}};  // (the ramp, sigma first; t = 0 is its end)
   for (int j = 1; j <= 4; ++j) {
     const double th = 2 * pi * j / 64;
@@ -280,7 +281,7 @@ path_t periodic(double qm, double qa, double sm, double sa, double ph_deg, size_
 // fold over the patch ("does not come back to its load"). Against the BEM at N = 800 on every vertex
 // up to there (measured: energies within 2.0e-5 and 1.8e-5 of the largest, ends within 1.7e-3 a;
 // bench/periodic_vertices_bem.cpp 0 0.1 1.5 SA 90 800 N).
-TEST_CASE("static patch: a patch that merges with an edge zone, against the BEM") {
+TEST_CASE("static patch: a patch that merges with an edge zone, against the BEM" * HS_LONG) {
   for (const double sa : {0.3, 1.0}) {
     CAPTURE(sa);
     const size_t n = sa == 0.3 ? 53 : 60;  // (the merge at the last vertex)
@@ -303,7 +304,7 @@ TEST_CASE("static patch: a patch that merges with an edge zone, against the BEM"
 // = 800 on every vertex to there: energies within 5e-4 of the largest (measured 3.5e-4 at N = 800 and
 // 7.5e-5 at N = 1600, the BEM's own error, as large on the first chords as at the fold;
 // bench/periodic_vertices_bem.cpp 0.15 0.3 0 0.3 90 N 86).
-TEST_CASE("static history: a fold whose path comes back steeply, against the BEM") {
+TEST_CASE("static history: a fold whose path comes back steeply, against the BEM" * HS_LONG) {
   const auto path = periodic(0.15, 0.3, 0.0, 0.3, 90.0, 86);
   against_bem(path, 800, 5e-4);
   const auto sh = walk(path);
@@ -320,7 +321,7 @@ TEST_CASE("static history: a fold whose path comes back steeply, against the BEM
 // halves'; one segment record for the vertex. Against the BEM at N = 800 at that vertex: directions,
 // ends within an element width, energies within 1e-4 of the path's largest (measured 1.8e-5;
 // bench/periodic_vertices_bem.cpp 0.15 0.6 1.5 1 90 800 49).
-TEST_CASE("static history: a segment taken in halves, against the BEM") {
+TEST_CASE("static history: a segment taken in halves, against the BEM" * HS_LONG) {
   const auto path = periodic(0.15, 0.6, 1.5, 1.0, 90.0, 49);
   const auto sh = walk(path);
   REQUIRE(sh->split_segments() == 1);
@@ -364,7 +365,7 @@ TEST_CASE("static history: a segment taken in halves, against the BEM") {
 // 6e-4 of the largest (measured 5.2e-4 at N = 800, at vertex 38, and 1.1e-4 at N = 1600: the BEM's own
 // error; below 1e-4 at both at vertex 39; bench/periodic_vertices_bem.cpp 0 0.1 0 0.3 90 N 40), and
 // the BEM's patch at the library's to two element widths.
-TEST_CASE("static patch: a patch end just beyond a memory point, against the BEM") {
+TEST_CASE("static patch: a patch end just beyond a memory point, against the BEM" * HS_LONG) {
   const auto path = periodic(0.0, 0.1, 0.0, 0.3, 90.0, 40);
   const auto before = walk(path_t(path.begin(), path.end() - 1));
   const double m = -before->b2();  // the old stick end of zone 2

@@ -371,7 +371,7 @@ template <class T> void power_law_near_odd_points(double &worst_new, double &wor
 }
 }  // namespace
 
-TEST_CASE_TEMPLATE("power-law F near odd n: m = k + delta, k = 1, 2, 3, 4, 10, 30, 100, 499 (issue 13)", T, double,
+TEST_CASE_TEMPLATE("power-law F near odd n: m = k + delta, k = 1, 2, 3, 4, 10, 30, 100, 499 (issue 13)" * HS_LONG, T, double,
                    long double, mp30) {
   double wn = 0, wo = 0;
   int cnt = 0;
@@ -398,7 +398,7 @@ TEST_CASE("power-law F: a NaN x with z > 1/2 gives NaN, not a series run out (is
 // The switches of the near-integer branch in n (z > 1/2): |delta| = 1/8 (k = 1 .. 6, 10, 30,
 // 200, 499, both signs: n = 2k + 1 -+ 1/4), each straddled by adjacent n as the code rounds
 // them, with the spots 4 ulps and 1/128 relative either side.
-TEST_CASE_TEMPLATE("switch: power-law F at the edges of the near-odd-n band (issue 13)", T, double, long double) {
+TEST_CASE_TEMPLATE("switch: power-law F at the edges of the near-odd-n band (issue 13)" * HS_LONG, T, double, long double) {
   double worst_in = 0, worst_out = 0;
   int switches = 0;
   std::vector<std::pair<T, T>> brackets;  // (inside, outside) of the band

@@ -35,3 +35,14 @@ struct rng {
 };
 
 }  // namespace hs_test
+
+// HS_LONG marks a test case that takes seconds in the release build (a sweep, a BEM at fine N) and
+// repeats code paths that shorter cases of the same suite also run: TEST_CASE("name" * HS_LONG).
+// The sanitizer builds of scripts/reliability.sh skip such cases (there they take minutes; CMake
+// defines HS_TEST_SANITIZED), the release ctest runs every one. `--no-skip` runs them anyway.
+#include <doctest/doctest.h>
+#ifdef HS_TEST_SANITIZED
+#define HS_LONG doctest::skip(true)
+#else
+#define HS_LONG doctest::skip(false)
+#endif
