@@ -966,3 +966,60 @@ TEST_CASE("issue 16: the solve's unevaluated Newton steps keep double within a f
                                  // move with a compiler's rounding, not up past these)
   }
 }
+
+// Issue 13 (bounded time): at high orders h' at the outer nodes goes by the fast multipole sum of the
+// knot path (general_solution::hgrad_nodes; a kinked callback's energies at order 1024 took 10 s by
+// the direct sums). The two against each other on the same nodes, many panels per zone (flat punch
+// kinks, a callback with declared kinks, the power law's cusp), orders on both sides of the switch:
+// the FMM truncates at ~1e-16 of sum |q|/distance (fmm1d.hpp) and the direct sums round at ~eps per
+// term, so both agree to 64 eps of the largest |h'|; the energies of the two paths to 64 eps.
+TEST_CASE("issue 13: h' by the fast multipole sum equals the direct sums at high orders") {
+  core::flat_rounded_pressure<double> f5(0.5);
+  core::power_law_pressure<double> p15(1.5);
+  core::callback_pressure<double> cb(
+      [](const double &x) {
+        const double h = 1 - std::abs(x - 0.3) / 0.05;
+        return std::sqrt((1 - x) * (1 + x)) - (h > 0 ? 0.2 * h : 0.0);
+      },
+      1.0, std::vector<double>{0.25, 0.3, 0.35});
+  const struct {
+    const core::pressure_model<double> *pm;
+    double q, s;
+  } cases[] = {{&f5, 0.5, 0.5}, {&f5, 0.3, 2.0}, {&p15, 0.3, 2.0}, {&cb, 0.6, 0.4}, {&cb, 0.2, 1.5}};
+  int fmm_used = 0;
+  for (const auto &c : cases) {
+    core::general_scene<double> sc;
+    sc.q = c.q;
+    sc.s = c.s;
+    const auto sol = core::solve_general(*c.pm, sc);
+    for (int z : {+1, -1})
+      for (int M : {128, 512, 1024}) {
+        const double d = sol.zone_length(z);
+        if (!(d > 0)) continue;
+        CAPTURE(c.q);
+        CAPTURE(c.s);
+        CAPTURE(z);
+        CAPTURE(M);
+        auto O = core::gdetail::make_zone_nodes<double>(*sol.pm, z, d, sol.width, M);
+        const auto IR = core::gdetail::make_zone_nodes<double>(*sol.pm, +1, sol.delta1, sol.width, M + 1);
+        const auto IL = core::gdetail::make_zone_nodes<double>(*sol.pm, -1, sol.delta2, sol.width, M + 1);
+        const auto a = sol.hgrad_nodes_direct(z, O, IR, IL, O.s2.size());
+        const auto b = core::gdetail::knot_hgrad(z, O, IR, IL, O.s2.size(), sol.dirR, sol.dirL, sol.width);
+        REQUIRE(a.size() == b.size());
+        double scale = 0, worst = 0;
+        for (std::size_t j = 0; j < a.size(); ++j) scale = std::max(scale, std::abs(a[j]));
+        for (std::size_t j = 0; j < a.size(); ++j) worst = std::max(worst, std::abs(a[j] - b[j]));
+        CHECK(worst <= 64 * EPS * scale);
+        const bool fmm = double(O.s2.size()) * double(IR.s2.size() + IL.s2.size()) >
+                         core::general_solution<double>::fmm_pairs();
+        fmm_used += fmm;
+        // above the switch hgrad_nodes is the fast sum (bitwise), below it the direct sums
+        const auto g = sol.hgrad_nodes(z, O, IR, IL, O.s2.size());
+        CHECK(g == (fmm ? b : a));
+        MESSAGE("q = " << c.q << ", s = " << c.s << ", zone " << z << ", M = " << M << ": " << O.s2.size()
+                       << " outer nodes, max |fmm - direct| / max |h'| = " << worst / scale
+                       << std::string(fmm ? " (hgrad_nodes: fmm)" : " (hgrad_nodes: direct)"));
+      }
+  }
+  CHECK(fmm_used > 0);
+}

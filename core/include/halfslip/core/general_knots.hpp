@@ -233,14 +233,16 @@ knot_nodes<T> make_knot_nodes(const knot_view<T> &kv, int side, const T &d, cons
 
 // h' at the first `count` outer nodes O of zone z (the inner rules IR, IL of
 // both zones; slip directions dirR, dirL; stick-zone length e), as
-// general_solution::hgrad_nodes, by the fast multipole sum.
-template <class T>
-std::vector<T> knot_hgrad(int z, const knot_nodes<T> &O, const knot_nodes<T> &IR, const knot_nodes<T> &IL,
-                          std::size_t count, int dirR, int dirL, const T &e) {
+// general_solution::hgrad_nodes, by the fast multipole sum. Nodes: knot_nodes, or
+// the panel path's zone_nodes at high orders (general_solution::hgrad_nodes): each
+// zone's nodes ascending in sin^2 theta.
+template <class T, class Nodes>
+std::vector<T> knot_hgrad(int z, const Nodes &O, const Nodes &IR, const Nodes &IL, std::size_t count, int dirR,
+                          int dirL, const T &e) {
   using std::sqrt;
   std::vector<T> g(count, T(0));
   if (count == 0) return g;
-  const knot_nodes<T> &own = z > 0 ? IR : IL, &oth = z > 0 ? IL : IR;
+  const Nodes &own = z > 0 ? IR : IL, &oth = z > 0 ? IL : IR;
   const int dz = z > 0 ? dirR : dirL, doth = z > 0 ? dirL : dirR;
   const bool use_own = dz != 0 && own.d > 0, use_oth = doth != 0 && oth.d > 0;
   // sources in y (signed distance from zone z's stick edge), ascending: the other

@@ -357,8 +357,26 @@ template <class T> class general_solution : public canonical_solution<general_so
   std::vector<T> hgrad_nodes(int z, const gdetail::zone_nodes<T> &O, const gdetail::zone_nodes<T> &IR,
                              const gdetail::zone_nodes<T> &IL, std::size_t count,
                              const gdetail::zone_nodes<T> *G = nullptr) const {
+    if constexpr (inplace_loops<T>::value) {
+      return hgrad_nodes_inplace(z, O, IR, IL, count, G);
+    } else {
+      // high orders (issue 13, bounded time: a callback pressure with kinks, whose energies
+      // converge only algebraically, reached order 1024 and 10 s of CPU, 95 % of it here):
+      // the fast multipole sum of the knot path, O(nodes) for the O(nodes^2) below. Its
+      // truncation is ~1e-16 of sum |q|/distance (fmm1d.hpp); below the threshold (orders
+      // up to ~128 on a dozen panels per zone) the direct sums stay, bitwise as before.
+      if (!(G && !G->s2.empty()) && double(count) * double(IR.s2.size() + IL.s2.size()) > fmm_pairs())
+        return gdetail::knot_hgrad(z, O, IR, IL, count, dirR, dirL, width);
+      return hgrad_nodes_direct(z, O, IR, IL, count, G);
+    }
+  }
+  // pairs (outer node, inner node) above which hgrad_nodes sums by the fast multipole method
+  static double fmm_pairs() { return 4e6; }
+  // hgrad_nodes by direct O(count (IR + IL)) sums (the definition; tests compare the two)
+  std::vector<T> hgrad_nodes_direct(int z, const gdetail::zone_nodes<T> &O, const gdetail::zone_nodes<T> &IR,
+                                    const gdetail::zone_nodes<T> &IL, std::size_t count,
+                                    const gdetail::zone_nodes<T> *G = nullptr) const {
     using std::sqrt;
-    if constexpr (inplace_loops<T>::value) return hgrad_nodes_inplace(z, O, IR, IL, count, G);
     const T e = width;
     std::vector<T> g(count, T(0));
     for (std::size_t j = 0; j < count; ++j) {
@@ -504,7 +522,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     const auto O = gdetail::make_knot_nodes<T>(kv, z, d, width, z > 0 ? PR : PL, false);
     const auto IR = gdetail::make_knot_nodes<T>(kv, +1, delta1, width, PR, true);
     const auto IL = gdetail::make_knot_nodes<T>(kv, -1, delta2, width, PL, true);
-    const std::vector<T> g = gdetail::knot_hgrad<T>(z, O, IR, IL, O.s2.size(), dirR, dirL, width);
+    const std::vector<T> g = gdetail::knot_hgrad(z, O, IR, IL, O.s2.size(), dirR, dirL, width);
     std::vector<std::shared_ptr<const gl_cumulative<T>>> cums;
     std::vector<T> f;
     T after = 0, E = 0;
@@ -541,7 +559,7 @@ template <class T> class general_solution : public canonical_solution<general_so
     const auto IR = gdetail::make_knot_nodes<T>(kv, +1, delta1, width, PR, true);
     const auto IL = gdetail::make_knot_nodes<T>(kv, -1, delta2, width, PL, true);
     const std::size_t count = O.first[np];
-    const std::vector<T> g = gdetail::knot_hgrad<T>(z, O, IR, IL, count, dirR, dirL, width);
+    const std::vector<T> g = gdetail::knot_hgrad(z, O, IR, IL, count, dirR, dirL, width);
     T h = 0;
     for (std::size_t j = 0; j < count; ++j) h += O.w[j] * 2 * d * sqrt(O.s2[j] * O.c2[j]) * g[j];
     return h;
