@@ -954,3 +954,40 @@ TEST_CASE("issue 13: power law n -> 1, stick end next to the pressure's cusp: pa
     }
   }
 }
+
+// Issue 13: the flat punch with a sharp corner (1 - b_f/a from 1e-8 to 1e-12) at small sigma, where
+// both slip zones lie in the rounded corner, 1e-13 to 1e-8 a wide. The continuation's start at
+// sigma = 0 bracketed d to sqrt(eps) absolutely, larger than the zones, and every 0 < sigma/fp0 < 3 at
+// b_f/a = 1 - 1e-8, Q/fP = 0.9 ended in NO_CONVERGENCE (also b_f/a = 1 - 1e-10 and 1 - 1e-12 at
+// Q/fP = 0.01 and 0.3). The zones are known to about eps/6 a absolutely there (the residual's
+// coordinates near the edge), 5e-9 of d: the estimate must cover it. The reference is given the
+// double value of b_f/a exactly (a decimal of 45 digits): the zones scale with the corner width
+// 1 - b_f/a, which the decimal 0.99999999 and its double differ in by ~1e-9.
+TEST_CASE("issue 13: flat punch with a sharp corner, slip zones inside it at small sigma, against the reference") {
+  struct scene {
+    double bf, q, s;
+  };
+  for (const scene &c : {scene{0.99999999, 0.9, 0.01}, scene{0.99999999, 0.9, 0.1}, scene{0.9999999999, 0.01, 0.1},
+                         scene{0.999999999999, 0.3, 0.1}}) {
+    CAPTURE(c.bf);
+    CAPTURE(c.q);
+    CAPTURE(c.s);
+    hs_solution *sol = nullptr;
+    REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, c.bf, c.q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
+    const hs_summary S = summary(sol);
+    double E[2] = {-1, -1};
+    REQUIRE(hs_solution_energy(sol, E) == HS_OK);
+    hs_solution_free(sol);
+    char bf[64];
+    std::snprintf(bf, sizeof bf, "%.45e", c.bf);
+    const ref_values R = reference_values(c.q, c.s, HS_GEOMETRY_FLAT_ROUNDED, bf, 20);
+    const double e1 = rel(S.d1, R.d1), e2 = rel(S.d2, R.d2);
+    CHECK(e1 <= S.error_estimate);
+    CHECK(e2 <= S.error_estimate);
+    CHECK(rel(E[0], R.e1) <= S.error_estimate);
+    CHECK(rel(E[1], R.e2) <= S.error_estimate);
+    MESSAGE("b_f/a = 1 - " << 1 - c.bf << ", q = " << c.q << ", s = " << c.s << ": d1 = " << S.d1 << " (rel. error "
+                           << e1 << "), d2 = " << S.d2 << " (" << e2 << "), energies " << rel(E[0], R.e1) << ", "
+                           << rel(E[1], R.e2) << "; estimate " << S.error_estimate);
+  }
+}

@@ -269,7 +269,7 @@ template <class T, class F> bool illinois(F f, T lo, T hi, T flo, T fhi, const T
 
 // Start at s = 0: the restriction of F2 to b1 = b2 = 1 - d (e = 2 - 2d),
 // F2(d) = I2L - I2R + pi q/2, falls monotonically from pi q/2 (d = 0) to
-// pi (q - 1)/2 (d -> 1); bracketed Illinois iteration in d to sqrt(eps).
+// pi (q - 1)/2 (d -> 1); bracketed Illinois iteration in d to sqrt(eps) d.
 // (For a symmetric pressure this is eq (15) and b1 = b2 exactly; for an
 // asymmetric one it is a start for the 2D Newton.) The iteration limit is
 // not an error: the result is only a start, which Newton validates (and
@@ -280,8 +280,12 @@ template <class T> general_state<T> shear_only_start(const pressure_model<T> &pm
   auto F = [&](const T &d) { return general_residual(pm, q, T(0), general_state<T>{d, 2 * (1 - d)}, n, false).F2; };
   const T tol = sqrt(eps<T>());
   T d = T(1) / 2;  // (the limit reached, or F not finite: a start all the same)
+  // relative to the bracket's upper end: slip zones far narrower than sqrt(eps) a (issue 13:
+  // the flat punch at b_f/a = 1 - 1e-8, Q/fP = 0.9 has d = 7.8e-9 at s = 0; an absolute
+  // sqrt(eps) left the start at d ~ 1e-8 off, Newton failed from it, and every
+  // 0 < sigma/fp0 < 3 there ended in NO_CONVERGENCE)
   illinois_until(F, T(0), T(1), pi<T>() * q / 2, pi<T>() * (q - 1) / 2,
-                 [&](const T &lo, const T &hi) { return hi - lo <= tol; }, d);
+                 [&](const T &lo, const T &hi) { return hi - lo <= tol * hi; }, d);
   return {d, 2 * (1 - d)};
 }
 
