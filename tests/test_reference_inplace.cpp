@@ -68,7 +68,7 @@ const scene scenes[] = {{true, "0.5", "0.5", "0.5"},
 
 }  // namespace
 
-TEST_CASE("reference fast paths (stack limbs, in-place sums, sin_cos) are bitwise the plain code" * HS_LONG) {
+TEST_CASE("reference fast paths (stack limbs, in-place sums, sin_cos) are bitwise the plain code") {
   for (const scene &c : scenes) {
     const auto pp = model<plain60>(c);
     const auto pf = model<fast60>(c);

@@ -365,7 +365,10 @@ template <class T> class general_solution : public canonical_solution<general_so
       // the fast multipole sum of the knot path, O(nodes) for the O(nodes^2) below. Its
       // truncation is ~1e-16 of sum |q|/distance (fmm1d.hpp); below the threshold (orders
       // up to ~128 on a dozen panels per zone) the direct sums stay, bitwise as before.
-      if (!(G && !G->s2.empty()) && double(count) * double(IR.s2.size() + IL.s2.size()) > fmm_pairs())
+      // (double only: the expansion order of fmm1d.hpp truncates at ~8e-17, which in long
+      // double, the truth of the estimate sweeps, cost 400 to 1000 eps_LD in h'; a review's find)
+      if (std::numeric_limits<T>::digits <= 53 && !(G && !G->s2.empty()) &&
+          double(count) * double(IR.s2.size() + IL.s2.size()) > fmm_pairs())
         return gdetail::knot_hgrad(z, O, IR, IL, count, dirR, dirL, width);
       return hgrad_nodes_direct(z, O, IR, IL, count, G);
     }

@@ -515,73 +515,146 @@ template <class T> bool polish_applies(const T &q, const general_state<T> &st) {
   return std::numeric_limits<T>::digits <= 64 && q > 1 - T(1e-8) && st.x1 > 0;
 }
 
-// The curve start (issue 13: the power law n -> 1 under larger sigma). F2, the moment
-// about the centre, has no s, and F1 = F1|_(s=0) - pi s/4: the solutions for every s
-// of the scene's q lie on the curve F2(x1, ln e) = 0, along which F1 fixes s. Where
-// the stick zone's left end -b2 crosses a cusp of the pressure (the power law's
-// x = 0, p ~ p(0) - c |x|^(n-1)), b2(s) has a kink (n = 1.05, Q/fP = 0.99: b2 stays
-// within 3e-6 of 0 from sigma/fp0 = 2.8 to 2.81 and then moves 0.9 a by 3.9, the
-// regime turning to opposite sign at 3.10 where d1 = 0): Newton from the Hertz start
-// and the continuation in s both stop at the cusp. Along the curve nothing is
-// singular. At fixed x1, F2 rises with e (steeply where -b2 crosses the cusp; measured
-// for n = 1.05 on 0.01 <= |x1| <= 0.9), so its root e(x1) is bracketed on
-// (e_lo, 2 - |x1|), and x1 is then the root of G(x1) = F1(x1, e(x1)) at the scene's s,
-// bracketed on a grid of x1 over both regimes (-2, 2), finest next to x1 = 0. Both by Illinois iterations
-// (ln e and x1 to 8 eps, relative): a start, which Newton then takes to the tolerance
-// and the order control validates. False where no x1 of the grid brackets a root.
-// Cost ~ 81 + 40 inner solves of ~40 residuals each (tens of ms in double): the
-// last start tried.
+// The curve (issue 13: the power law n -> 1 under larger sigma). F2, the moment about
+// the centre, has no s, and F1 = F1|_(s=0) - pi s/4: the solutions for every s of the
+// scene's q lie on the curve F2(x1, ln e) = 0, along which F1 fixes s. Where the stick
+// zone's left end -b2 crosses a cusp of the pressure (the power law's x = 0,
+// p ~ p(0) - c |x|^(n-1)), b2(s) has a kink (n = 1.05, Q/fP = 0.99: b2 stays within 3e-6
+// of 0 from sigma/fp0 = 2.8 to 2.81 and then moves 0.9 a by 3.9, the regime turning to
+// opposite sign at 3.10 where d1 = 0): Newton from the Hertz start and the continuation
+// in s both stop at the cusp. Along the curve nothing is singular. At fixed x1, F2
+// rises with e (steeply where -b2 crosses the cusp; measured for n = 1.05 on
+// 0.01 <= |x1| <= 0.9), so its root e(x1) is bracketed on (e_lo, 2 - |x1|); x1 is then
+// the root of G(x1) = F1(x1, e(x1)) at the scene's s. Both by Illinois iterations
+// (ln e and x1 to 8 eps, relative). e_lo = e^(3 ln eps + 1), just above the point-stick
+// switch of general_residual (widths below eps^3, where F2 no longer depends on e).
+template <class T> struct curve {
+  const pressure_model<T> &pm;
+  const T &q, &s;
+  int n;
+  T le_lo;
+  curve(const pressure_model<T> &pm_, const T &q_, const T &s_, int n_) : pm(pm_), q(q_), s(s_), n(n_) {
+    using std::log;
+    le_lo = 3 * log(eps<T>()) + 1;
+  }
+  T F2(const T &x1, const T &le) const {
+    return general_residual(pm, q, s, general_state<T>::from_log(x1, le), n, false).F2;
+  }
+  T le_hi(const T &x1) const {
+    using std::abs;
+    using std::log;
+    return log(T(2 - abs(x1))) + log1p(-T(1) / T(1 << 20));  // d2 > 0
+  }
+  // the lower end of the bracket at x1: the first of ln e = -8, -40, le_lo where F2 is
+  // negative (a residual grades its panels to the width: one at e^-40 costs ~20 times one
+  // at the roots of the band, e ~ 0.01 to 0.5)
+  T lower(const T &x1, T &f) const {
+    for (const T &l : {T(-8), T(-40)}) {
+      if (!(l > le_lo)) break;
+      f = F2(x1, l);
+      if (f < 0) return l;
+    }
+    f = F2(x1, le_lo);
+    return le_lo;
+  }
+  // the curve has a point at x1 (F2 changes sign on [le_lo, le_hi])
+  bool has_point(const T &x1) const {
+    using std::abs;
+    if (!(abs(x1) < 2)) return false;
+    T f;
+    lower(x1, f);
+    return f < 0 && F2(x1, le_hi(x1)) > 0;
+  }
+  // ln e of the curve at x1, to rtol (relative, at least 8 eps); near: a guess, bracketed outwards from
+  // it first (the local search of curve_local), else the whole range
+  bool point(const T &x1, const T &rtol, T &le, const T *near = nullptr) const {
+    using std::abs;
+    using std::max;
+    using std::min;
+    if (!(abs(x1) < 2)) return false;
+    const T hi_lim = le_hi(x1);
+    auto f = [&](const T &l) { return F2(x1, l); };
+    auto done = [&](const T &l, const T &h) { return h - l <= rtol * max(T(1), T(abs(l))); };
+    if (near && *near > le_lo && *near < hi_lim) {
+      T h = T(1e-6) * max(T(1), T(abs(*near)));
+      for (int k = 0; k < 40; ++k, h *= 4) {
+        const T a = max(le_lo, T(*near - h)), b = min(hi_lim, T(*near + h));
+        const T fa = f(a), fb = f(b);
+        if (!(fa == fa) || !(fb == fb)) break;
+        if (fa < 0 && fb > 0) return illinois_until(f, a, b, fa, fb, done, le);
+        if (a == le_lo && b == hi_lim) return false;
+      }
+    }
+    T flo;
+    const T lo = lower(x1, flo), fhi = f(hi_lim);
+    if (!(flo < 0) || !(fhi > 0)) return false;
+    return illinois_until(f, lo, hi_lim, flo, fhi, done, le);
+  }
+  // G(x1) = F1 on the curve at the scene's s (NaN where the curve has no point at x1)
+  T G(const T &x1, const T &rtol, T *le_out = nullptr, const T *near = nullptr) const {
+    T le;
+    if (!point(x1, rtol, le, near)) return std::numeric_limits<T>::quiet_NaN();
+    if (le_out) *le_out = le;
+    return general_residual(pm, q, s, general_state<T>::from_log(x1, le), n, false).F1;
+  }
+  // the root of G on [xa, xb] (G of opposite signs there), to 8 eps, as a state
+  bool root(T xa, T xb, T ga, T gb, general_state<T> &out, const T *near = nullptr) const {
+    using std::abs;
+    using std::max;
+    const T fine = 8 * eps<T>();
+    T le = near ? *near : T(0);
+    auto g = [&](const T &x) {
+      T l;
+      const T v = G(x, fine, &l, near ? &le : nullptr);
+      if (v == v) le = l;
+      return v;
+    };
+    auto done = [&](const T &l, const T &h) { return h - l <= fine * max(abs(l), abs(h)); };
+    T x1;
+    if (!illinois_until(g, xa, xb, ga, gb, done, x1) || !point(x1, fine, le, near ? &le : nullptr)) return false;
+    out = general_state<T>::from_log(x1, le);
+    return out.d2() > 0 && out.d1() < 2;
+  }
+};
+
+// The curve start: x1 bracketed on a grid over both regimes, |x1| = 1.99 2^-k,
+// k = 0 ... 19 (down to 4e-6) on each side of x1 = 0 (the regime boundary, d1 = 0, where
+// the opposite-sign zone 1 stays narrow: n = 1.05, Q/fP = 0.9977, sigma/fp0 = 3.2 has
+// d1 = 0.0049), the curve's points on the grid to 1e-3 in ln e (a sign of G is all the
+// grid needs), the root then to 8 eps. Where the curve ends between two grid
+// points (e(x1) -> e_lo at larger sigma: n = 1.01, Q/fP = 0.99, sigma/fp0 = 5 has its
+// root within 0.03 of the end) the end, by bisection to 1e-14 on has_point, stands in
+// for the point beyond it. False where no x1 of the grid brackets a root. Cost (double):
+// ~600 to 1,500 residuals, most of them away from the root, where they cost more (panels
+// graded to smaller widths): 0.1 to 0.4 s at orders 64 and 128 (n = 1.05 and 1.01); the
+// last start tried, and only in double and long double (one residual of the reference's
+// MPFR tiers costs ~7 ms at order 64: the reference uses curve_local instead).
 template <class T>
 bool curve_start(const pressure_model<T> &pm, const T &q, const T &s, int n, general_state<T> &out) {
   using std::abs;
-  using std::max;
-  using std::log;
   using std::pow;
   using std::sqrt;
-  const T le_lo = T(-40);
-  // ln e of the root of F2 at fixed x1 (false: no sign change on the range)
-  auto inner = [&](const T &x1, T &le) {
-    const T wmax = 2 - abs(x1);
-    if (!(wmax > 0)) return false;
-    const T le_hi = log(wmax) + log1p(-T(1) / (1 << 20));
-    auto F2 = [&](const T &l) { return general_residual(pm, q, s, general_state<T>::from_log(x1, l), n, false).F2; };
-    const T flo = F2(le_lo), fhi = F2(le_hi);
-    if (!(flo < 0) || !(fhi > 0)) return false;
-    return illinois_until(F2, le_lo, le_hi, flo, fhi,
-                          [](const T &l, const T &h) { return h - l <= 8 * eps<T>() * max(T(1), T(abs(l))); }, le);
-  };
-  // F1 on the curve at the scene's s (NaN where the curve has no point at x1)
-  auto G = [&](const T &x1) {
-    T le;
-    if (!inner(x1, le)) return std::numeric_limits<T>::quiet_NaN();
-    return general_residual(pm, q, s, general_state<T>::from_log(x1, le), n, false).F1;
-  };
-  // the grid: |x1| = 1.99 r^k, r = 2^(-1/2), k = 0 ... 39 (down to 2e-6), on each side of
-  // x1 = 0 (the regime boundary, d1 = 0; the opposite-sign zone 1 stays narrow there:
-  // n = 1.05, Q/fP = 0.9977, sigma/fp0 = 3.2 has d1 ~ 0.01), in ascending order
-  const int m = 40;
-  auto grid = [&](int i) {  // i = 0 ... 2m
-    const T r = sqrt(T(0.5));
+  const curve<T> c(pm, q, s, n);
+  const T coarse = T(1e-3);
+  const int m = 20;
+  auto grid = [&](int i) {  // i = 0 ... 2m, ascending
+    const T r = T(0.5);
     if (i == m) return T(0);
     return i < m ? T(-T(1.99) * pow(r, T(i))) : T(T(1.99) * pow(r, T(2 * m - i)));
   };
-  // where the curve ends between two grid points (e(x1) -> 0 at larger sigma: n = 1.01,
-  // Q/fP = 0.99, sigma/fp0 = 5 has its root within 0.03 of the end), the end by
-  // bisection (to 1e-14) stands in for the point beyond it
   auto to_end = [&](T in, T out_) {
     for (int k = 0; k < 60 && abs(out_ - in) > T(1e-14); ++k) {
       const T mid = (in + out_) / 2;
-      T le;
-      (inner(mid, le) ? in : out_) = mid;
+      (c.has_point(mid) ? in : out_) = mid;
     }
     return in;
   };
   T xa = 0, ga = std::numeric_limits<T>::quiet_NaN();
   for (int i = 0; i <= 2 * m; ++i) {
-    T xb = grid(i), gb = G(xb);
+    T xb = grid(i), gb = c.G(xb, coarse);
     if (i > 0 && (ga == ga) != (gb == gb)) {
       // one side on the curve, the other off it: test the curve's end
-      const T xe = ga == ga ? to_end(xa, xb) : to_end(xb, xa), ge = G(xe);
+      const T xe = ga == ga ? to_end(xa, xb) : to_end(xb, xa), ge = c.G(xe, coarse);
       if (ga == ga && ge == ge && (ga < 0) != (ge < 0)) {
         xb = xe;
         gb = ge;
@@ -590,15 +663,76 @@ bool curve_start(const pressure_model<T> &pm, const T &q, const T &s, int n, gen
         ga = ge;
       }
     }
-    if (ga == ga && gb == gb && (ga < 0) != (gb < 0)) {
-      T x1, le;
-      auto done = [](const T &l, const T &h) { return h - l <= 8 * eps<T>() * max(abs(l), abs(h)); };
-      if (!illinois_until(G, xa, xb, ga, gb, done, x1) || !inner(x1, le)) return false;
-      out = general_state<T>::from_log(x1, le);
-      return out.d2() > 0 && out.d1() < 2;
-    }
+    if (ga == ga && gb == gb && (ga < 0) != (gb < 0)) return c.root(xa, xb, ga, gb, out);
     xa = xb;
     ga = gb;
+  }
+  return false;
+}
+
+// The curve near a state `at` (the order control's state at the order below, or the
+// reference's double start): x1 bracketed outwards from at.x1 (steps from 1e-9 (|x1| +
+// 1e-3), times 4, up to 30 times, within |x1| < 1.99), the curve's point at each x1
+// bracketed outwards from the last ln e. Where Newton cannot finish from `at` because
+// the Jacobian is far from the residual's (the power law n = 1.05: p' ~ |x|^(n-2) at
+// the cusp inside zone 2 leaves J22 off by a factor of 2.3 at order 128, Q/fP = 0.9977,
+// sigma/fp0 = 3.2; Newton from the order-64 root stalls 2e-12 from the order-128 root):
+// brackets need no Jacobian. A few hundred residuals; false if no root is bracketed.
+template <class T>
+bool curve_local(const pressure_model<T> &pm, const T &q, const T &s, int n, const general_state<T> &at,
+                 general_state<T> &out) {
+  using std::abs;
+  using std::max;
+  using std::min;
+  const curve<T> c(pm, q, s, n);
+  const T x0 = at.x1, lim = T(1.99);
+  T le = at.lw();
+  if (!(abs(x0) < lim) || !(le == le)) return false;
+  // the last point on the curve met on each side (x0 itself on both, if on the curve): a
+  // sign change of G between it and the next one brackets a root (at order 64 the state
+  // from order 32 can lie off the curve: n = 1.05, Q/fP = 0.9977, sigma/fp0 = 10, where
+  // ln e moves from -50 to -13 within 1e-6 of x1)
+  T l0 = le;
+  const T g0 = c.G(x0, T(1e-10), &l0, &le);
+  T xs[2] = {x0, x0}, gs[2] = {g0, g0}, ls[2] = {l0, l0};
+  T h = T(1e-9) * (abs(x0) + T(1e-3));
+  for (int k = 0; k < 30; ++k, h *= 4) {
+    for (int i = 0; i < 2; ++i) {
+      const int side = i ? 1 : -1;
+      const T x = side > 0 ? min(lim, T(x0 + h)) : max(-lim, T(x0 - h));
+      if (x == xs[i]) continue;
+      T l = gs[i] == gs[i] ? ls[i] : le;
+      const T g = c.G(x, T(1e-10), &l, &l);
+      if (!(g == g)) {
+        if (!(gs[i] == gs[i])) xs[i] = x;  // (still off the curve: the last x off it)
+        continue;
+      }
+      if (!(gs[i] == gs[i])) {
+        // onto the curve from off it: its end between xs[i] and x (by bisection on
+        // has_point, to 1e-14) stands in for the point before x (as in curve_start)
+        T in = x, off = xs[i];
+        for (int b = 0; b < 60 && abs(off - in) > T(1e-14) * (1 + abs(in)); ++b) {
+          const T mid = (in + off) / 2;
+          (c.has_point(mid) ? in : off) = mid;
+        }
+        T le_end = c.le_lo;
+        const T ge = c.G(in, T(1e-10), &le_end);
+        if (ge == ge && (ge < 0) != (g < 0)) {
+          const T xa = side > 0 ? in : x, xb = side > 0 ? x : in;
+          const T ga = side > 0 ? ge : g, gb = side > 0 ? g : ge;
+          T near = l;
+          return c.root(xa, xb, ga, gb, out, &near);
+        }
+      } else if ((g < 0) != (gs[i] < 0)) {
+        const T xa = side > 0 ? xs[i] : x, xb = side > 0 ? x : xs[i];
+        const T ga = side > 0 ? gs[i] : g, gb = side > 0 ? g : gs[i];
+        T near = side > 0 ? ls[i] : l;
+        return c.root(xa, xb, ga, gb, out, &near);
+      }
+      xs[i] = x;
+      gs[i] = g;
+      ls[i] = l;
+    }
   }
   return false;
 }
@@ -763,6 +897,20 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     if (trial.d2() > 0 && trial.d1() < 2 && trial.lw() == trial.lw())
       ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its,
                            static_cast<const general_eval<T> *>(nullptr), opt.start_shortcut ? &kstart : nullptr);
+    if (!ok && trial.d2() > 0 && trial.d1() < 2) {
+      // (the reference's tiers from the double answer in the band of the curve start: Newton
+      // stalled there, n = 1.05, Q/fP = 0.9977, sigma/fp0 = 3.2 at 50 digits)
+      general_state<T> c;
+      const general_state<T> given = general_state<T>::from_log(opt.start_x1, opt.start_ln_e);
+      if (gdetail::curve_local(P, q, s, n, given, c)) {
+        trial = c;
+        ok = true;
+        int k = 0;
+        gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, k);
+        its += k;
+        if (!(trial.d2() > 0 && trial.d1() < 2)) trial = c;
+      }
+    }
     if (!ok) {
       n = n0;
       trial = st;
@@ -826,11 +974,12 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
       const int n0 = n;
       int m = max(n, 64);
       ok = false;
-      for (; !ok && m <= opt.max_order && m <= 256; m *= 2) {
-        if (!gdetail::curve_start(P, q, s, m, trial)) continue;
-        n = m;
-        ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
-      }
+      if (std::numeric_limits<T>::digits <= 64)
+        for (; !ok && 2 * m <= opt.max_order && m <= 128; m *= 2) {
+          if (!gdetail::curve_start(P, q, s, m, trial)) continue;
+          n = m;
+          ok = gdetail::newton(P, q, s, trial, n, tol_step, opt.max_iterations, its);
+        }
       if (!ok) {
         n = n0;
         throw error(status::no_convergence, "general solver: continuation in sigma failed");
@@ -881,13 +1030,10 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
       // the order control goes on
       st = before;
       if (gdetail::polish_applies(q, st) && gdetail::polish_near_sliding(P, q, s, st, max(2 * n, 128))) continue;
-      // the Jacobian can be far from the residual's (the power law n = 1.05: p' ~ |x|^(n-2)
-      // at the cusp inside zone 2 leaves J22 off by 2.3 at order 128, Q/fP = 0.9977,
-      // sigma/fp0 = 3.2, and Newton from the order-64 root stalls 2e-12 from the
-      // order-128 root): the curve start at the new order needs no Jacobian, and its
-      // brackets (x1 and ln e to a few eps) stand where Newton cannot improve on them
+      // the Jacobian can be far from the residual's (curve_local): the curve near the state
+      // at the order below, by brackets, which stand where Newton cannot improve on them
       general_state<T> c;
-      if (!gdetail::curve_start(P, q, s, n, c))
+      if (!gdetail::curve_local(P, q, s, n, before, c))
         throw error(status::no_convergence, "general solver: Newton iteration did not converge");
       st = c;
       if (!gdetail::newton(P, q, s, st, n, tol_step, opt.max_iterations, its)) st = c;
