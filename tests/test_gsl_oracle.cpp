@@ -311,15 +311,23 @@ sides side_conditions(const oracle &pm, double q, double s, double b1, double b2
 
 // ---------------------------------------------------------------------------
 // Library access through the C ABI, canonical scene a = p0 = f = E* = 1.
-// |F|/(pi(1 + s)) at the library's (b1, b2), and with b1 moved by 1e-7 (the check's teeth)
+// |F|/(pi(1 + s)) at the library's (b1, b2), checked <= 1e-10, and with b1 moved by 1e-7 (the check's
+// teeth), checked > 1e-10; worst and weakest_teeth: the running largest and smallest of the two
 struct side_check {
   double r, rp;
 };
-side_check check_sides(const oracle &pm, double q, double s, const hs_summary &S, workspace &ws) {
+side_check check_sides(const oracle &pm, double q, double s, const hs_summary &S, workspace &ws, double &worst,
+                       double &weakest_teeth) {
   const double scale = PI * (1 + s);
   const sides F = side_conditions(pm, q, s, S.b1, S.b2, S.slip_dir1, S.slip_dir2, ws);
   const sides Fp = side_conditions(pm, q, s, S.b1 + 1e-7, S.b2, S.slip_dir1, S.slip_dir2, ws);
-  return {std::max(std::fabs(F.F1), std::fabs(F.F2)) / scale, std::max(std::fabs(Fp.F1), std::fabs(Fp.F2)) / scale};
+  const side_check c{std::max(std::fabs(F.F1), std::fabs(F.F2)) / scale,
+                     std::max(std::fabs(Fp.F1), std::fabs(Fp.F2)) / scale};
+  worst = std::max(worst, c.r);
+  CHECK(c.r <= 1e-10);
+  weakest_teeth = std::min(weakest_teeth, c.rp);
+  CHECK(c.rp > 1e-10);
+  return c;
 }
 
 struct lib_solution {
@@ -469,12 +477,8 @@ TEST_CASE("gsl oracle: the library's b1, b2 satisfy the side conditions by QAWS,
       lib_solution sol(g.kind, g.param, L.q, L.s);
       REQUIRE(sol.status == HS_OK);
       const hs_summary &S = sol.sum;
-      const side_check sc = check_sides(*pm, L.q, L.s, S, ws);
+      const side_check sc = check_sides(*pm, L.q, L.s, S, ws, worst, weakest_teeth);
       const double r = sc.r, rp = sc.rp;
-      worst = std::max(worst, r);
-      CHECK(r <= 1e-10);
-      weakest_teeth = std::min(weakest_teeth, rp);
-      CHECK(rp > 1e-10);
       MESSAGE(kind_name(g.kind) << " = " << g.param << ", q = " << L.q << ", s = " << L.s << ": regime "
                                 << std::string(S.regime == HS_REGIME_SAME_SIGN ? "same" : "opposite")
                                 << ", b1 = " << S.b1 << ", b2 = " << S.b2 << ", |F|/(pi(1+s)) = " << r
@@ -510,12 +514,8 @@ TEST_CASE("gsl oracle: the power law next to n = 1 where the stick end has cross
     REQUIRE(sol.status == HS_OK);
     const hs_summary &S = sol.sum;
     const auto pm = make_oracle(geom{HS_GEOMETRY_POWER_LAW, c.n});
-    const side_check sc = check_sides(*pm, c.q, c.s, S, ws);
+    const side_check sc = check_sides(*pm, c.q, c.s, S, ws, worst, weakest_teeth);
     const double r = sc.r, rp = sc.rp;
-    worst = std::max(worst, r);
-    CHECK(r <= 1e-10);
-    weakest_teeth = std::min(weakest_teeth, rp);
-    CHECK(rp > 1e-10);
     MESSAGE("power law n = " << c.n << ", q = " << c.q << ", s = " << c.s << ": regime "
                              << std::string(S.regime == HS_REGIME_SAME_SIGN ? "same" : "opposite") << ", b1 = " << S.b1
                              << ", b2 = " << S.b2 << ", |F|/(pi(1+s)) = " << r << ", with b1 + 1e-7: " << rp);

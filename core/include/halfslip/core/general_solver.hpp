@@ -565,6 +565,16 @@ template <class T> struct curve {
     lower(x1, f);
     return f < 0 && F2(x1, le_hi(x1)) > 0;
   }
+  // the curve's end between x1 = in (on the curve) and off (off it), by bisection on
+  // has_point to 1e-14 (at most 60 halvings): it stands in for the point beyond the end
+  T end(T in, T off) const {
+    using std::abs;
+    for (int k = 0; k < 60 && abs(off - in) > T(1e-14); ++k) {
+      const T mid = (in + off) / 2;
+      (has_point(mid) ? in : off) = mid;
+    }
+    return in;
+  }
   // ln e of the curve at x1, to rtol (relative, at least 8 eps); near: a guess, bracketed outwards from
   // it first (the local search of curve_local), else the whole range
   bool point(const T &x1, const T &rtol, T &le, const T *near = nullptr) const {
@@ -631,9 +641,7 @@ template <class T> struct curve {
 // MPFR tiers costs ~7 ms at order 64: the reference uses curve_local instead).
 template <class T>
 bool curve_start(const pressure_model<T> &pm, const T &q, const T &s, int n, general_state<T> &out) {
-  using std::abs;
   using std::pow;
-  using std::sqrt;
   const curve<T> c(pm, q, s, n);
   const T coarse = T(1e-3);
   const int m = 20;
@@ -642,19 +650,12 @@ bool curve_start(const pressure_model<T> &pm, const T &q, const T &s, int n, gen
     if (i == m) return T(0);
     return i < m ? T(-T(1.99) * pow(r, T(i))) : T(T(1.99) * pow(r, T(2 * m - i)));
   };
-  auto to_end = [&](T in, T out_) {
-    for (int k = 0; k < 60 && abs(out_ - in) > T(1e-14); ++k) {
-      const T mid = (in + out_) / 2;
-      (c.has_point(mid) ? in : out_) = mid;
-    }
-    return in;
-  };
   T xa = 0, ga = std::numeric_limits<T>::quiet_NaN();
   for (int i = 0; i <= 2 * m; ++i) {
     T xb = grid(i), gb = c.G(xb, coarse);
     if (i > 0 && (ga == ga) != (gb == gb)) {
       // one side on the curve, the other off it: test the curve's end
-      const T xe = ga == ga ? to_end(xa, xb) : to_end(xb, xa), ge = c.G(xe, coarse);
+      const T xe = ga == ga ? c.end(xa, xb) : c.end(xb, xa), ge = c.G(xe, coarse);
       if (ga == ga && ge == ge && (ga < 0) != (ge < 0)) {
         xb = xe;
         gb = ge;
@@ -708,13 +709,9 @@ bool curve_local(const pressure_model<T> &pm, const T &q, const T &s, int n, con
         continue;
       }
       if (!(gs[i] == gs[i])) {
-        // onto the curve from off it: its end between xs[i] and x (by bisection on
-        // has_point, to 1e-14) stands in for the point before x (as in curve_start)
-        T in = x, off = xs[i];
-        for (int b = 0; b < 60 && abs(off - in) > T(1e-14) * (1 + abs(in)); ++b) {
-          const T mid = (in + off) / 2;
-          (c.has_point(mid) ? in : off) = mid;
-        }
+        // onto the curve from off it: its end between xs[i] and x stands in for the
+        // point before x (as in curve_start)
+        const T in = c.end(x, xs[i]);
         T le_end = c.le_lo;
         const T ge = c.G(in, T(1e-10), &le_end);
         if (ge == ge && (ge < 0) != (g < 0)) {
