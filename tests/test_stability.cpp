@@ -7,6 +7,7 @@
 #include "testing.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -990,4 +991,151 @@ TEST_CASE("issue 13: flat punch with a sharp corner, slip zones inside it at sma
                            << e1 << "), d2 = " << S.d2 << " (" << e2 << "), energies " << rel(E[0], R.e1) << ", "
                            << rel(E[1], R.e2) << "; estimate " << S.error_estimate);
   }
+}
+
+namespace {
+// d1, d2 of the reference at `digits` (no energies: those are the reference's slow part)
+std::pair<double, double> reference_zones(double q, double s, int geometry, const char *par, int digits = 20) {
+  hs_ref_scene r;
+  hs_ref_scene_default(&r);
+  char qs[64], ss[64];
+  std::snprintf(qs, 64, "%.45e", q);
+  std::snprintf(ss, 64, "%.45e", s);
+  r.Q_over_fP = qs;
+  r.sigma_over_fp0 = ss;
+  r.geometry = geometry;
+  r.flat_over_a = par;
+  hs_ref_solution *sol = nullptr;
+  REQUIRE(hs_ref_solve(&r, digits, &sol) == HS_OK);
+  auto get = [&](int what) {
+    char buf[128];
+    REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, nullptr) == HS_OK);
+    return std::strtod(buf, nullptr);
+  };
+  const std::pair<double, double> v{get(HS_REF_D1), get(HS_REF_D2)};
+  hs_ref_solution_free(sol);
+  return v;
+}
+}  // namespace
+
+// Issue 13 (session 20, a random probe of the flat punch with 1 - b_f/a down to 1e-12 and
+// 1 - |Q/fP| down to 1e-8): the stick zone next to a sharp corner, Q near fP, under bulk tension.
+// The order control accepted an order whose residual at twice the order was below the residual's
+// grain in the state (the rounding floor), although the root at twice the order moved the small
+// zone by 8e-5 of itself: d2 was off by 1.1e-7 against an estimate of 1.8e-8 (first scene), 3.4e-5
+// against 1.6e-5 (second) and 8e-3 against 2.3e-6 (third; 5e-5 against 6.7e-9 in the fourth).
+// Below the grain the zones' move must now be within the estimate's resolution or have stopped
+// shrinking (general_solver.hpp). Judged against the reference, given the doubles exactly.
+TEST_CASE("issue 13: flat punch with a sharp corner next to sliding under bulk tension, against the reference") {
+  struct scene {
+    double bf, q, s;
+  };
+  for (const scene &c : {scene{0.9999993847545946, 0.9999954899275122, -22.287187060712938},
+                         scene{0.9999999993347098, -0.9999997307775017, 21.490333673292437},
+                         scene{0.9999999937441786, 0.9999999878746825, -9432.3164360606},
+                         scene{0.9999959020463169, 0.9999999800489725, -0.8456780523170698},
+                         // a small flat, the stick a point (width 6e-71 a): F1 at the orders 512 and 1024
+                         // sat at 2.6e-11 and 3.6e-11, above qtol 1.8e-11, while x1 moved by 2e-14 (the
+                         // order limit, NO_CONVERGENCE)
+                         scene{0.011927369160584362, -0.27689637475305107, -403.59083187188236}}) {
+    CAPTURE(c.bf);
+    CAPTURE(c.q);
+    CAPTURE(c.s);
+    hs_solution *sol = nullptr;
+    REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, c.bf, c.q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
+    const hs_summary S = summary(sol);
+    hs_solution_free(sol);
+    char bf[64];
+    std::snprintf(bf, sizeof bf, "%.45e", c.bf);
+    const auto R = reference_zones(c.q, c.s, HS_GEOMETRY_FLAT_ROUNDED, bf);
+    const double e1 = rel(S.d1, R.first), e2 = rel(S.d2, R.second);
+    CAPTURE(e1);
+    CAPTURE(e2);
+    CAPTURE(S.error_estimate);
+    CHECK(e1 <= S.error_estimate);
+    CHECK(e2 <= S.error_estimate);
+  }
+}
+
+// Issue 13 (session 20): the zone energies of a state known only to ~1e-7 (1 - b_f/a = 2.1e-6,
+// 1 - Q/fP = 4.1e-6: the stick zone 2.8e-4 a wide at the corner) came back NO_CONVERGENCE: the
+// orders 64 to 1024 of the fixed rules scatter by 3e-11 of E1 (the rounding of the Cauchy sums next
+// to the corner) and were asked to agree to eps^(3/4). They now need agree only to a sixteenth of
+// the energies' estimate, which the state's own error already sets (general_solution::state_rtol).
+TEST_CASE("issue 13: zone energies agree to the state's error, not beyond (flat punch, sharp corner, near sliding)") {
+  // (the second scene: the first of the test case above, whose energies failed alike)
+  for (const auto &c : {std::array<double, 3>{0.9999979312645223, 0.9999959195942304, -0.05775322224775767},
+                        std::array<double, 3>{0.9999993847545946, 0.9999954899275122, -22.287187060712938}}) {
+    const double bf = c[0], q = c[1], s = c[2];
+    CAPTURE(bf);
+    CAPTURE(q);
+    CAPTURE(s);
+    hs_solution *sol = nullptr;
+    REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, bf, q, s, HS_MODEL_DEFAULT, &sol) == HS_OK);
+    const hs_summary S = summary(sol);
+    double E[2] = {-1, -1};
+    REQUIRE(hs_solution_energy(sol, E) == HS_OK);
+    hs_solution_free(sol);
+    // the long double solve (its rounding ~2000 times below): E1 agrees with the 20-digit reference
+    // 4.5296198712077972751e-2 to 2e-15 (measured)
+    const core::flat_rounded_pressure<long double> pl(static_cast<long double>(bf));
+    core::general_scene<long double> sl;
+    sl.q = q;
+    sl.s = s;
+    const auto b = core::solve_general(pl, sl);
+    const double r1 = rel(E[0], double(b.energy(1))), r2 = rel(E[1], double(b.energy(2)));
+    CAPTURE(r1);
+    CAPTURE(r2);
+    CAPTURE(S.error_estimate);
+    CHECK(r1 <= S.error_estimate);
+    CHECK(r2 <= S.error_estimate);
+  }
+}
+
+// Issue 13 (session 20): slip zones of 2e-13 and 3e-12 a inside a corner 4.5e-12 a wide. The
+// traction's zone integrals formed the pressure at x = b1 + d u^2, whose distance to the edge had
+// lost all but ~3 digits: the tanh-sinh ran to its last level on the staircase, 25 ms a point, and
+// the CLI's surface stresses took 27 s (3 min for the 2000 points below). The pressure is now taken
+// at its exact distance from the edge (traction.hpp, pressure_at): 0.1 ms a point.
+TEST_CASE("issue 13: traction of slip zones 1e-13 a wide in a sharp corner, against the reference") {
+  const double bf = 0.9999999999955057, q = 0.41345080329245576, s = 0.6805874883686964;
+  const auto t0 = std::chrono::steady_clock::now();
+  hs_solution *sol = nullptr;
+  REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, bf, q, s, HS_MODEL_DEFAULT, &sol) == HS_OK);
+  const hs_summary S = summary(sol);
+  std::vector<double> xs(2000), qs(2000);
+  for (int i = 0; i < 2000; ++i) xs[i] = -1 + 2 * (i + 0.5) / 2000;
+  REQUIRE(hs_eval_traction(sol, xs.size(), xs.data(), qs.data()) == HS_OK);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CAPTURE(secs);
+  CHECK(secs < 20.0);  // hang guard (0.2 s in the release build; bench/ measures speed)
+  hs_ref_scene r;
+  hs_ref_scene_default(&r);
+  char qs_[64], ss_[64], bfs[64];
+  std::snprintf(qs_, 64, "%.45e", q);
+  std::snprintf(ss_, 64, "%.45e", s);
+  std::snprintf(bfs, 64, "%.45e", bf);
+  r.Q_over_fP = qs_;
+  r.sigma_over_fp0 = ss_;
+  r.geometry = HS_GEOMETRY_FLAT_ROUNDED;
+  r.flat_over_a = bfs;
+  hs_ref_solution *ref = nullptr;
+  REQUIRE(hs_ref_solve(&r, 20, &ref) == HS_OK);
+  // the stick zone (its middle, next to both stick ends) and both slip zones
+  for (const double x :
+       {0.0, 0.5, -0.7, 0.9999999999, -0.99999999999, 0.99999999999, 0.9999999999999, -0.999999999998}) {
+    CAPTURE(x);
+    double qd = 0;
+    REQUIRE(hs_eval_traction(sol, 1, &x, &qd) == HS_OK);
+    char xs_[64], buf[128];
+    std::snprintf(xs_, 64, "%.45e", x);
+    REQUIRE(hs_ref_eval(ref, HS_REF_EVAL_TRACTION, xs_, buf, sizeof buf, nullptr, nullptr) == HS_OK);
+    const double qr = std::strtod(buf, nullptr), e = rel(qd, qr);
+    CAPTURE(qd);
+    CAPTURE(qr);
+    CAPTURE(S.error_estimate);
+    CHECK(e <= S.error_estimate);
+  }
+  hs_ref_solution_free(ref);
+  hs_solution_free(sol);
 }

@@ -122,10 +122,12 @@ void run_quadrature(hs_solution &h, const core::general_scene<double> &sc, int m
   o.max_iterations = max_iterations;
   o.rtol = rt;
   const auto &pm = pressure_of(h);
-  const auto &s = h.solution.emplace<core::general_solution<double>>(core::solve_general<double>(pm, sc, o));
+  auto &s = h.solution.emplace<core::general_solution<double>>(core::solve_general<double>(pm, sc, o));
   h.model_used = HS_MODEL_QUADRATURE;
-  take_estimate(h, core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q, pm.accuracy_eps(),
-                                             s.conditioning));
+  const auto e = core::quadrature_estimate(rt, s.d1() / sc.a, s.d2() / sc.a, s.width, sc.q, pm.accuracy_eps(),
+                                           s.conditioning);
+  take_estimate(h, e);
+  s.state_rtol = e.energy;  // the energies' orders need not agree beyond the state's error
 }
 
 // The quadrature, or the asymptotic edge model where that is more accurate:

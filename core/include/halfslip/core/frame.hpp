@@ -97,9 +97,13 @@ template <class Derived, class T, class Scene> struct canonical_solution {
   // Shear traction q(x) on body 1 (docs/conventions.md), generic form
   // (traction.hpp); kinks: user-frame points where the pressure is not smooth.
   T traction_generic(const T &x, const std::vector<T> &kinks = {}) const {
-    return monotonic_traction<T>([&](const T &v) { return self().pressure(v); }, scene.a, scene.f, b1(), b2(), dir1(),
-                                 dir2(), x, kinks);
+    return monotonic_traction<T>(
+        [&](const T &v, int side, const T &c) { return self().pressure_near_edge(v, side, c); }, scene.a, scene.f,
+        b1(), b2(), dir1(), dir2(), x, kinks);
   }
+  // the pressure at x, at distance c from the contact edge on `side` (user frame):
+  // solutions whose pressure can use the exact distance hide this (traction.hpp, pressure_at)
+  T pressure_near_edge(const T &x, int, const T &) const { return self().pressure(x); }
   T work(const T &x) const {
     using std::abs;
     return scene.f * self().pressure(x) * abs(slip(x));

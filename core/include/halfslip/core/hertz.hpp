@@ -276,6 +276,12 @@ template <class T> struct hertz_solution : canonical_solution<hertz_solution<T>,
     const T r = (1 - xi) * (1 + xi);
     return r > 0 ? scene.p0 * sqrt(r) : T(0);
   }
+  // at distance c from an edge (the distance exact: traction.hpp)
+  T pressure_near_edge(const T &, int, const T &c) const {
+    using std::sqrt;
+    const T dist = c / scene.a;
+    return dist > 0 && dist < 2 ? scene.p0 * sqrt(dist * (2 - dist)) : T(0);
+  }
 };
 
 // Solve a Hertz scene. Throws hs::core::error on bad input or failure.
