@@ -42,7 +42,8 @@
 //
 //   usage: estimate_sweep [--geometry hertz|flat|power|all] [--n N] [--seed S]
 //            [--time-limit SECONDS_PER_GEOMETRY] [--ref-budget S] [--double-budget S]
-//            [--csv OUT.csv] [--summary OUT.md]
+//            [--csv OUT.csv] [--summary OUT.md] [--sharp-corners]
+// --sharp-corners: the flat punch with 1 - b_f/a = 10^U(-12, -3) (default b_f/a = 0.999 U)
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -419,7 +420,7 @@ outcome run_scene(scene c, double double_budget, double ref_budget) {
 
 // ---- scenes ---------------------------------------------------------------
 
-scene make_scene(int kind, int index, std::mt19937_64 &rng) {
+scene make_scene(int kind, int index, std::mt19937_64 &rng, bool sharp = false) {
   std::uniform_real_distribution<double> U(0, 1);
   auto L = [&](double lo, double hi) { return std::pow(10.0, lo + (hi - lo) * U(rng)); };
   auto sgn = [&] { return U(rng) < 0.5 ? -1.0 : 1.0; };
@@ -427,6 +428,8 @@ scene make_scene(int kind, int index, std::mt19937_64 &rng) {
   c.kind = kind;
   c.category = index % 7;
   c.par = kind == HS_GEOMETRY_FLAT_ROUNDED ? 0.999 * U(rng) : kind == HS_GEOMETRY_POWER_LAW ? L(0, 3) : 2.0;
+  // --sharp-corners (session 20): the flat punch's corner 1e-12 to 1e-3 a wide
+  if (sharp && kind == HS_GEOMETRY_FLAT_ROUNDED) c.par = 1 - L(-12, -3);
   if (kind == HS_GEOMETRY_POWER_LAW && !(c.par > 1 && c.par < 1000)) c.par = 2;
   hs_scene_default(&c.sc);
   c.sc.a = 0.5 + 1.5 * U(rng);
@@ -553,6 +556,7 @@ std::string describe(const outcome &o) {
 
 int main(int argc, char **argv) {
   std::string geometry = "all", csv = "bench/results/estimate_sweep.csv", summary = "";
+  bool sharp = false;  // --sharp-corners: flat punch b_f/a = 1 - 10^U(-12, -3)
   int n = 10000;
   unsigned long seed = 13;
   double time_limit = 1e30, ref_budget = 20, double_budget = 120;
@@ -573,6 +577,7 @@ int main(int argc, char **argv) {
     else if (k == "--double-budget") double_budget = std::atof(next());
     else if (k == "--csv") csv = next();
     else if (k == "--summary") summary = next();
+    else if (k == "--sharp-corners") sharp = true;
     else {
       std::fprintf(stderr, "unknown argument %s\n", k.c_str());
       return 2;
@@ -605,7 +610,7 @@ int main(int argc, char **argv) {
     stats st;
     const auto t0 = clk::now();
     for (int i = 0; i < n && seconds_since(t0) < time_limit; ++i) {
-      const scene c = make_scene(kind, i, rng);
+      const scene c = make_scene(kind, i, rng, sharp);
       const outcome o = run_scene(c, double_budget, ref_budget);
       ++st.scenes;
       const bool ref_ok = o.phase_timeout == 0 && !o.crashed && o.ref.status == HS_OK && o.ref.cert >= 17;

@@ -1052,6 +1052,9 @@ TEST_CASE("issue 13: flat punch with a sharp corner next to sliding under bulk t
     CAPTURE(e1);
     CAPTURE(e2);
     CAPTURE(S.error_estimate);
+    // (every zone here is resolved: the estimate's relative bound applies to both; a = 1)
+    REQUIRE(S.d1 > S.zone_resolution);
+    REQUIRE(S.d2 > S.zone_resolution);
     CHECK(e1 <= S.error_estimate);
     CHECK(e2 <= S.error_estimate);
   }
@@ -1060,7 +1063,7 @@ TEST_CASE("issue 13: flat punch with a sharp corner next to sliding under bulk t
 // Issue 13 (session 20): the zone energies of a state known only to ~1e-7 (1 - b_f/a = 2.1e-6,
 // 1 - Q/fP = 4.1e-6: the stick zone 2.8e-4 a wide at the corner) came back NO_CONVERGENCE: the
 // orders 64 to 1024 of the fixed rules scatter by 3e-11 of E1 (the rounding of the Cauchy sums next
-// to the corner) and were asked to agree to eps^(3/4). They now need agree only to a sixteenth of
+// to the corner) and were asked to agree to eps^(3/4). They now need agree only to a 32nd of
 // the energies' estimate, which the state's own error already sets (general_solution::state_rtol).
 TEST_CASE("issue 13: zone energies agree to the state's error, not beyond (flat punch, sharp corner, near sliding)") {
   // (the second scene: the first of the test case above, whose energies failed alike)
@@ -1082,6 +1085,8 @@ TEST_CASE("issue 13: zone energies agree to the state's error, not beyond (flat 
     core::general_scene<long double> sl;
     sl.q = q;
     sl.s = s;
+    // (where long double is double the check would be the double solve's own)
+    if (std::numeric_limits<long double>::digits <= std::numeric_limits<double>::digits) continue;
     const auto b = core::solve_general(pl, sl);
     const double r1 = rel(E[0], double(b.energy(1))), r2 = rel(E[1], double(b.energy(2)));
     CAPTURE(r1);
@@ -1134,7 +1139,11 @@ TEST_CASE("issue 13: traction of slip zones 1e-13 a wide in a sharp corner, agai
     CAPTURE(qd);
     CAPTURE(qr);
     CAPTURE(S.error_estimate);
-    CHECK(e <= S.error_estimate);
+    // q has no estimate of its own: on the stick zone it moves with the zone ends, known here to
+    // 1.4e-6 (d1) and 3.9e-5 (d2) of themselves (measured against the reference; the estimate,
+    // 4.8e-2, is 16 eps over d1). Measured: 3.5e-5 at x = 0, 1e-4 next to the stick ends, 0 in
+    // the slip zones (q = f p there). The bound: 1e-3, ten times the largest.
+    CHECK(e <= 1e-3);
   }
   hs_ref_solution_free(ref);
   hs_solution_free(sol);

@@ -66,7 +66,7 @@ template <class T> class general_solution : public canonical_solution<general_so
   int max_order = 1024;  // largest order of the energies and slips (general_options::max_order)
   // The relative error of the zone energies that the caller's error estimate already
   // carries from the state (select.hpp, quadrature_estimate; 0: none): the orders of
-  // the fixed rules need agree only to a sixteenth of it (energy_tol). Issue 13: a flat
+  // the fixed rules need agree only to a 32nd of it (energy_hat_fixed). Issue 13: a flat
   // punch at 1 - b_f/a = 2e-6, Q/fP = 1 - 4e-6, whose state is good to ~1e-7, has zone
   // energies whose orders 64 to 1024 scatter by 3e-11 of the value (the rounding of the
   // Cauchy sums next to the sharp corner): "no two orders agreed", and no answer.
@@ -687,12 +687,11 @@ template <class T> class general_solution : public canonical_solution<general_so
     using std::max;
     using std::sqrt;
     const T e34 = sqrt(eps<T>() * sqrt(eps<T>()));
-    return max(max(rtol, e34), T(state_rtol / 16));
+    return max(rtol, e34);
   }
-  template <class F> T by_order(const F &f) const {
+  template <class F> T by_order(const F &f, const T &tol) const {
     using std::abs;
     using std::max;
-    const T tol = energy_tol();
     int M = 4;
     {
       using std::log10;
@@ -735,12 +734,15 @@ template <class T> class general_solution : public canonical_solution<general_so
   T energy_hat_fixed(int z) const {
     if (!(zone_length(z) > 0)) return T(0);
     if (point_stick()) return continued([&](const general_solution &g) { return g.energy_hat_fixed(z); });
-    return by_order([&](int M) { return energy_hat_order(z, M); });
+    // (the state's own error, state_rtol, sets the floor: the estimate carries it; the slips
+    // have no estimate of their own and keep energy_tol)
+    using std::max;
+    return by_order([&](int M) { return energy_hat_order(z, M); }, max(energy_tol(), T(state_rtol / 32)));
   }
   T hhat_fixed(int z, const T &dl) const {
     if (!(dl > 0) || !(zone_length(z) > 0)) return T(0);
     if (point_stick()) return continued([&](const general_solution &g) { return g.hhat_fixed(z, dl); });
-    return by_order([&](int M) { return hhat_order(z, dl, M); });
+    return by_order([&](int M) { return hhat_order(z, dl, M); }, energy_tol());
   }
   // theta = asin(sqrt(dl/d)) of the point at distance dl from the stick edge
   // of zone z (from the nearer end, without cancellation)

@@ -1003,14 +1003,26 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     // itself, and the answer was off by 1.1e-7 against an estimate of 1.8e-8). So at a floor the
     // zones' move to the root at 2n must be within the resolution the estimate assumes
     // (16 tol_step a), or, at the grain, have stopped shrinking (the rounding's own floor: it is
-    // then part of the conditioning below).
+    // then part of the conditioning below, enlarged where it shrank by less than half: a
+    // ratio rho to the move before leaves the root ~rho/(1 - rho) moves from the limit). At the
+    // order limit a state at a floor is taken with its move in the conditioning.
     if (!accept) {
       const bool at_grain = rn <= 4 * r2.grain, stalled = prev_rn >= 0 && rn > prev_rn / 4;
       if (at_grain || stalled) {
+        using std::expm1;
         const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
-        move = abs(x.x1) + st.e * abs(x.x2);
-        accept = x.det != 0 && (move <= 16 * tol_step || (at_grain && prev_move >= 0 && move > prev_move / 4));
+        move = abs(x.x1) + st.e * abs(T(expm1(x.x2)));
+        const bool shrinking = !(prev_move >= 0 && move > prev_move / 4);
+        const bool at_limit = 4 * n > opt.max_order;
+        accept = x.det != 0 && (move <= 16 * tol_step || (at_grain && !shrinking) ||
+                                 (at_limit && move < std::numeric_limits<T>::infinity()));
+        if (accept && prev_move > 0 && move < prev_move) {
+          const T rho = move / prev_move;
+          if (rho > T(0.5)) move *= rho / (1 - rho);
+        }
         prev_move = move;
+      } else {
+        prev_move = -1;
       }
     }
     prev_rn = rn;
@@ -1053,6 +1065,8 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
       // b_f/a = 0.95, 1 - Q/fP = 1e-13, sigma/fp0 = 1): the bracketed polish, then
       // the order control goes on
       st = before;
+      // (the floors' bookkeeping restarts: the state below is not the root at the order before)
+      prev_rn = prev_move = -1;
       if (gdetail::polish_applies(q, st) && gdetail::polish_near_sliding(P, q, s, st, max(2 * n, 128))) continue;
       // the Jacobian can be far from the residual's (curve_local): the curve near the state
       // at the order below, by brackets, which stand where Newton cannot improve on them
