@@ -439,35 +439,6 @@ TEST_CASE("printed eqs (23)/(24) against quadrature of (11)/(12); corrected form
   }
 }
 
-// ---------------------------------------------------------------------------
-TEST_CASE("threads: many threads solving different scenes give bitwise the single-thread results") {
-  hs_test::rng r(31);
-  struct scene {
-    double q, s;
-  };
-  std::vector<scene> scenes;
-  for (int i = 0; i < 64; ++i) scenes.push_back({r.uniform(-0.95, 0.95), r.uniform(-6, 6)});
-  auto digest = [](const scene &c) {
-    const auto sol = solve(c.q, c.s);
-    const double x1 = sol.b1() + 0.5 * sol.d1(), x2 = -sol.b2() - 0.5 * sol.d2();
-    return std::vector<double>{sol.b1(),   sol.b2(),     sol.d1(),     sol.d2(),      sol.Bx(x1),
-                               sol.Bx(x2), sol.slip(x1), sol.slip(x2), sol.energy(1), sol.energy(2)};
-  };
-  std::vector<std::vector<double>> serial;
-  for (const auto &c : scenes) serial.push_back(digest(c));
-  for (int rep = 0; rep < 2; ++rep) {
-    std::vector<std::vector<double>> par(scenes.size());
-    std::vector<std::thread> pool;
-    for (int t = 0; t < 4; ++t)
-      pool.emplace_back([&, t] {
-        for (size_t i = size_t(t); i < scenes.size(); i += 4) par[i] = digest(scenes[i]);
-      });
-    for (auto &th : pool) th.join();
-    for (size_t i = 0; i < scenes.size(); ++i)
-      CHECK(std::memcmp(par[i].data(), serial[i].data(), serial[i].size() * sizeof(double)) == 0);
-  }
-}
-
 // Issue 16 (slip at a point): hertz_solution::hhat reads 1 + 2G/pi, times
 // (sinh tau/tau)^2, from a Chebyshev table built once per zone and kept with
 // the solution (opposite_zone_integrals::tabulate_g, zones with tau(L) <= 2),

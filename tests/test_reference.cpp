@@ -166,29 +166,6 @@ TEST_CASE("agreeing_digits counts correctly rounded digits") {
   CHECK(ref::agreeing_digits("2", "1", 7) == 0);
 }
 
-TEST_CASE("two threads at different precisions give the results they give alone") {
-  ref::text_scene t;
-  t.q = "0.3";
-  t.s = "2";
-  auto run = [&](int digits) {
-    const ref::solution s(t, digits);
-    return s.value(ref::quantity::b1).text + s.value(ref::quantity::d2).text + s.value(ref::quantity::energy2).text;
-  };
-  const int hi_digits = std::min(150, ref::max_digits());  // short tier ladders in sanitizer builds
-  const std::string alone40 = run(40), alone150 = run(hi_digits);
-  for (int rep = 0; rep < 3; ++rep) {
-    std::string r40, r150;
-    std::thread a([&] {
-      for (int k = 0; k < 3; ++k) r40 = run(40);
-    });
-    std::thread b([&] { r150 = run(hi_digits); });
-    a.join();
-    b.join();
-    CHECK(r40 == alone40);
-    CHECK(r150 == alone150);
-  }
-}
-
 TEST_CASE("the core is generic: cpp_bin_float_50 archetype agrees with MPFR at 50 digits") {
   using bf = boost::multiprecision::cpp_bin_float_50;
   core::hertz_scene<bf> sc;
