@@ -4,7 +4,8 @@
 #   2. valgrind memcheck on the C ABI test program
 #   3. one clang build with AddressSanitizer + UndefinedBehaviorSanitizer (every check) and
 #      libFuzzer's coverage instrumentation of the library itself, which serves
-#      a. the C ABI suites (test_capi, test_contract) and every fuzz corpus input run once, and
+#      a. the C test program (test_capi, against the static library) and every fuzz corpus input
+#         run once, and
 #      b. a bounded libFuzzer run of every target in tests/fuzz/: the double and the reference
 #         C ABI, sampled and callback pressures, load histories, the dimensional entry points,
 #         the asymptotic model, the reference field evaluations, and the CLI's pressure-file
@@ -55,15 +56,15 @@ valgrind --quiet --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=de
 stage_time "stage 2"
 
 fuzz_targets=(solve ref samples pressure_file history callback dimensional asymptotic ref_fields cli_args)
-echo "== reliability 3/3: clang ASan + UBSan: the C ABI suites, the fuzz corpora, then libFuzzer ${HS_FUZZ_SECONDS:-6} s per target"
+echo "== reliability 3/3: clang ASan + UBSan: the C test program, the fuzz corpora, then libFuzzer ${HS_FUZZ_SECONDS:-6} s per target"
 # (the Fortran module is left out: gfortran takes neither clang's sanitizer runtime nor
 # -fsanitize=fuzzer-no-link; the release ctest and valgrind cover it)
 cmake -S . -B build-fuzz "${common[@]}" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DHALFSLIP_FUZZ=ON \
   -DHALFSLIP_BUILD_TESTS=ON -DHALFSLIP_BUILD_CLI=OFF -DHALFSLIP_BUILD_FORTRAN=OFF \
   -DHALFSLIP_SANITIZE=address,undefined >/dev/null
-cmake --build build-fuzz -j "$jobs" --target "${fuzz_targets[@]/#/fuzz_}" test_capi test_contract >/dev/null
+cmake --build build-fuzz -j "$jobs" --target "${fuzz_targets[@]/#/fuzz_}" test_capi >/dev/null
 stage_time "clang sanitizer build"
-(cd build-fuzz && env "${sanitizer_env[@]}" ctest --output-on-failure -j "$jobs" -R '^(capi|contract)$')
+(cd build-fuzz && env "${sanitizer_env[@]}" ctest --output-on-failure -R '^capi$')
 # every corpus input once (slow-* included), by the fuzz targets themselves (a file argument runs
 # that input once), two targets at a time
 printf '%s\n' "${fuzz_targets[@]}" | xargs -P "$jobs" -I{} sh -c \
