@@ -35,8 +35,8 @@ struct ref_values {
 };
 
 // reference values of a scene (Hertz, or another geometry with its parameter as text)
-ref_values reference_values(double q, double s, int geometry = HS_GEOMETRY_HERTZ, const char *flat = nullptr,
-                            int digits = 30) {
+// The reference solution of a scene, the doubles given as their exact decimals (the caller frees it).
+hs_ref_solution *reference_solution(double q, double s, int geometry, const char *flat, int digits) {
   hs_ref_scene r;
   hs_ref_scene_default(&r);
   char qs[64], ss[64];
@@ -48,12 +48,19 @@ ref_values reference_values(double q, double s, int geometry = HS_GEOMETRY_HERTZ
   if (flat) r.flat_over_a = flat;
   hs_ref_solution *sol = nullptr;
   REQUIRE(hs_ref_solve(&r, digits, &sol) == HS_OK);
-  auto get = [&](int what) {
-    char buf[128];
-    REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, nullptr) == HS_OK);
-    return std::strtod(buf, nullptr);
-  };
-  ref_values v{get(HS_REF_D1), get(HS_REF_D2), get(HS_REF_ENERGY1), get(HS_REF_ENERGY2)};
+  return sol;
+}
+double reference_value(const hs_ref_solution *sol, int what) {
+  char buf[128];
+  REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, nullptr) == HS_OK);
+  return std::strtod(buf, nullptr);
+}
+
+ref_values reference_values(double q, double s, int geometry = HS_GEOMETRY_HERTZ, const char *flat = nullptr,
+                            int digits = 30) {
+  hs_ref_solution *sol = reference_solution(q, s, geometry, flat, digits);
+  ref_values v{reference_value(sol, HS_REF_D1), reference_value(sol, HS_REF_D2), reference_value(sol, HS_REF_ENERGY1),
+               reference_value(sol, HS_REF_ENERGY2)};
   hs_ref_solution_free(sol);
   return v;
 }
@@ -996,23 +1003,8 @@ TEST_CASE("issue 13: flat punch with a sharp corner, slip zones inside it at sma
 namespace {
 // d1, d2 of the reference at `digits` (no energies: those are the reference's slow part)
 std::pair<double, double> reference_zones(double q, double s, int geometry, const char *par, int digits = 20) {
-  hs_ref_scene r;
-  hs_ref_scene_default(&r);
-  char qs[64], ss[64];
-  std::snprintf(qs, 64, "%.45e", q);
-  std::snprintf(ss, 64, "%.45e", s);
-  r.Q_over_fP = qs;
-  r.sigma_over_fp0 = ss;
-  r.geometry = geometry;
-  r.flat_over_a = par;
-  hs_ref_solution *sol = nullptr;
-  REQUIRE(hs_ref_solve(&r, digits, &sol) == HS_OK);
-  auto get = [&](int what) {
-    char buf[128];
-    REQUIRE(hs_ref_value(sol, what, buf, sizeof buf, nullptr, nullptr) == HS_OK);
-    return std::strtod(buf, nullptr);
-  };
-  const std::pair<double, double> v{get(HS_REF_D1), get(HS_REF_D2)};
+  hs_ref_solution *sol = reference_solution(q, s, geometry, par, digits);
+  const std::pair<double, double> v{reference_value(sol, HS_REF_D1), reference_value(sol, HS_REF_D2)};
   hs_ref_solution_free(sol);
   return v;
 }
@@ -1114,18 +1106,9 @@ TEST_CASE("issue 13: traction of slip zones 1e-13 a wide in a sharp corner, agai
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CAPTURE(secs);
   CHECK(secs < 20.0);  // hang guard (0.2 s in the release build; bench/ measures speed)
-  hs_ref_scene r;
-  hs_ref_scene_default(&r);
-  char qs_[64], ss_[64], bfs[64];
-  std::snprintf(qs_, 64, "%.45e", q);
-  std::snprintf(ss_, 64, "%.45e", s);
+  char bfs[64];
   std::snprintf(bfs, 64, "%.45e", bf);
-  r.Q_over_fP = qs_;
-  r.sigma_over_fp0 = ss_;
-  r.geometry = HS_GEOMETRY_FLAT_ROUNDED;
-  r.flat_over_a = bfs;
-  hs_ref_solution *ref = nullptr;
-  REQUIRE(hs_ref_solve(&r, 20, &ref) == HS_OK);
+  hs_ref_solution *ref = reference_solution(q, s, HS_GEOMETRY_FLAT_ROUNDED, bfs, 20);
   // the stick zone (its middle, next to both stick ends) and both slip zones
   for (const double x :
        {0.0, 0.5, -0.7, 0.9999999999, -0.99999999999, 0.99999999999, 0.9999999999999, -0.999999999998}) {
