@@ -16,6 +16,7 @@
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
@@ -971,6 +972,26 @@ TEST_CASE("issue 13: power law n -> 1, stick end next to the pressure's cusp: pa
 // coordinates near the edge), 5e-9 of d: the estimate must cover it. The reference is given the
 // double value of b_f/a exactly (a decimal of 45 digits): the zones scale with the corner width
 // 1 - b_f/a, which the decimal 0.99999999 and its double differ in by ~1e-9.
+namespace {
+// the flat punch (b_f/a = bf) by the default model: its summary, and the zone energies into E where given
+hs_summary flat_default_summary(double bf, double q, double s, double *E = nullptr) {
+  hs_solution *sol = nullptr;
+  REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, bf, q, s, HS_MODEL_DEFAULT, &sol) == HS_OK);
+  const hs_summary S = summary(sol);
+  const int st = E ? hs_solution_energy(sol, E) : HS_OK;
+  hs_solution_free(sol);
+  REQUIRE(st == HS_OK);
+  return S;
+}
+
+// a double's exact value as a decimal (45 digits), for the reference's geometry parameter
+std::string exact_decimal(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.45e", v);
+  return buf;
+}
+}  // namespace
+
 TEST_CASE("issue 13: flat punch with a sharp corner, slip zones inside it at small sigma, against the reference") {
   struct scene {
     double bf, q, s;
@@ -980,15 +1001,9 @@ TEST_CASE("issue 13: flat punch with a sharp corner, slip zones inside it at sma
     CAPTURE(c.bf);
     CAPTURE(c.q);
     CAPTURE(c.s);
-    hs_solution *sol = nullptr;
-    REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, c.bf, c.q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
-    const hs_summary S = summary(sol);
     double E[2] = {-1, -1};
-    REQUIRE(hs_solution_energy(sol, E) == HS_OK);
-    hs_solution_free(sol);
-    char bf[64];
-    std::snprintf(bf, sizeof bf, "%.45e", c.bf);
-    const ref_values R = reference_values(c.q, c.s, HS_GEOMETRY_FLAT_ROUNDED, bf, 20);
+    const hs_summary S = flat_default_summary(c.bf, c.q, c.s, E);
+    const ref_values R = reference_values(c.q, c.s, HS_GEOMETRY_FLAT_ROUNDED, exact_decimal(c.bf).c_str(), 20);
     const double e1 = rel(S.d1, R.d1), e2 = rel(S.d2, R.d2);
     CHECK(e1 <= S.error_estimate);
     CHECK(e2 <= S.error_estimate);
@@ -1033,13 +1048,8 @@ TEST_CASE("issue 13: flat punch with a sharp corner next to sliding under bulk t
     CAPTURE(c.bf);
     CAPTURE(c.q);
     CAPTURE(c.s);
-    hs_solution *sol = nullptr;
-    REQUIRE(solve_geometry(HS_GEOMETRY_FLAT_ROUNDED, c.bf, c.q, c.s, HS_MODEL_DEFAULT, &sol) == HS_OK);
-    const hs_summary S = summary(sol);
-    hs_solution_free(sol);
-    char bf[64];
-    std::snprintf(bf, sizeof bf, "%.45e", c.bf);
-    const auto R = reference_zones(c.q, c.s, HS_GEOMETRY_FLAT_ROUNDED, bf);
+    const hs_summary S = flat_default_summary(c.bf, c.q, c.s);
+    const auto R = reference_zones(c.q, c.s, HS_GEOMETRY_FLAT_ROUNDED, exact_decimal(c.bf).c_str());
     const double e1 = rel(S.d1, R.first), e2 = rel(S.d2, R.second);
     CAPTURE(e1);
     CAPTURE(e2);
@@ -1106,18 +1116,15 @@ TEST_CASE("issue 13: traction of slip zones 1e-13 a wide in a sharp corner, agai
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CAPTURE(secs);
   CHECK(secs < 20.0);  // hang guard (0.2 s in the release build; bench/ measures speed)
-  char bfs[64];
-  std::snprintf(bfs, 64, "%.45e", bf);
-  hs_ref_solution *ref = reference_solution(q, s, HS_GEOMETRY_FLAT_ROUNDED, bfs, 20);
+  hs_ref_solution *ref = reference_solution(q, s, HS_GEOMETRY_FLAT_ROUNDED, exact_decimal(bf).c_str(), 20);
   // the stick zone (its middle, next to both stick ends) and both slip zones
   for (const double x :
        {0.0, 0.5, -0.7, 0.9999999999, -0.99999999999, 0.99999999999, 0.9999999999999, -0.999999999998}) {
     CAPTURE(x);
     double qd = 0;
     REQUIRE(hs_eval_traction(sol, 1, &x, &qd) == HS_OK);
-    char xs_[64], buf[128];
-    std::snprintf(xs_, 64, "%.45e", x);
-    REQUIRE(hs_ref_eval(ref, HS_REF_EVAL_TRACTION, xs_, buf, sizeof buf, nullptr, nullptr) == HS_OK);
+    char buf[128];
+    REQUIRE(hs_ref_eval(ref, HS_REF_EVAL_TRACTION, exact_decimal(x).c_str(), buf, sizeof buf, nullptr, nullptr) == HS_OK);
     const double qr = std::strtod(buf, nullptr), e = rel(qd, qr);
     CAPTURE(qd);
     CAPTURE(qr);

@@ -992,6 +992,8 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     const T rn = gdetail::residual_norm(r2);
     bool accept = rn <= qtol;
     T move = 0;
+    // the Newton correction to the root at 2n (the move below and the final step)
+    const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
     // Above qtol, at a floor: the residual's grain in the state, or a residual that no longer
     // shrinks with the order (the rounding of the sums: flat punch b_f/a = 0.012, Q/fP = -0.28,
     // sigma/fp0 = -404, a point stick continued in ln e, whose F1 sat at 2.6e-11 and 3.6e-11 at
@@ -1010,7 +1012,6 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
       const bool at_grain = rn <= 4 * r2.grain, stalled = prev_rn >= 0 && rn > prev_rn / 4;
       if (at_grain || stalled) {
         using std::expm1;
-        const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
         move = abs(x.x1) + st.e * abs(T(expm1(x.x2)));
         const bool shrinking = !(prev_move >= 0 && move > prev_move / 4);
         const bool at_limit = 4 * n > opt.max_order;
@@ -1027,7 +1028,6 @@ template <class T> general_solution<T> solve_general(const pressure_model<T> &pm
     }
     prev_rn = rn;
     if (accept) {
-      const auto x = solve2x2(r2.J11, r2.J12, r2.J21, r2.J22, r2.F1, r2.F2);
       // the zones' conditioning (issue 13): residuals known to n1 (F1, with its
       // pi s/4 term) and n2 (F2, the moment: no s), each the step tolerance
       // (acc eps) in units of its terms, move x1 and ln e by J^-1 of them; d1 = |x1|
