@@ -1124,7 +1124,8 @@ TEST_CASE("issue 13: traction of slip zones 1e-13 a wide in a sharp corner, agai
     double qd = 0;
     REQUIRE(hs_eval_traction(sol, 1, &x, &qd) == HS_OK);
     char buf[128];
-    REQUIRE(hs_ref_eval(ref, HS_REF_EVAL_TRACTION, exact_decimal(x).c_str(), buf, sizeof buf, nullptr, nullptr) == HS_OK);
+    REQUIRE(hs_ref_eval(ref, HS_REF_EVAL_TRACTION, exact_decimal(x).c_str(), buf, sizeof buf, nullptr, nullptr) ==
+            HS_OK);
     const double qr = std::strtod(buf, nullptr), e = rel(qd, qr);
     CAPTURE(qd);
     CAPTURE(qr);

@@ -112,7 +112,7 @@ const char *kUsage =
     "  --segments-per-cycle M  chords per cycle when Q and sigma are out of phase (default 64)\n"
     "  --max-step H            first load step in max(|dQ/fP|, |dsigma/fp0|/4) (default 1/32)\n"
     "  --rtol R                halve the step until steps h and 2h agree to R (default 1e-8; 0: fixed)\n"
-    "  --steady-rtol R         steady when zone ends and energies repeat to R (default 1e-9)\n"
+    "  --steady-rtol R         steady when zone ends and energies repeat to R (default 1e-6)\n"
     "  --interior-patches P    error (default): stop where a third slip zone would open inside the stick\n"
     "                          zone; merge: merge it with the edge zone (approximate, counted per vertex)\n"
     "  --points N              q(x) and slip h(x) at N points across the contact (and the slip range)\n"
@@ -1044,6 +1044,8 @@ int cmd_history(int argc, char **argv) {
           cs.cycles, cs.cycles_to_steady < 0 ? "null" : std::to_string(cs.cycles_to_steady).c_str(),
           cs.shakedown ? "true" : "false", num(cs.energy_per_cycle1).c_str(), num(cs.energy_per_cycle2).c_str(),
           num(cs.energy_per_cycle_patch).c_str());
+      std::printf(", \"cycles_repeated\": %d, \"repeated_change\": %s", cs.cycles_repeated,
+                  num(cs.repeated_change).c_str());
       if (have_closed)
         std::printf(
             ", \"closed_form_valid\": %s, \"closed_form_energy_per_cycle1\": %s, "
@@ -1114,6 +1116,11 @@ int cmd_history(int argc, char **argv) {
                   cs.energy_per_cycle2);
       if (cs.energy_per_cycle_patch != 0) std::printf(", interior slip zones %.10g", cs.energy_per_cycle_patch);
       std::printf("\n");
+      if (cs.cycles_repeated > 0)
+        std::printf(
+            "the last %d cycle%s copies of the one before, which left the state as it found it (to %.2g; "
+            "docs/history.md, \"The steady cycle\")\n",
+            cs.cycles_repeated, cs.cycles_repeated > 1 ? "s are" : " is", cs.repeated_change);
       if (have_closed && closed.valid)
         std::printf("closed form (Ciavarella-Jager, steady from the first reversal): zone 1 %.10g, zone 2 %.10g\n",
                     closed.energy_per_cycle1, closed.energy_per_cycle2);

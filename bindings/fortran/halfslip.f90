@@ -220,6 +220,8 @@ module halfslip
     integer(c_int)    :: cycles = 0, cycles_to_steady = -1, shakedown = 0
     real(c_double)    :: energy_per_cycle1 = 0, energy_per_cycle2 = 0
     real(c_double)    :: energy_per_cycle_patch = 0  ! in interior slip zones
+    integer(c_int)    :: cycles_repeated = 0       ! cycles copied from a steady one (session 21)
+    real(c_double)    :: repeated_change = 0       ! that cycle's change of the state
   end type hs_cycle_summary
 
   type, bind(c), public :: hs_steady_cycle

@@ -65,6 +65,10 @@ struct hs_history {
     double E1 = 0, E2 = 0;  // the segment ending here, canonical units
     double Ep = 0;          // ... in an interior slip zone (core/static_patch.hpp)
     int cycle = 0;          // periodic loading: the cycle this vertex belongs to (0: none)
+    // a copy of a steady cycle's vertex (core::add_cycles): its loads (snap is the original's), and
+    // what the copy adds to the error estimate (0: the copied cycle is steady to its tolerance)
+    bool copy = false;
+    double q = 0, s = 0, copy_estimate = 0;
   };
   std::vector<static_vertex_rec> static_vertices;
   // The march's disagreement with the superposition or the static solves on the vertices they
@@ -547,6 +551,74 @@ struct static_cycles_adapter {
   void tag_last_vertex(int c) { h.static_vertices.back().cycle = c; }
   double q() const { return h.input.empty() ? 0.0 : h.input.back().first; }
   double s() const { return h.input.empty() ? 0.0 : h.input.back().second; }
+
+  // The steady cycle (core::add_cycles, hdetail::repeats_cycles). The change of the state over the
+  // cycle whose vertices start at first: the larger of the ends' moves (over a) and the L1 distance
+  // of the tractions over the contact, relative to that of the friction limit p (2001 points:
+  // the difference of two states, so its sampling error is relative to it). -1 where no point
+  // stays stuck through the cycle (the intersection of the stick zones of its start and every
+  // vertex, less the interior slip zones open at them, is empty; a segment that dissipated in a
+  // patch closed by its vertex counts as covering the whole stick zone): the slip over the cycle
+  // could then be a rigid drift, which copies would not carry.
+  double cycle_change(size_t first) const {
+    const auto &V = h.static_vertices;
+    if (first == 0 || first > V.size() || V.size() - first < 2) return -1;
+    const auto &A = *V[first - 1].snap, &B = *V.back().snap;
+    double lo = -A.b2(), hi = A.b1();
+    std::vector<std::pair<double, double>> patches;
+    for (size_t k = first - 1; k < V.size(); ++k) {
+      const auto &st = *V[k].snap;
+      lo = std::max(lo, -st.b2());
+      hi = std::min(hi, st.b1());
+      if (st.patch_dir() != 0) patches.push_back({st.patch_l(), st.patch_r()});
+      else if (k >= first && V[k].Ep != 0) return -1;
+    }
+    // (a point of (lo, hi) outside every patch: a gap left of the next patch, or right of all)
+    std::sort(patches.begin(), patches.end());
+    double at = lo;
+    bool stuck = false;
+    for (const auto &p : patches) {
+      if (p.first > at) {
+        stuck = at < hi;
+        break;
+      }
+      at = std::max(at, p.second);
+    }
+    if (!stuck) stuck = at < hi;
+    if (!(hi > lo) || !stuck) return -1;
+    const int n = 2000;
+    double dq = 0, pl = 0;
+    for (int i = 0; i <= n; ++i) {
+      const double x = -1 + 2.0 * i / n, w = (i == 0 || i == n) ? 0.5 : 1.0;
+      dq += w * std::fabs(B.traction(x) - A.traction(x));
+      pl += w * std::fabs(A.pressure().p(x));
+    }
+    const double d = std::max({std::fabs(B.b1() - A.b1()), std::fabs(B.b2() - A.b2()), pl > 0 ? dq / pl : dq});
+    return std::isfinite(d) ? d : -1;
+  }
+  double state_accuracy() const { return h.march_rtol; }
+  // back to the first n vertices (a cycle that failed part way)
+  void truncate(size_t n) {
+    h.static_vertices.resize(n);
+    h.input.resize(n);
+    vs.resize(n);
+    if (n > 0) h.st = h.static_vertices.back().snap;
+  }
+  // vertices [first, end) again, as cycle c
+  void repeat_cycle(size_t first, size_t end, int c, double extra) {
+    for (size_t k = first; k < end; ++k) {
+      hs_history::static_vertex_rec rec = h.static_vertices[k];
+      rec.copy = true;
+      rec.q = h.input[k].first;
+      rec.s = h.input[k].second;
+      rec.copy_estimate = std::max(rec.copy_estimate, extra);
+      rec.cycle = c;
+      h.input.push_back(h.input[k]);
+      h.static_vertices.push_back(rec);
+      vs.push_back(of(rec));
+    }
+    h.st = h.static_vertices.back().snap;
+  }
 };
 
 // core::add_cycles on one of the cheaper methods (its adapter); on any failure the history is
@@ -685,8 +757,8 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *user
     if (h->static_mode) {  // static solves: within rtol of the exact static solve (tests/test_static_history.cpp), no steps
       const auto &v = h->static_vertices[i];
       const auto &st = *v.snap;
-      out->Q_over_fP = st.q();
-      out->sigma_over_fp0 = st.s();
+      out->Q_over_fP = v.copy ? v.q : st.q();
+      out->sigma_over_fp0 = v.copy ? v.s : st.s();
       out->b1 = sc.a * st.b1();
       out->b2 = sc.a * st.b2();
       out->slip_dir1 = st.b1() < 1 ? st.dir1() : 0;
@@ -696,7 +768,8 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *user
       out->cycle = v.cycle;
       out->steps = 0;
       out->step = 0;
-      out->error_estimate = h->march_rtol;  // the accuracy the static solves were set to (for_rtol)
+      // the accuracy the static solves were set to (for_rtol), and a copied cycle's distance
+      out->error_estimate = h->march_rtol + v.copy_estimate;
       out->interior_merges = 0;
       out->patch_dir = st.patch_dir();
       out->patch_l = st.patch_dir() ? sc.a * st.patch_l() : 0.0;
@@ -795,7 +868,7 @@ int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
       auto r = std::make_unique<hs_solution>();
       r->solution.emplace<hs::capi::static_state>(h->static_vertices[vertex].snap, h->scene);
       r->model_used = 0;
-      r->error_estimate = h->march_rtol;
+      r->error_estimate = h->march_rtol + h->static_vertices[vertex].copy_estimate;
       *out = r.release();
       return;
     }
@@ -813,8 +886,9 @@ int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *user) {
   return guard([&] {
     require(h != nullptr && user != nullptr, core::status::null_pointer, "NULL");
     const size_t size = user->struct_size;
-    require(size == sizeof *user || size == sizeof(cycle_summary_v040), core::status::struct_size,
-            "summary struct_size");
+    require(size == sizeof *user || size == sizeof(cycle_summary_v040) ||
+                size == offsetof(hs_cycle_summary, cycles_repeated),
+            core::status::struct_size, "summary struct_size");
     hs_cycle_summary full{};
     full.struct_size = size;
     hs_cycle_summary *out = &full;
@@ -827,6 +901,8 @@ int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *user) {
     out->energy_per_cycle1 = escale * h->cycles.energy1;
     out->energy_per_cycle2 = escale * h->cycles.energy2;
     out->energy_per_cycle_patch = escale * h->cycles.energyp;
+    out->cycles_repeated = h->cycles.cycles_repeated;
+    out->repeated_change = h->cycles.repeated_change;
     std::memcpy(static_cast<void *>(user), &full, std::min(size, sizeof full));
   });
 }

@@ -838,11 +838,16 @@ patch_l, patch_r) with the energy dissipated in interior slip zones over the
 segment (energy_patch, not part of energy1, energy2)."""
 
 CycleSummary = collections.namedtuple(
-    "CycleSummary", "cycles cycles_to_steady shakedown energy_per_cycle1 energy_per_cycle2 energy_per_cycle_patch")
+    "CycleSummary",
+    "cycles cycles_to_steady shakedown energy_per_cycle1 energy_per_cycle2 energy_per_cycle_patch "
+    "cycles_repeated repeated_change")
 CycleSummary.__doc__ = """Periodic loading of a History (struct hs_cycle_summary): cycles computed,
 the first cycle that the next repeats (-1: not reached), whether the last
 cycle dissipates nothing, and the energy of each zone over the last cycle
-(energy_per_cycle_patch: in interior slip zones)."""
+(energy_per_cycle_patch: in interior slip zones), and how many cycles were
+copies of a cycle that left the state as it found it (cycles_repeated), with
+that cycle's change of the state (repeated_change; docs/history.md, "The
+steady cycle")."""
 
 
 class History(_Handle):
@@ -1043,7 +1048,7 @@ class History(_Handle):
         c.struct_size = ctypes.sizeof(c)
         self._status(_lib.hs_history_cycle_summary(self._handle(), byref(c)), "hs_history_cycle_summary")
         return CycleSummary(c.cycles, c.cycles_to_steady, bool(c.shakedown), c.energy_per_cycle1,
-                            c.energy_per_cycle2, c.energy_per_cycle_patch)
+                            c.energy_per_cycle2, c.energy_per_cycle_patch, c.cycles_repeated, c.repeated_change)
 
     def slip_range(self, x):
         """Slip range max h - min h over the vertices of the last cycle, at x."""

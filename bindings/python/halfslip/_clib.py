@@ -185,6 +185,8 @@ class CycleSummary(ctypes.Structure):
         ("energy_per_cycle1", c_double),
         ("energy_per_cycle2", c_double),
         ("energy_per_cycle_patch", c_double),  # after 0.4.0
+        ("cycles_repeated", c_int),  # session 21
+        ("repeated_change", c_double),
     ]
 
 

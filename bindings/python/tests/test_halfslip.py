@@ -90,7 +90,8 @@ class TestLibraryAndVersion(unittest.TestCase):
         self.assertEqual(ctypes.sizeof(halfslip._clib.HistoryOptions), 8 + 8 + 3 * 4 + 4 + 8 + 8 + 4 + 4)  # interior_patches + padding
         self.assertEqual(ctypes.sizeof(halfslip._clib.HistoryVertex),
                          8 + 4 * 8 + 2 * 4 + 2 * 8 + 4 + 4 + 8 + 2 * 8 + 8 + 4 + 4 + 3 * 8)  # + the patch
-        self.assertEqual(ctypes.sizeof(halfslip._clib.CycleSummary), 8 + 3 * 4 + 4 + 3 * 8)
+        self.assertEqual(ctypes.sizeof(halfslip._clib.CycleSummary),
+                         8 + 3 * 4 + 4 + 3 * 8 + 4 + 4 + 8)  # + cycles_repeated, padding, repeated_change
         # a drifted layout is caught at load time: a copy of the package whose
         # hs_scene has one field too many does not import
         with tempfile.TemporaryDirectory() as tmp:
@@ -756,6 +757,23 @@ class TestHistory(unittest.TestCase):
             self.assertEqual(cm.exception.status, halfslip.ERR_NOT_APPLICABLE)
             e = sum(v.energy1 for v in h.vertices[3:6])
             self.assertAlmostEqual(e, 4 * E1, delta=1e-4 * 4 * E1)
+
+    def test_periodic_copies_of_a_steady_cycle(self):
+        # Q and sigma out of phase about zero means (issue 14, session 21): the history
+        # stopped in its steady cycle; a cycle that leaves the state as it found it is now
+        # copied, not solved again (docs/history.md, "The steady cycle")
+        with halfslip.History() as h:
+            h.add_cycles(0.0, 0.1, 0.0, 0.3, 45.0, 4)
+            cs = h.cycle_summary()
+            self.assertEqual(cs.cycles, 4)
+            self.assertGreaterEqual(cs.cycles_repeated, 1)
+            self.assertTrue(0 <= cs.repeated_change <= 1e-6)
+            vs = h.vertices
+            self.assertEqual(len(vs), 1 + 64 * 4)
+            self.assertEqual(vs[-1].cycle, 4)
+            self.assertEqual(vs[-1].b1, vs[-65].b1)
+            self.assertEqual(vs[-1].energy1, vs[-65].energy1)
+            self.assertGreaterEqual(vs[-1].error_estimate, vs[-65].error_estimate)
 
     def test_slip_range_of_a_single_cycle_from_zero(self):
         # a cycle that starts the history (zero means, no ramp vertex): the

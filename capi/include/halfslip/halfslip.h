@@ -534,6 +534,12 @@ typedef struct hs_cycle_summary {
   double energy_per_cycle2;
   double energy_per_cycle_patch; /* in interior slip zones over the last cycle (added after 0.4.0; a caller's
                                     struct from 0.4.0, struct_size = its sizeof, gets the fields above) */
+  /* added after 0.4.0, session 21 (a struct_size of offsetof(hs_cycle_summary, cycles_repeated) gets the
+     fields above): cycles taken as copies of a cycle that left the state as it found it, not solved
+     again, and that cycle's change of the state (ends over a, traction relative to the friction
+     limit's; 0 without copies). docs/history.md, "The steady cycle" */
+  int cycles_repeated;
+  double repeated_change;
 } hs_cycle_summary;
 HS_EXPORT int hs_history_cycle_summary(const hs_history *h, hs_cycle_summary *out);
 /* Slip range max h - min h over the vertices of the last cycle, at n points. */

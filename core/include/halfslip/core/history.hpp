@@ -37,6 +37,8 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <boost/math/tools/roots.hpp>
@@ -1661,6 +1663,10 @@ enum class ramp_order { sigma_first = 0, together = 1, q_first = 2 };
 template <class T> struct cycle_result {
   int cycles = 0;
   int cycles_to_steady = -1;                        // first cycle that the next repeats; -1: not reached
+  // cycles taken as copies of the last one solved (a history whose adapter repeats cycles, below):
+  // how many, and the state's change over that cycle they are copies of (0: none)
+  int cycles_repeated = 0;
+  T repeated_change{0};
   bool shakedown = false;                           // the last cycle dissipates nothing
   T energy1{0}, energy2{0};                         // over the last cycle
   T energyp{0};                                     // ... in interior slip zones
@@ -1681,11 +1687,40 @@ void check_cycles(const T &qm, const T &qa, const T &sm, const T &sa, const T &p
   if (!(abs(qm) + abs(qa) < 1)) throw error(status::gross_sliding, "cycles: |Qm| + |Qa| >= fP: gross sliding");
 }
 
+namespace hdetail {
+// A history that can repeat a cycle (add_cycles): cycle_change(first), the change of its state over
+// the cycle whose vertices start at index first (-1: not comparable, or no point stays stuck
+// through it), state_accuracy(), truncate(n) and repeat_cycle(first, end, cycle, extra)
+template <class H, class = void> struct repeats_cycles : std::false_type {};
+template <class H> struct repeats_cycles<H, std::void_t<decltype(std::declval<H &>().cycle_change(std::size_t(0)))>>
+    : std::true_type {};
+}  // namespace hdetail
+
 // Periodic loading q(t) = qm + qa sin(wt), s(t) = sm + sa sin(wt + phase),
 // reached from the current state (ramp order), then `cycles` cycles. A cycle
 // that traces a straight line (in phase, or one amplitude zero) is marched
 // through its turning points exactly; otherwise by `segments` chords.
 // H: history<T> or refined_history<T> (add_vertex, vertices, tag_last_vertex, q, s).
+//
+// The steady cycle (issue 14). At constant normal load the friction limit f p(x) does not change
+// with time: the contact is a Tresca friction problem, a sweeping process whose evolution does not
+// increase the distance between two states under the same loads (Moreau; Krejci). The state is the
+// traction q(x): the loads and q decide everything that follows. So once a cycle leaves the state
+// as it found it (within tol), every later cycle repeats it: it is within that distance of the
+// cycle solved, and the next within it of that one. Where the history can compare states and
+// repeat a cycle (hdetail::repeats_cycles: the static solves), the cycles after such a cycle are
+// its copies when that bound, the change times the number of cycles left, is within the history's
+// own accuracy (its rtol). They are not solved again, which also spares the static solves the
+// degenerate returns of a steady cycle, where every end meets the memory point of the cycle before
+// at the same load (periodic (Q_m, Q_a, sigma_m, sigma_a, phase) = (0, 0.1, 0, 0.3, 45 deg): the
+// third cycle's solves stopped at those). A copy
+// needs a point that stays stuck through the cycle: then the slip over it is zero (a slip whose
+// traction change is zero on the contact is C arcsin(x/a) + c, zero on an interval only if zero),
+// and the accumulated slip of the copies is the cycle's. If a later cycle cannot be solved and the
+// last one solved changed the state by at most max(steady_rtol, 1e-6), the cycles from the failed
+// one on are copies too. Every copy has k times the change in its error estimate (k: its distance
+// in cycles from the one copied: the bound of the argument above), and copies count as steady
+// (cycles_to_steady) only where the change was within steady_rtol.
 template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const T &qa, const T &sm, const T &sa,
                                                        const T &phase_deg, int cycles, ramp_order order, int segments,
                                                        const T &steady_rtol) {
@@ -1724,17 +1759,51 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
   }
   cycle_result<T> res;
   T pE1 = -1, pE2 = -1, pEp = -1, pb1 = -1, pb2 = -1;
+  // (the cycle being copied, [copy_first, copy_end) of the vertices, and whether the copies are
+  // within tol of a solved cycle: steady)
+  size_t copy_first = 0, copy_end = 0;
+  bool copying = false, copies_steady = false;
+  T change = -1;  // the last solved cycle's state change (-1: none)
+  int copied = 0;
   for (int c = 1; c <= cycles; ++c) {
     const size_t first = h.vertices().size();
     T E1 = 0, E2 = 0, Ep = 0;
-    for (const T &th : ths) {
-      T q, s;
-      at(th, q, s);
-      h.add_vertex(q, s);
-      h.tag_last_vertex(c);
-      E1 += h.vertices().back().energy1;
-      E2 += h.vertices().back().energy2;
-      Ep += h.vertices().back().energyp;
+    if constexpr (hdetail::repeats_cycles<H>::value) {
+      if (copying) {
+        ++copied;
+        h.repeat_cycle(copy_first, copy_end, c, T(copied) * change);
+      } else {
+        try {
+          for (const T &th : ths) {
+            T q, s;
+            at(th, q, s);
+            h.add_vertex(q, s);
+            h.tag_last_vertex(c);
+          }
+        } catch (...) {
+          // (the fallback above: the cycles from this one on are copies of the last one solved)
+          if (!(change >= 0 && change <= max(steady_rtol, T(1e-6)))) throw;
+          h.truncate(first);
+          copying = true;
+          copy_first = res.last_cycle_first;
+          copy_end = res.last_cycle_end;
+          copies_steady = change <= steady_rtol;
+          ++copied;
+          h.repeat_cycle(copy_first, copy_end, c, T(copied) * change);
+        }
+      }
+    } else {
+      for (const T &th : ths) {
+        T q, s;
+        at(th, q, s);
+        h.add_vertex(q, s);
+        h.tag_last_vertex(c);
+      }
+    }
+    for (size_t k = first; k < h.vertices().size(); ++k) {
+      E1 += h.vertices()[k].energy1;
+      E2 += h.vertices()[k].energy2;
+      Ep += h.vertices()[k].energyp;
     }
     const auto &v = h.vertices().back();
     res.cycles = c;
@@ -1743,7 +1812,7 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
     res.energyp = Ep;
     res.last_cycle_first = first;
     res.last_cycle_end = h.vertices().size();
-    if (c > 1 && res.cycles_to_steady < 0) {
+    if (c > 1 && res.cycles_to_steady < 0 && (!copying || copies_steady)) {
       const T scale = max(max(max(abs(E1), abs(E2)), max(abs(pE1), abs(pE2))), max(abs(Ep), abs(pEp)));
       const bool same = abs(E1 - pE1) <= steady_rtol * scale + 64 * eps<T>() * scale &&
                         abs(E2 - pE2) <= steady_rtol * scale + 64 * eps<T>() * scale &&
@@ -1756,7 +1825,20 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
     pEp = Ep;
     pb1 = v.b1;
     pb2 = v.b2;
+    if constexpr (hdetail::repeats_cycles<H>::value) {
+      if (!copying) {
+        change = h.cycle_change(first);
+        if (change >= 0 && T(cycles - c) * change <= h.state_accuracy()) {
+          copying = true;
+          copies_steady = change <= steady_rtol;
+          copy_first = first;
+          copy_end = h.vertices().size();
+        }
+      }
+    }
   }
+  res.cycles_repeated = copied;
+  res.repeated_change = copied > 0 ? change : T(0);
   res.shakedown = !(res.energy1 > 0) && !(res.energy2 > 0) && !(res.energyp > 0);
   return res;
 }

@@ -234,6 +234,12 @@ template <class T> struct sh_start {
   };
   T dhp(const T &x, const T &e1, const T &e2, int d1, int d2, dhp_memo *mm = nullptr) const {
     using std::sqrt;
+    // At a stick end itself the slip gradient is 0: it vanishes there like the square root of the
+    // distance (the traction is bounded), while X below is 0 and the band sum has a node on x,
+    // 0 * inf. A theta node of a piece 1.1e-12 a wide next to the end rounds onto it: periodic
+    // (Q_m, Q_a, sigma_m, sigma_a, phase) = (0, 0.1, 0, 0.3, 45 deg), vertex 128, where zone 1's end
+    // returns to its memory point, and the fold's energy was NaN.
+    if (x == e1 || x == -e2) return T(0);
     T K = 0;
     for (int i = 1; i <= 2; ++i) {
       const int d = i == 1 ? d1 : d2;
