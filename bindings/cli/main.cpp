@@ -1118,7 +1118,7 @@ int cmd_history(int argc, char **argv) {
       std::printf("\n");
       if (cs.cycles_repeated > 0)
         std::printf(
-            "the last %d cycle%s copies of the one before, which left the state as it found it (to %.2g; "
+            "the last %d cycle%s copies of the last cycle solved, which left the state as it found it (to %.2g; "
             "docs/history.md, \"The steady cycle\")\n",
             cs.cycles_repeated, cs.cycles_repeated > 1 ? "s are" : " is", cs.repeated_change);
       if (have_closed && closed.valid)

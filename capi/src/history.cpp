@@ -593,10 +593,24 @@ struct static_cycles_adapter {
       dq += w * std::fabs(B.traction(x) - A.traction(x));
       pl += w * std::fabs(A.pressure().p(x));
     }
-    const double d = std::max({std::fabs(B.b1() - A.b1()), std::fabs(B.b2() - A.b2()), pl > 0 ? dq / pl : dq});
+    if (!std::isfinite(dq) || !(pl > 0) || !std::isfinite(pl)) return -1;
+    const double d = std::max({std::fabs(B.b1() - A.b1()), std::fabs(B.b2() - A.b2()), dq / pl});
     return std::isfinite(d) ? d : -1;
   }
   double state_accuracy() const { return h.march_rtol; }
+  // add_vertex's refusals of a segment (the march would otherwise replay the path, or the history
+  // stop at an interior slip zone); any other exception is an error
+  static bool refused(std::exception_ptr e) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const leave_static &) {
+      return true;
+    } catch (const static_interior &) {
+      return true;
+    } catch (...) {
+      return false;
+    }
+  }
   // back to the first n vertices (a cycle that failed part way)
   void truncate(size_t n) {
     h.static_vertices.resize(n);

@@ -485,7 +485,10 @@ HS_EXPORT void hs_history_free(hs_history *h);  /* NULL is a no-op */
 HS_EXPORT int hs_history_add_vertices(hs_history *h, size_t n, const double *Q_over_fP,
                                       const double *sigma_over_fp0);
 /* Periodic loading Q(t) = Qm + Qa sin(wt), sigma(t) = Sm + Sa sin(wt + phase),
- * reached from the current state by opts->ramp_order, then `cycles` cycles. */
+ * reached from the current state by opts->ramp_order, then `cycles` cycles. By
+ * static solves, the cycles after one that leaves the state as it found it are
+ * copies of it, not solved again (hs_cycle_summary.cycles_repeated; their
+ * error_estimate includes the bound of the copy; docs/history.md, "The steady cycle"). */
 HS_EXPORT int hs_history_add_cycles(hs_history *h, double Qm_over_fP, double Qa_over_fP, double Sm_over_fp0,
                                     double Sa_over_fp0, double phase_deg, int cycles);
 HS_EXPORT int hs_history_vertex_count(const hs_history *h, size_t *n);
@@ -565,7 +568,8 @@ HS_EXPORT int hs_history_state(const hs_history *h, size_t vertex, hs_solution *
  * monotonic solutions; HS_HISTORY_STATIC: every segment so far advances (no zone
  * recedes), one static solve per segment from the state before it (no steps; its
  * quadrature orders are chosen from opts->rtol, and error_estimate reports that rtol,
- * 0 at full accuracy);
+ * 0 at full accuracy, plus k times the copied cycle's change on the k-th copy of a
+ * steady cycle);
  * HS_HISTORY_MARCH: load steps (steps, step and error_estimate of hs_history_vertex).
  * The first vertex that a method cannot take replays the whole path in the next one. */
 #define HS_HISTORY_SUPERPOSITION 1

@@ -36,6 +36,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -1690,7 +1692,8 @@ void check_cycles(const T &qm, const T &qa, const T &sm, const T &sa, const T &p
 namespace hdetail {
 // A history that can repeat a cycle (add_cycles): cycle_change(first), the change of its state over
 // the cycle whose vertices start at index first (-1: not comparable, or no point stays stuck
-// through it), state_accuracy(), truncate(n) and repeat_cycle(first, end, cycle, extra)
+// through it), state_accuracy(), refused(exception_ptr) (an exception of add_vertex that is the
+// history's refusal of a segment, not an error), truncate(n) and repeat_cycle(first, end, cycle, extra)
 template <class H, class = void> struct repeats_cycles : std::false_type {};
 template <class H> struct repeats_cycles<H, std::void_t<decltype(std::declval<H &>().cycle_change(std::size_t(0)))>>
     : std::true_type {};
@@ -1716,11 +1719,13 @@ template <class H> struct repeats_cycles<H, std::void_t<decltype(std::declval<H 
 // third cycle's solves stopped at those). A copy
 // needs a point that stays stuck through the cycle: then the slip over it is zero (a slip whose
 // traction change is zero on the contact is C arcsin(x/a) + c, zero on an interval only if zero),
-// and the accumulated slip of the copies is the cycle's. If a later cycle cannot be solved and the
-// last one solved changed the state by at most max(steady_rtol, 1e-6), the cycles from the failed
-// one on are copies too. Every copy has k times the change in its error estimate (k: its distance
-// in cycles from the one copied: the bound of the argument above), and copies count as steady
-// (cycles_to_steady) only where the change was within steady_rtol.
+// and the accumulated slip of the copies is the cycle's. The change counted is the state's, tau,
+// times the energies' Lipschitz factor in it where that exceeds 1, measured from the two cycles
+// before (below). If a later cycle cannot be solved (the history refused a segment) and the last
+// one solved changed by at most max(1e-6, rtol), the cycles from the failed one on are copies too.
+// Every copy has k times the change in its error estimate (k: its distance in cycles from the one
+// copied), and copies count as steady (cycles_to_steady) only where the change was within
+// steady_rtol.
 template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const T &qa, const T &sm, const T &sa,
                                                        const T &phase_deg, int cycles, ramp_order order, int segments,
                                                        const T &steady_rtol) {
@@ -1763,7 +1768,8 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
   // within tol of a solved cycle: steady)
   size_t copy_first = 0, copy_end = 0;
   bool copying = false, copies_steady = false;
-  T change = -1;  // the last solved cycle's state change (-1: none)
+  T change = -1;    // the last solved cycle's change, with the energies' factor (-1: none)
+  T prev_tau = -1;  // the state's change over the cycle before
   int copied = 0;
   for (int c = 1; c <= cycles; ++c) {
     const size_t first = h.vertices().size();
@@ -1781,8 +1787,10 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
             h.tag_last_vertex(c);
           }
         } catch (...) {
-          // (the fallback above: the cycles from this one on are copies of the last one solved)
-          if (!(change >= 0 && change <= max(steady_rtol, T(1e-6)))) throw;
+          // (the fallback above: the cycles from this one on are copies of the last one solved;
+          // only where the history refused a segment, every other error goes on to the caller)
+          if (!h.refused(std::current_exception()) || !(change >= 0 && change <= max(T(1e-6), h.state_accuracy())))
+            throw;
           h.truncate(first);
           copying = true;
           copy_first = res.last_cycle_first;
@@ -1812,22 +1820,32 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
     res.energyp = Ep;
     res.last_cycle_first = first;
     res.last_cycle_end = h.vertices().size();
+    const T scale = max(max(max(abs(E1), abs(E2)), max(abs(pE1), abs(pE2))), max(abs(Ep), abs(pEp)));
     if (c > 1 && res.cycles_to_steady < 0 && (!copying || copies_steady)) {
-      const T scale = max(max(max(abs(E1), abs(E2)), max(abs(pE1), abs(pE2))), max(abs(Ep), abs(pEp)));
       const bool same = abs(E1 - pE1) <= steady_rtol * scale + 64 * eps<T>() * scale &&
                         abs(E2 - pE2) <= steady_rtol * scale + 64 * eps<T>() * scale &&
                         abs(Ep - pEp) <= steady_rtol * scale + 64 * eps<T>() * scale &&
                         abs(v.b1 - pb1) <= steady_rtol && abs(v.b2 - pb2) <= steady_rtol;
       if (same) res.cycles_to_steady = c - 1;
     }
-    pE1 = E1;
-    pE2 = E2;
-    pEp = Ep;
-    pb1 = v.b1;
-    pb2 = v.b2;
     if constexpr (hdetail::repeats_cycles<H>::value) {
       if (!copying) {
-        change = h.cycle_change(first);
+        // the state's change over this cycle, tau, and the Lipschitz factor of the cycle's energies
+        // in it, measured: this cycle's energies moved from the last one's by dE (over the larger
+        // zone's) for a start that had moved by the last cycle's tau. The copies' bound is then
+        // tau max(1, dE / last tau) a cycle (energies are not 1-Lipschitz in this distance: a review
+        // found a copy's zone energy 6 times its tau off the BEM without the factor). None in the
+        // first cycle, whose start (the ramp's end) has no cycle before it.
+        const T tau = h.cycle_change(first);
+        change = -1;
+        if (c > 1 && tau >= 0 && prev_tau >= 0) {
+          using std::isfinite;
+          const T dE = scale > 0 ? max(max(abs(E1 - pE1), abs(E2 - pE2)), abs(Ep - pEp)) / scale : T(0);
+          const T lip = prev_tau > 0 ? dE / prev_tau : T(dE > 0 ? std::numeric_limits<T>::infinity() : 1);
+          change = tau == 0 ? (dE == 0 ? T(0) : dE) : tau * max(T(1), lip);
+          if (!isfinite(change)) change = -1;
+        }
+        prev_tau = tau;
         if (change >= 0 && T(cycles - c) * change <= h.state_accuracy()) {
           copying = true;
           copies_steady = change <= steady_rtol;
@@ -1836,6 +1854,11 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
         }
       }
     }
+    pE1 = E1;
+    pE2 = E2;
+    pEp = Ep;
+    pb1 = v.b1;
+    pb2 = v.b2;
   }
   res.cycles_repeated = copied;
   res.repeated_change = copied > 0 ? change : T(0);
