@@ -66,7 +66,7 @@ struct hs_history {
     double Ep = 0;          // ... in an interior slip zone (core/static_patch.hpp)
     int cycle = 0;          // periodic loading: the cycle this vertex belongs to (0: none)
     // a copy of a steady cycle's vertex (core::add_cycles): its loads (snap is the original's), and
-    // what the copy adds to the error estimate (0: the copied cycle is steady to its tolerance)
+    // what the copy adds to the error estimate (k times the copied cycle's change on the k-th copy)
     bool copy = false;
     double q = 0, s = 0, copy_estimate = 0;
   };

@@ -1774,18 +1774,18 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
   for (int c = 1; c <= cycles; ++c) {
     const size_t first = h.vertices().size();
     T E1 = 0, E2 = 0, Ep = 0;
+    auto solve_cycle = [&] {
+      for (const T &th : ths) {
+        T q, s;
+        at(th, q, s);
+        h.add_vertex(q, s);
+        h.tag_last_vertex(c);
+      }
+    };
     if constexpr (hdetail::repeats_cycles<H>::value) {
-      if (copying) {
-        ++copied;
-        h.repeat_cycle(copy_first, copy_end, c, T(copied) * change);
-      } else {
+      if (!copying) {
         try {
-          for (const T &th : ths) {
-            T q, s;
-            at(th, q, s);
-            h.add_vertex(q, s);
-            h.tag_last_vertex(c);
-          }
+          solve_cycle();
         } catch (...) {
           // (the fallback above: the cycles from this one on are copies of the last one solved;
           // only where the history refused a segment, every other error goes on to the caller)
@@ -1796,17 +1796,14 @@ template <class T, class H> cycle_result<T> add_cycles(H &h, const T &qm, const 
           copy_first = res.last_cycle_first;
           copy_end = res.last_cycle_end;
           copies_steady = change <= steady_rtol;
-          ++copied;
-          h.repeat_cycle(copy_first, copy_end, c, T(copied) * change);
         }
       }
-    } else {
-      for (const T &th : ths) {
-        T q, s;
-        at(th, q, s);
-        h.add_vertex(q, s);
-        h.tag_last_vertex(c);
+      if (copying) {
+        ++copied;
+        h.repeat_cycle(copy_first, copy_end, c, T(copied) * change);
       }
+    } else {
+      solve_cycle();
     }
     for (size_t k = first; k < h.vertices().size(); ++k) {
       E1 += h.vertices()[k].energy1;
