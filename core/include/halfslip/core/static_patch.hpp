@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <tuple>
@@ -296,6 +297,9 @@ template <class T> class sh_patch {
   struct gnode {
     T x, gy;  // x, g(x) w / Y(x)
   };
+  struct geo_node {
+    T x, dl, dr, gw;  // x, its distances to the piece's ends, g(x) w
+  };
   bool ordered(const ends &e) const {
     return e.b1 <= 1 && e.b2 <= 1 && e.pr > e.pl && e.b1 > e.pr && -e.b2 < e.pl;
   }
@@ -338,6 +342,8 @@ template <class T> class sh_patch {
     ce_ = e;
     have_ = true;
     cache_.clear();
+    ++gen_;
+    for (auto it = geo_.begin(); it != geo_.end();) it = it->second.first + 3 < gen_ ? geo_.erase(it) : std::next(it);
     pcs_.clear();
     base_.clear();
     auto add = [&](int z, const T &l, const T &r) {
@@ -395,18 +401,49 @@ template <class T> class sh_patch {
   }
   void make_nodes(int k, int kl, int kr, std::vector<gnode> &v) const {
     using std::abs;
-    using std::cos;
-    using std::sin;
     using std::sqrt;
     v.clear();
     const auto &P = pcs_[k];
+    const T roots[4] = {ce_.b1, -ce_.b2, ce_.pl, ce_.pr};
+    std::vector<geo_node> local;
+    const auto &G = geometry(P, kl, kr, local);
+    v.reserve(G.size());
+    for (const auto &n : G) {
+      // sqrt|R| with the exact distances to the piece's own ends
+      T R = 1;
+      for (const T &rt : roots) R *= rt == P.l ? n.dl : (rt == P.r ? n.dr : abs(n.x - rt));
+      const T Y = T(P.zone == 3 ? -1 : 1) * sqrt(R);
+      v.push_back({n.x, n.gw / Y});
+    }
+  }
+  // the nodes of piece P graded kl, kr levels towards its ends, with g w (w: the weight of the
+  // theta map) and their distances to the piece's ends. They depend on the piece alone, not on the
+  // other ends, so they are kept across the residuals of a solve (a Jacobian's differences move one
+  // end, and most pieces stay; g was most of a patch segment's time); entries unused for three sets
+  // of ends are dropped (set_ends). A solved object only reads them (a set not kept is made in local).
+  const std::vector<geo_node> &geometry(const piece &P, int kl, int kr, std::vector<geo_node> &local) const {
+    using std::cos;
+    using std::sin;
+    const auto key = std::make_tuple(P.zone, P.l, P.r, kl, kr);
+    const auto it = geo_.find(key);
+    if (it != geo_.end()) {
+      if (!frozen_) it->second.first = gen_;
+      return it->second.second;
+    }
+    std::vector<geo_node> *out = &local;
+    if (!frozen_) {
+      auto &e = geo_[key];
+      e.first = gen_;
+      out = &e.second;
+    }
+    auto &v = *out;
+    v.clear();
     const T l = P.l, r = P.r, L = r - l, pi_ = pi<T>();
     std::vector<T> br{0};
     for (int m = kl; m >= 1; --m) br.push_back(pi_ / 2 * T(std::ldexp(1.0, -m)));
     br.push_back(pi_ / 2);
     for (int m = 1; m <= kr; ++m) br.push_back(pi_ - pi_ / 2 * T(std::ldexp(1.0, -m)));
     br.push_back(pi_);
-    const T roots[4] = {ce_.b1, -ce_.b2, ce_.pl, ce_.pr};
     const auto &gr = *rule_;
     for (size_t j = 0; j + 1 < br.size(); ++j) {
       const T hw = (br[j + 1] - br[j]) / 2, mid = (br[j + 1] + br[j]) / 2;
@@ -414,13 +451,10 @@ template <class T> class sh_patch {
         const T th = mid + hw * gr.x[i], s = sin(th / 2), c = cos(th / 2);
         const T dl = L * s * s, dr = L * c * c;
         const T x = dl <= dr ? l + dl : r - dr;
-        // sqrt|R| with the exact distances to the piece's own ends
-        T R = 1;
-        for (const T &rt : roots) R *= rt == l ? dl : (rt == r ? dr : abs(x - rt));
-        const T Y = T(P.zone == 3 ? -1 : 1) * sqrt(R);
-        v.push_back({x, g(P.zone, x) * hw * gr.w[i] * L * s * c / Y});
+        v.push_back({x, dl, dr, g(P.zone, x) * hw * gr.w[i] * L * s * c});
       }
     }
+    return v;
   }
   // int_G (g/Y)(t) K(t) dt, K(t) = PV int_patch Y(x)/(t - x) dx (Gauss-Chebyshev of the second
   // kind on the patch, Y = -sqrt((x - pl)(pr - x)) m(x); the PV's singular part in closed form)
@@ -459,6 +493,9 @@ template <class T> class sh_patch {
   mutable std::vector<std::array<int, 2>> base_;
   mutable std::map<std::tuple<int, int, int>, std::vector<gnode>> cache_;
   mutable std::vector<T> ku_, kw_, km_;
+  // the node sets of the pieces (geometry()) and the set of ends each was last used for
+  mutable std::map<std::tuple<int, T, T, int, int>, std::pair<long, std::vector<geo_node>>> geo_;
+  mutable long gen_ = 0;
 };
 
 }}  // namespace hs::core
