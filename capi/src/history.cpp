@@ -69,6 +69,10 @@ struct hs_history {
     // what the copy adds to the error estimate (k times the copied cycle's change on the k-th copy)
     bool copy = false;
     double q = 0, s = 0, copy_estimate = 0;
+    // the error estimate: the accuracy the static solves were set to (for_rtol), a copy's
+    // distance, and how far the vertex put an end onto a memory point (core::static_history::
+    // memory_snap, over a)
+    double estimate(double rtol) const { return rtol + copy_estimate + snap->memory_snap(); }
   };
   std::vector<static_vertex_rec> static_vertices;
   // The march's disagreement with the superposition or the static solves on the vertices they
@@ -782,8 +786,7 @@ int hs_history_vertex_get(const hs_history *h, size_t i, hs_history_vertex *user
       out->cycle = v.cycle;
       out->steps = 0;
       out->step = 0;
-      // the accuracy the static solves were set to (for_rtol), and a copied cycle's distance
-      out->error_estimate = h->march_rtol + v.copy_estimate;
+      out->error_estimate = v.estimate(h->march_rtol);
       out->interior_merges = 0;
       out->patch_dir = st.patch_dir();
       out->patch_l = st.patch_dir() ? sc.a * st.patch_l() : 0.0;
@@ -882,7 +885,7 @@ int hs_history_state(const hs_history *h, size_t vertex, hs_solution **out) {
       auto r = std::make_unique<hs_solution>();
       r->solution.emplace<hs::capi::static_state>(h->static_vertices[vertex].snap, h->scene);
       r->model_used = 0;
-      r->error_estimate = h->march_rtol + h->static_vertices[vertex].copy_estimate;
+      r->error_estimate = h->static_vertices[vertex].estimate(h->march_rtol);
       *out = r.release();
       return;
     }

@@ -188,6 +188,9 @@ template <class T> struct static_history_accuracy {
   // direct sums at every point of the new traction's panels cost the square of the sample count
   // (0: always the treecode; SIZE_MAX: never; tests compare the two)
   std::size_t far_min = 256;
+  // an end that stops within this distance (over a) short of a memory point is put on it (see
+  // static_history::return_to_memory; 0: never)
+  T memory_snap = T(1e-8);
 
   static static_history_accuracy for_rtol(const T &rtol) {
     static_history_accuracy a;
@@ -248,6 +251,7 @@ template <class T> class static_history {
         ptol_(acc.panel_tol),
         rtol_(acc.rtol),
         far_min_(acc.far_min),
+        msnap_(acc.memory_snap),
         mono_tol_(std::max(T(1e3) * eps<T>(), T(acc.rtol))) {
     if (!pm_) throw error(status::null_pointer, "static_history: no pressure model");
     if (acc.theta < 4 || acc.lambda < 2 || acc.band < 2 || acc.band_theta < 2 || acc.zone < 2 || acc.slip < 2 || !(acc.panel_tol > 0))
@@ -281,6 +285,7 @@ template <class T> class static_history {
     ptol_ = fresh.ptol_;
     rtol_ = fresh.rtol_;
     far_min_ = fresh.far_min_;
+    msnap_ = fresh.msnap_;
     mono_tol_ = fresh.mono_tol_;
     clear_cache();
     xrec_.clear();
@@ -343,6 +348,7 @@ template <class T> class static_history {
     using std::abs;
     if (!isfinite(qn) || !isfinite(sn)) throw error(status::not_finite, "static_history: a path vertex is not finite");
     if (!(abs(qn) < 1)) throw error(status::gross_sliding, "static_history: |Q| >= fP at a path vertex: gross sliding");
+    moved_ = 0;
     if (qn == q_ && sn == s_) {
       step_to(qn, sn);
       return;
@@ -371,6 +377,9 @@ template <class T> class static_history {
   }
   // segments taken in parts so far (see add_vertex)
   std::size_t split_segments() const { return nsplit_; }
+  // the largest distance (over a) by which the last vertex put an end onto a memory point
+  // (return_to_memory; 0: none): the error estimate of that vertex's ends includes it
+  T memory_snap() const { return moved_; }
 
  private:
   // the straight segment from (qa, sa) (the current state) to (qb, sb) in two halves, each taken
@@ -490,11 +499,69 @@ template <class T> class static_history {
     }
     nx.q_ = qn;  // the vertex exactly (q_ + (qn - q_) may round away from qn)
     nx.s_ = sn;
+    nx.return_to_memory();
     nx.clear_cache();  // (the committed state is shared read-only: no cache travels with it)
     *this = std::move(nx);
   }
 
  private:
+  // A degenerate return: an end that stopped within msnap_ short of a memory point inside the stick
+  // zone is put on it, and the sliver between slips with its zone (q = s_i p). In a steady cycle
+  // every end stops, at the same load, where it stopped a cycle (or, by symmetry, half a cycle)
+  // before; the solves land next to that memory point rather than on it, and each return added a
+  // cusp beside the last. Hertz (Q_m, Q_a, sigma_m, sigma_a, phase) = (0, 0.1, 0, 1, 45 deg) as a
+  // path of 64 chords a cycle: zone 1's end stopped at 0.801690369705, 0.801690370983,
+  // 0.801690372260 a at vertices 38, 70, 102 (at full accuracy and at rtol 1e-8 alike); at rtol 1e-8
+  // vertex 134 put 1.5e-6 of the path's largest energy more into zone 1 than the full-accuracy
+  // solve (its estimate 1e-8), and vertex 198 was refused; at full accuracy vertex 134 was refused.
+  // The move changes the traction only on the sliver, by the stick traction's distance from the
+  // limit there (~ sqrt of the move), so the state's loads by O(move^1.5); the end itself moves by
+  // at most msnap_, which the vertex's estimate carries (memory_snap()). Not with an open patch,
+  // nor onto a pressure breakpoint (not a memory point).
+  void return_to_memory() {
+    using std::abs;
+    using std::sqrt;
+    if (!(msnap_ > 0)) return;
+    T nb1 = b1_, nl = -b2_;  // the new ends b1 and -b2
+    for (const auto &P : panels_) {
+      if (!P.cusp_l || !(P.l > -b2_ && P.l < b1_)) continue;
+      if (std::find(pbreaks_.begin(), pbreaks_.end(), P.l) != pbreaks_.end()) continue;
+      if (s1_ != 0 && b1_ - P.l <= msnap_) nb1 = std::min(nb1, P.l);
+      if (s2_ != 0 && P.l + b2_ <= msnap_) nl = std::max(nl, P.l);
+    }
+    if (!(nb1 < b1_) && !(nl > -b2_)) return;
+    if (sp_ != 0 && !(nb1 > pr_ && nl < pl_)) return;
+    if (!(nl < nb1)) return;
+    // The stick traction meets the limit like C sqrt(distance to the end): at the memory point it
+    // is short of it by C sqrt(s), s the move. Left so, a later return to the point found it past
+    // the limit there by that much (4.2e-5 p next to a point moved onto by 2.1e-10 a: flat punch
+    // b_f/a = 0.5, periodic (0, 0.1, 0.5, 0.3, 45 deg), vertex 192 at rtol 1e-8). The traction is
+    // taken as if the end had stopped on the point: + C (sqrt(b - x) - sqrt(m - x)) on the stick
+    // zone, the asymptotic form of the sliver's slip (its sum with the traction's own near-singular
+    // part is smooth on the panels); the error of that form is O(C s) away from the end.
+    const T q1 = nb1 < b1_ ? qS(nb1) : T(0), q2 = nl > -b2_ ? qS(nl) : T(0);
+    const T C1 = nb1 < b1_ ? (T(s1_) * pm_->p(nb1) - q1) / sqrt(b1_ - nb1) : T(0);
+    const T C2 = nl > -b2_ ? (T(s2_) * pm_->p(nl) - q2) / sqrt(nl + b2_) : T(0);
+    const auto &R = *rule_;
+    std::vector<sh_panel<T>> keep;
+    for (auto &P : panels_) {
+      if (!(P.l < nb1 && P.r > nl)) continue;
+      if (!P.analytic && (T(s1_) * C1 > 0 || T(s2_) * C2 > 0))
+        for (int j = 0; j < R.n(); ++j) {
+          const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
+          const T x = xl <= xr ? P.l + xl : P.r - xr;
+          // (the distances to the new ends from the panel's own ends where it meets them)
+          if (T(s1_) * C1 > 0) P.v[j] += C1 * (sqrt(b1_ - x) - sqrt(P.r == nb1 ? xr : T(nb1 - x)));
+          if (T(s2_) * C2 > 0) P.v[j] += C2 * (sqrt(x + b2_) - sqrt(P.l == nl ? xl : T(x - nl)));
+        }
+      keep.push_back(std::move(P));
+    }
+    panels_ = std::move(keep);
+    moved_ = std::max(moved_, std::max(T(b1_ - nb1), T(nl + b2_)));
+    b1_ = nb1;
+    b2_ = -nl;
+  }
+
   // ---- state traction --------------------------------------------------------
   T qS(const T &x) const {
     return shdetail::state_traction(panels_, *rule_, b1_, b2_, s1_, s2_, x, [&] { return pm_->p(x); });
@@ -1392,6 +1459,18 @@ template <class T> class static_history {
         }
       }
       const auto &lst = ev.back();
+      // (a degenerate return from the other side: the last event put the end on a memory point,
+      // and the vertex's solve leaves it within msnap_ short of it. Hertz-like flat punch b_f/a =
+      // 0.5, periodic (0, 0.1, 0.5, 0.3, 45 deg), vertex 192 at rtol 1e-8: 2.1e-10 a, once the
+      // returns before were put on their memory points; see return_to_memory)
+      for (int j = 1; j <= 2; ++j) {
+        T &fb = j == 1 ? fb1 : fb2;
+        const T over = fb - lst[j];
+        if (evi.back() == j && over > 0 && over <= msnap_) {
+          fb = lst[j];
+          moved_ = std::max(moved_, over);
+        }
+      }
       if (fb1 > lst[1] || fb2 > lst[2]) throw error(status::not_applicable, "static_history: a stick-zone end recedes");
       if (fb1 > back[0] || fb2 > back[1])
         throw error(status::not_applicable,
@@ -3118,6 +3197,8 @@ template <class T> class static_history {
   T ptol_ = T(1e3) * eps<T>();               // panel resolution (last Legendre coefficients)
   T rtol_ = 0;                               // the accuracy asked (0: full)
   std::size_t far_min_ = 256;                // band nodes from which the new traction uses a treecode
+  T msnap_ = T(1e-8);                        // accuracy::memory_snap
+  T moved_ = 0;                              // return_to_memory's largest move at the last vertex
   // how far an end found at a lambda node may lie outside the one before (rounding, or at an
   // accuracy asked the ends' own error, up to rtol) before the segment is not advancing-only
   T mono_tol_ = T(1e3) * eps<T>();
