@@ -820,8 +820,6 @@ TEST_CASE("static history: degenerate returns (a periodic path given vertex by v
     int snaps = 0;
     for (size_t i = 0; i < w.size(); ++i) {
       CAPTURE(i);
-      CHECK(full.snap[i] <= 1e-8);
-      CHECK(r8.snap[i] <= 1e-8);
       snaps += full.snap[i] > 0;
       // rtol 1e-8 against full accuracy: ends within 1e-8 a and both moves, energies within 1e-8 of
       // the largest (measured 1.9e-10 a and 2.1e-10)
@@ -838,15 +836,17 @@ TEST_CASE("static history: degenerate returns (a periodic path given vertex by v
     // From the other side: Hertz (0, 0.3, 0, 0.3, 45 deg), 3 cycles at rtol 1e-8: at vertex 174 the
     // crossing puts end 2 on its memory point at lambda = 1 - 6e-10 (then sweeps a region at the
     // limit) and the vertex's solve left it 1e-12 short: "a stick-zone end recedes" before. The
-    // energies agree with full accuracy from there on to 1e-11 of the largest (measured 1.4e-12);
-    // the ends within the region at the limit (q = d p over 2.6e-5 a, neither slipping nor
-    // resisting: the stick end is not unique there) are not compared.
+    // energies agree with full accuracy from there on within the accuracy asked, 1e-8 of the
+    // largest (measured 1.4e-12); the ends within the region at the limit (q = d p over 2.6e-5 a,
+    // neither slipping nor resisting: the stick end is not unique there) are not compared.
     const auto w = chord_cycles(0, 0.3, 0, 0.3, 45, 3);
     path_run full, r8;
     REQUIRE_NOTHROW(full = run_path(hertz_pm(), w, 0));
     REQUIRE_NOTHROW(r8 = run_path(hertz_pm(), w, 1e-8));
     REQUIRE(r8.v.size() == w.size());
+    CHECK(r8.snap[174] > 0);  // (the end kept on the point, the distance in the estimate)
+    CHECK(r8.snap[174] <= 1e-8);
     for (size_t i = 170; i < w.size(); ++i)
-      for (int k = 2; k < 4; ++k) CHECK(std::fabs(r8.v[i][k] - full.v[i][k]) <= 1e-11 * full.largest);
+      for (int k = 2; k < 4; ++k) CHECK(std::fabs(r8.v[i][k] - full.v[i][k]) <= 1e-8 * full.largest);
   }
 }

@@ -348,6 +348,8 @@ template <class T> class static_history {
     using std::abs;
     if (!isfinite(qn) || !isfinite(sn)) throw error(status::not_finite, "static_history: a path vertex is not finite");
     if (!(abs(qn) < 1)) throw error(status::gross_sliding, "static_history: |Q| >= fP at a path vertex: gross sliding");
+    // (a refused vertex leaves the state as it was, memory_snap() included)
+    const T moved0 = moved_;
     moved_ = 0;
     if (qn == q_ && sn == s_) {
       step_to(qn, sn);
@@ -357,12 +359,14 @@ template <class T> class static_history {
       step_to(qn, sn);
       return;
     } catch (const error &e) {
+      moved_ = moved0;
       // (at an accuracy asked, rtol > 0, the refusal stands: hs_history solves the segment again
       // at full accuracy, which is then taken in parts if need be; parts at the reduced orders
       // summed their errors past rtol, Hertz random walk 21, vertex 6: 6.8e-8 at rtol 1e-8)
       if (e.code() != status::not_applicable || rtol_ > 0) throw;
       // (the parts on a copy: the state changes only if every part is taken)
       static_history nx(*this);
+      nx.moved_ = 0;
       const std::size_t n0 = segs_.size(), p0 = npatch_;
       const bool ok = nx.take_parts(q_, s_, qn, sn, 1, true);
       nx.inner_part_ = false;
@@ -514,10 +518,12 @@ template <class T> class static_history {
   // 0.801690372260 a at vertices 38, 70, 102 (at full accuracy and at rtol 1e-8 alike); at rtol 1e-8
   // vertex 134 put 1.5e-6 of the path's largest energy more into zone 1 than the full-accuracy
   // solve (its estimate 1e-8), and vertex 198 was refused; at full accuracy vertex 134 was refused.
-  // The move changes the traction only on the sliver, by the stick traction's distance from the
-  // limit there (~ sqrt of the move), so the state's loads by O(move^1.5); the end itself moves by
-  // at most msnap_, which the vertex's estimate carries (memory_snap()). Not with an open patch,
-  // nor onto a pressure breakpoint (not a memory point).
+  // The end moves by at most msnap_, which the vertex's estimate carries (memory_snap()); with the
+  // traction's correction below (over the whole stick zone) the state's loads move by about
+  // C sqrt(b1 + b2) times the move, first order in it (4.6e-9 for a move of 1.28e-9 a, Hertz,
+  // vertex 70 of the path above; a review's measurement), the same order as the estimate, and
+  // not accumulating (the next returns are put on the same point). Not onto a pressure
+  // breakpoint (not a memory point), nor across an open interior slip zone.
   void return_to_memory() {
     using std::abs;
     using std::sqrt;
@@ -1459,17 +1465,22 @@ template <class T> class static_history {
         }
       }
       const auto &lst = ev.back();
-      // (a degenerate return from the other side: the last event put the end on a memory point,
-      // and the vertex's solve leaves it within msnap_ short of it. Hertz-like flat punch b_f/a =
-      // 0.5, periodic (0, 0.1, 0.5, 0.3, 45 deg), vertex 192 at rtol 1e-8: 2.1e-10 a, once the
-      // returns before were put on their memory points; see return_to_memory)
+      // (a degenerate return from the other side: the last event put end j on a memory point of
+      // the start state, and the vertex's solve leaves it short of it by no more than the
+      // monotonicity tolerance (and msnap_): it stays on the point. Hertz (0, 0.3, 0, 0.3, 45 deg),
+      // vertex 174 at rtol 1e-8: 1e-12 a, was "a stick-zone end recedes"; see return_to_memory. Not
+      // after a fold, whose target is no memory point, nor at a pressure breakpoint.)
+      const bool fold_last = !jumps.empty() && jumps.back().second == lst;
       for (int j = 1; j <= 2; ++j) {
         T &fb = j == 1 ? fb1 : fb2;
-        const T over = fb - lst[j];
-        if (evi.back() == j && over > 0 && over <= msnap_) {
-          fb = lst[j];
-          moved_ = std::max(moved_, over);
-        }
+        const T over = fb - lst[j], m = j == 1 ? lst[1] : -lst[2];
+        if (evi.back() != j || fold_last || !(over > 0) || !(over <= std::min(msnap_, mono_tol_))) continue;
+        if (std::find(pbreaks_.begin(), pbreaks_.end(), m) != pbreaks_.end()) continue;
+        bool memory = false;
+        for (const auto &P : panels_) memory = memory || (P.cusp_l && P.l == m);
+        if (!memory) continue;
+        fb = lst[j];
+        moved_ = std::max(moved_, over);
       }
       if (fb1 > lst[1] || fb2 > lst[2]) throw error(status::not_applicable, "static_history: a stick-zone end recedes");
       if (fb1 > back[0] || fb2 > back[1])

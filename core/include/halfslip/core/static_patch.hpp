@@ -181,6 +181,9 @@ template <class T> class sh_patch {
         J_ = J;
         set_ends(e_);
         frozen_ = true;
+        // (the node sets of the solved ends are in cache_; the pieces' geometry of the search is
+        // not needed after it: kept, it was ~6 times cache_'s memory per patch, a review's find)
+        geo_.clear();
         return true;
       }
       refresh = !(nt <= n0 / 4);
