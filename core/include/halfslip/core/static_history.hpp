@@ -524,14 +524,17 @@ template <class T> class static_history {
   // vertex 70 of the path above; a review's measurement), the same order as the estimate, and
   // not accumulating (the next returns are put on the same point). Not onto a pressure
   // breakpoint (not a memory point), nor across an open interior slip zone.
+  // a panel that starts at a memory point (a cusp of the traction that is not a pressure breakpoint)
+  bool memory_cusp(const sh_panel<T> &P) const {
+    return P.cusp_l && std::find(pbreaks_.begin(), pbreaks_.end(), P.l) == pbreaks_.end();
+  }
   void return_to_memory() {
     using std::abs;
     using std::sqrt;
     if (!(msnap_ > 0)) return;
     T nb1 = b1_, nl = -b2_;  // the new ends b1 and -b2
     for (const auto &P : panels_) {
-      if (!P.cusp_l || !(P.l > -b2_ && P.l < b1_)) continue;
-      if (std::find(pbreaks_.begin(), pbreaks_.end(), P.l) != pbreaks_.end()) continue;
+      if (!memory_cusp(P) || !(P.l > -b2_ && P.l < b1_)) continue;
       if (s1_ != 0 && b1_ - P.l <= msnap_) nb1 = std::min(nb1, P.l);
       if (s2_ != 0 && P.l + b2_ <= msnap_) nl = std::max(nl, P.l);
     }
@@ -554,8 +557,8 @@ template <class T> class static_history {
       if (!(P.l < nb1 && P.r > nl)) continue;
       if (!P.analytic && (T(s1_) * C1 > 0 || T(s2_) * C2 > 0))
         for (int j = 0; j < R.n(); ++j) {
-          const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
-          const T x = xl <= xr ? P.l + xl : P.r - xr;
+          T xl, xr;
+          const T x = R.node(P.l, P.r, j, xl, xr);
           // (the distances to the new ends from the panel's own ends where it meets them)
           if (T(s1_) * C1 > 0) P.v[j] += C1 * (sqrt(b1_ - x) - sqrt(P.r == nb1 ? xr : T(nb1 - x)));
           if (T(s2_) * C2 > 0) P.v[j] += C2 * (sqrt(x + b2_) - sqrt(P.l == nl ? xl : T(x - nl)));
@@ -1475,9 +1478,8 @@ template <class T> class static_history {
         T &fb = j == 1 ? fb1 : fb2;
         const T over = fb - lst[j], m = j == 1 ? lst[1] : -lst[2];
         if (evi.back() != j || fold_last || !(over > 0) || !(over <= std::min(msnap_, mono_tol_))) continue;
-        if (std::find(pbreaks_.begin(), pbreaks_.end(), m) != pbreaks_.end()) continue;
         bool memory = false;
-        for (const auto &P : panels_) memory = memory || (P.cusp_l && P.l == m);
+        for (const auto &P : panels_) memory = memory || (P.l == m && memory_cusp(P));
         if (!memory) continue;
         fb = lst[j];
         moved_ = std::max(moved_, over);
@@ -2204,9 +2206,7 @@ template <class T> class static_history {
         P.cusp_l = first && k > 0;
         P.v.reserve(R.n());
         for (int j = 0; j < R.n(); ++j) {
-          const T xl = (r - l) * R.sh[j] * R.sh[j], xr = (r - l) * R.ch[j] * R.ch[j];
-          const T x = xl <= xr ? l + xl : r - xr;
-          P.v.push_back(trac(x));
+          P.v.push_back(trac(R.node(l, r, j)));
         }
         // resolved? the last Legendre coefficients in theta, against the panel's scale
         if (!resolved(P.v) && (r - l) > T(1e-6) && out.size() < 400) {
@@ -2253,8 +2253,7 @@ template <class T> class static_history {
       if (!(P.r > f1 && P.l < pt[1]) && !(P.r > -pt[2] && P.l < -f2)) continue;
       if (swept(P.l)) xs.push_back(P.l);
       for (int j = 0; j < R.n(); ++j) {
-        const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
-        const T x = xl <= xr ? P.l + xl : P.r - xr;
+        const T x = R.node(P.l, P.r, j);
         if (swept(x)) xs.push_back(x);
       }
     }
@@ -2276,8 +2275,7 @@ template <class T> class static_history {
         continue;
       }
       for (int j = 0; j < R.n(); ++j) {
-        const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
-        const T x = xl <= xr ? P.l + xl : P.r - xr;
+        const T x = R.node(P.l, P.r, j);
         const T p = pm_->p(x);
         // (an excess within the traction's own accuracy is rounding: next to an end, where
         // the traction meets d p, 1.7e-12 was seen in steady cycles; 1e-10 f p0 and 1e-9 of
@@ -2894,8 +2892,7 @@ template <class T> class static_history {
       int sm = 0;
       for (const auto &P : np)
         for (int j = 0; j < R.n(); ++j) {
-          const T xl = (P.r - P.l) * R.sh[j] * R.sh[j], xr = (P.r - P.l) * R.ch[j] * R.ch[j];
-          const T x = xl <= xr ? P.l + xl : P.r - xr;
+          const T x = R.node(P.l, P.r, j);
           const T v = P.analytic ? P.c * pm_->p(x) : P.v[j];
           const T e = abs(v) - pm_->p(x);
           ex.push_back({{x, v > 0 ? e : -e}});

@@ -51,6 +51,17 @@ template <class T> struct trule {
   }
   int n() const { return int(t.size()); }
   // interpolate values v at theta-parameter t0 in [-1, 1]
+  // node j on the panel [l, r] (x = l + (r - l) sin^2(theta_j/2), from the nearer end) and its
+  // distances dl, dr to the panel's ends
+  T node(const T &l, const T &r, int j, T &dl, T &dr) const {
+    dl = (r - l) * sh[j] * sh[j];
+    dr = (r - l) * ch[j] * ch[j];
+    return dl <= dr ? l + dl : r - dr;
+  }
+  T node(const T &l, const T &r, int j) const {
+    T dl, dr;
+    return node(l, r, j, dl, dr);
+  }
   T interp(const std::vector<T> &v, const T &t0) const {
     T num = 0, den = 0;
     for (size_t j = 0; j < t.size(); ++j) {
