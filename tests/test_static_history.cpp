@@ -818,15 +818,21 @@ TEST_CASE("static history: degenerate returns (a periodic path given vertex by v
     CHECK(full.gap > 1e-7);
     CHECK(r8.gap > 1e-7);
     int snaps = 0;
+    double dend = 0, den = 0, smax = 0;  // (printed with -s)
     for (size_t i = 0; i < w.size(); ++i) {
       CAPTURE(i);
       snaps += full.snap[i] > 0;
+      smax = std::max(smax, full.snap[i]);
+      for (int k = 0; k < 2; ++k) dend = std::max(dend, std::fabs(r8.v[i][k] - full.v[i][k]));
+      for (int k = 2; k < 4; ++k) den = std::max(den, std::fabs(r8.v[i][k] - full.v[i][k]) / full.largest);
       // rtol 1e-8 against full accuracy: ends within 1e-8 a and both moves, energies within 1e-8 of
       // the largest (measured 1.9e-10 a and 2.1e-10)
       for (int k = 0; k < 2; ++k) CHECK(std::fabs(r8.v[i][k] - full.v[i][k]) <= 1e-8 + full.snap[i] + r8.snap[i]);
       for (int k = 2; k < 4; ++k) CHECK(std::fabs(r8.v[i][k] - full.v[i][k]) <= 1e-8 * full.largest);
     }
     CHECK(snaps >= 3);  // (the returns at vertices 70, 102, ...: 1.28e-9 to 2.56e-9 a)
+    MESSAGE("rtol 1e-8 against full accuracy: ends ", dend, " a, energies ", den, " of the largest; ", snaps,
+            " returns put on their memory points, the largest move ", smax, " a");
     // the steady cycle: the fourth cycle's vertices repeat the third's (the state is periodic)
     for (size_t i = 1 + 64 * 3; i < w.size(); ++i)
       for (int k = 0; k < 4; ++k)
