@@ -724,14 +724,16 @@ TEST_CASE("a path left by the static solves: the march's estimate covers its mea
 // ("the static solve of the segment did not converge"), and the flat punch's walk 50, vertex 18 ("an end
 // passed a memory point that was not located"). Such a segment is now solved again at full accuracy;
 // `bench/static_walks.cpp count G 60 1e-8 [retry]`: Hertz 2408 -> 2588 vertices of 6000 (full
-// accuracy 2588), flat punch 2914 -> 3101 (full 3157).
+// accuracy 2588), flat punch 2914 -> 3101 (full 3157). Since session 23 rtol 1e-8 keeps the full orders
+// (panels resolved less finely) and takes those two; random walk 0, vertex 8, is refused at rtol 1e-8
+// by both geometries and taken at full accuracy.
 TEST_CASE("a segment refused at the accuracy asked is solved at full accuracy, not marched") {
   struct walk_case {
     int geometry;
     unsigned seed;
     size_t n;
   };
-  for (const walk_case wc : {walk_case{0, 21, 7}, walk_case{1, 50, 19}}) {
+  for (const walk_case wc : {walk_case{0, 0, 9}, walk_case{1, 0, 9}}) {
     CAPTURE(wc.geometry);
     const auto full = hs::reference::random_walk(100, wc.seed);
     const path_t walk(full.begin(), full.begin() + long(wc.n));

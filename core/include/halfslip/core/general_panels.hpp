@@ -36,20 +36,41 @@ template <class T> int grading_power() {
 // (m = 4) and the double-precision cost and results stay as they were.
 template <class T> int kink_layers() { return std::numeric_limits<T>::digits10 > 20 ? 6 : 0; }
 
+template <class T> std::vector<panel<T>> panels_between(std::vector<std::pair<T, bool>> pts);
+
+// Geometric layers at the graded kinks (theta, graded) of a range [a, b]: the ungraded panel ends
+// k -+ h 2^-layers 2^j (h: the smaller reach, i.e. distance to the range's end or half way to
+// another kink) appended to pts, so that the polynomially graded panels at k are h 2^-layers long
+// and ungraded panels doubling in length away from k fill each reach (none for layers <= 0).
+template <class T> void add_kink_layers(const std::vector<std::pair<T, bool>> &kinks, const T &a, const T &b,
+                                        int layers, std::vector<std::pair<T, bool>> &pts) {
+  using std::ldexp;
+  using std::min;
+  if (layers <= 0) return;
+  for (const auto &k : kinks) {
+    if (!k.second) continue;
+    // reach on each side: to the range's end or half way to another kink
+    T lo = k.first - a, hi = b - k.first;
+    for (const auto &o : kinks) {
+      if (o.first < k.first) lo = min(lo, (k.first - o.first) / 2);
+      if (o.first > k.first) hi = min(hi, (o.first - k.first) / 2);
+    }
+    const T h = min(lo, hi);
+    if (!(h > 0)) continue;
+    for (T st = ldexp(h, -layers); st < lo; st *= 2) pts.push_back({k.first - st, false});
+    for (T st = ldexp(h, -layers); st < hi; st *= 2) pts.push_back({k.first + st, false});
+  }
+}
+
 // Panels on [0, pi/2] in theta for a zone of length d next to a stick zone
 // of length e; kinks: theta values with their grading flag.
-// layers > 0 (fixed-rule energies beyond double): the graded panels at a
-// graded kink are confined to length h 2^-layers (h: the smaller reach, i.e.
-// distance to the zone end or half way to another kink), and ungraded panels
-// doubling in length away from the kink fill each reach. Without them the
+// layers > 0 (fixed-rule energies beyond double): add_kink_layers. Without them the
 // map theta = k + L u^m (m = 11 at 50 digits) squeezes the analyticity
 // region of the smooth factors by ~m, and the long panel beyond the kink
 // sees the kink at 1/6 of its length: both gave ~1e-30 at order 64.
 template <class T>
 std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<T, bool>> kinks, int layers = 0) {
   using std::asin;
-  using std::ldexp;
-  using std::min;
   using std::sqrt;
   const T half_pi = pi<T>() / 2;
   std::vector<std::pair<T, bool>> pts;
@@ -57,21 +78,7 @@ std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<
   pts.assign(kinks.begin(), kinks.end());
   pts.push_back({T(0), false});
   pts.push_back({half_pi, false});
-  if (layers > 0) {
-    for (const auto &k : kinks) {
-      if (!k.second) continue;
-      // reach on each side: to the zone end or half way to another kink
-      T lo = k.first, hi = half_pi - k.first;
-      for (const auto &o : kinks) {
-        if (o.first < k.first) lo = min(lo, (k.first - o.first) / 2);
-        if (o.first > k.first) hi = min(hi, (o.first - k.first) / 2);
-      }
-      const T h = min(lo, hi);
-      if (!(h > 0)) continue;
-      for (T st = ldexp(h, -layers); st < lo; st *= 2) pts.push_back({k.first - st, false});
-      for (T st = ldexp(h, -layers); st < hi; st *= 2) pts.push_back({k.first + st, false});
-    }
-  }
+  add_kink_layers(kinks, T(0), half_pi, layers, pts);
   // geometric grading towards theta = 0 (singularity at theta ~ i sqrt(e/d))
   const T epsr = sqrt(e / d);
   if (epsr < half_pi / 2) {
@@ -85,6 +92,13 @@ std::vector<panel<T>> make_panels(const T &d, const T &e, std::vector<std::pair<
     if (g < tiny) g = tiny;
     for (; g < half_pi / 2; g *= 2) pts.push_back({g, false});
   }
+  return panels_between(std::move(pts));
+}
+
+// The panels between consecutive points (theta, graded) of pts (any order; equal points merged,
+// a graded flag wins): a panel is graded towards each graded end, and one with both ends graded
+// is split at its middle into two, each graded towards its own.
+template <class T> std::vector<panel<T>> panels_between(std::vector<std::pair<T, bool>> pts) {
   std::sort(pts.begin(), pts.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
   // merge equal points (a graded flag wins)
   std::vector<std::pair<T, bool>> u;
