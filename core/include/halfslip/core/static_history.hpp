@@ -2223,11 +2223,14 @@ template <class T> class static_history {
           // Hertz periodic (0, 0.3, 0.5, 0.3, 180 deg) as 64 chords a cycle, full accuracy, vertex
           // 18: 418 panels, the panel (-0.787, 0.879) left as one, its traction 6.8e-5 off, the
           // ends 1.1e-6 a off by vertex 35; tests/test_static_history.cpp)
-          // (a hinted layout may start finer than needed: then once more without it)
-          if (out.size() + todo.size() + (cuts.size() - 2 - k) >= max_panels) {
+          // (a hinted layout may start finer than needed: then once more without it. The cap counts
+          // the panels beyond the cusps' intervals: a sampled pressure has one a sample, 1000 samples
+          // 1000 intervals before any split)
+          if (out.size() + todo.size() + (cuts.size() - 2 - k) >= max_panels + (cuts.size() - 1)) {
             if (hint) return build_panels(b1, b2, trac, nullptr, lay, patch);
             static_assert(max_panels == 400, "the message below");
-            throw error(status::not_applicable, "static_history: the stick traction needs more than 400 panels");
+            throw error(status::not_applicable,
+                        "static_history: the stick traction needs more than 400 panels beyond its cusps");
           }
           const T m = (l + r) / 2;
           todo.insert(todo.begin(), {{l, m}, {m, r}});
@@ -2243,7 +2246,8 @@ template <class T> class static_history {
     return out;
   }
 
-  // the most panels a state's stick traction may take (build_panels refuses the state beyond)
+  // the most panels a state's stick traction may take beyond one a cusp interval (build_panels
+  // refuses the state beyond)
   static constexpr std::size_t max_panels = 400;
   // a candidate state's panels (fn builds them): false where they would need more than max_panels
   // (the candidate is then rejected, as before the cap refused states, and the search goes on)
