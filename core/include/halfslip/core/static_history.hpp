@@ -2224,9 +2224,9 @@ template <class T> class static_history {
           // 18: 418 panels, the panel (-0.787, 0.879) left as one, its traction 6.8e-5 off, the
           // ends 1.1e-6 a off by vertex 35; tests/test_static_history.cpp)
           // (a hinted layout may start finer than needed: then once more without it. The cap counts
-          // the panels beyond the cusps' intervals: a sampled pressure has one a sample, 1000 samples
-          // 1000 intervals before any split)
-          if (out.size() + todo.size() + (cuts.size() - 2 - k) >= max_panels + (cuts.size() - 1)) {
+          // the panels beyond one per interval between the cusps, k + 1 intervals so far: a sampled
+          // pressure has one a sample, 1000 samples 1000 intervals before any split)
+          if (out.size() + todo.size() >= max_panels + k + 1) {
             if (hint) return build_panels(b1, b2, trac, nullptr, lay, patch);
             static_assert(max_panels == 400, "the message below");
             throw error(status::not_applicable,
@@ -2259,6 +2259,12 @@ template <class T> class static_history {
       if (e.code() != status::not_applicable) throw;
       return false;
     }
+  }
+  // a candidate state's new traction on panels over (-b2, b1) (np, lay): whether they were built
+  // and are within the friction limit
+  bool candidate_panels(const T &b1, const T &b2, int d1, int d2, panel_layout &lay,
+                        std::vector<sh_panel<T>> &np) const {
+    return probe_panels([&] { np = new_panels(b1, b2, d1, d2, nullptr, lay); }) && limit_ok_panels(np);
   }
   bool resolved(const std::vector<T> &v) const {
     using std::abs;
@@ -2385,7 +2391,7 @@ template <class T> class static_history {
       if (!(T(d1) * hist_rate_end(1, dq, ds, e) > 0) || !(T(d2) * hist_rate_end(2, dq, ds, e) > 0)) return false;
       panel_layout l;
       std::vector<sh_panel<T>> p;
-      if (!probe_panels([&] { p = new_panels(x1, x2, d1, d2, nullptr, l); }) || !limit_ok_panels(p)) return false;
+      if (!candidate_panels(x1, x2, d1, d2, l, p)) return false;
       typename sh_start<T>::dhp_memo mm;
       if (!st.one_way(1, x1, x2, d1, d2, 4, &mm) || !st.one_way(2, x1, x2, d1, d2, 4, &mm)) return false;
       b1 = x1;
@@ -3055,11 +3061,9 @@ template <class T> class static_history {
       if (!open) {
         T h1 = n1, h2 = n2;
         panel_layout l;
+        std::vector<sh_panel<T>> p;
         if (solve(h1, h2, d1, d2, mu * dq, mu * ds) && h1 <= b1_ + tol && h2 <= b2_ + tol && h1 >= n1 - tol &&
-            h2 >= n2 - tol && merged(h1, h2) && [&] {
-              std::vector<sh_panel<T>> p;
-              return probe_panels([&] { p = new_panels(h1, h2, d1, d2, nullptr, l); }) && limit_ok_panels(p);
-            }()) {
+            h2 >= n2 - tol && merged(h1, h2) && candidate_panels(h1, h2, d1, d2, l, p)) {
           n1 = h1;
           n2 = h2;
           continue;
